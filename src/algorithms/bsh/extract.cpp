@@ -1,0 +1,408 @@
+#include "algorithms/bsh/extract.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <set>
+#include <stdexcept>
+
+namespace hsx::bsh {
+
+const char* to_string(Method m) {
+  switch (m) {
+    case Method::GraphCut: return "graphcut";
+    case Method::Beam: return "beam";
+    case Method::BestFirst: return "best-first";
+    case Method::BruteForce: return "brute-force";
+  }
+  return "?";
+}
+
+std::optional<Method> method_from_string(const std::string& name) {
+  for (Method m : {Method::GraphCut, Method::Beam, Method::BestFirst, Method::BruteForce})
+    if (name == to_string(m)) return m;
+  return std::nullopt;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A search state {r, b}: removed supports r (ascending) and the graph-cut boundary b without them.
+struct State {
+  std::vector<int> removed;
+  CutResult cut;
+  int parent = -1;  // index into the search's archive
+};
+
+/// Shared bookkeeping of one extract() call: statistics, limits and progress reports.
+class SearchContext {
+ public:
+  SearchContext(const Problem& problem, const ExtractOptions& options)
+      : problem_(problem), options_(options), start_(Clock::now()), last_report_(start_) {}
+
+  const Problem& problem() const { return problem_; }
+  const ExtractOptions& options() const { return options_; }
+  SearchStats& stats() { return stats_; }
+  std::string stopped_by;
+  bool unseparated = false;  ///< a best-first pick had a competitor whose energy did not separate from it
+
+  CutResult cut(const std::vector<int>& removed, const std::vector<signed char>& forced) {
+    CutConstraints constraints;
+    constraints.removed.assign(problem_.support_count(), 0);
+    for (int g : removed) constraints.removed[g] = 1;
+    constraints.forced = forced;
+    ++stats_.graph_cuts;
+    CutResult result = graph_cut(problem_, constraints);
+    if (result.energy.missing_samples >= 0 && !result.certified) ++stats_.uncertified_cuts;
+    return result;
+  }
+
+  /// True when a limit says stop; sets stopped_by. Also reports progress about twice a second.
+  bool out_of_budget(long queue_size) {
+    const auto now = Clock::now();
+    if (options_.progress && now - last_report_ > std::chrono::milliseconds(500)) {
+      last_report_ = now;
+      SearchProgress p{stats_.states_expanded, queue_size, stats_.graph_cuts, best_feasible_energy()};
+      options_.progress(p);
+    }
+    if (options_.max_states > 0 && stats_.states_expanded >= options_.max_states) stopped_by = "max-states";
+    if (options_.time_limit > 0 && std::chrono::duration<double>(now - start_).count() > options_.time_limit)
+      stopped_by = "time-limit";
+    return !stopped_by.empty();
+  }
+
+  /// Remember the best sample-connected labelling seen, the answer when a limit stops the search.
+  void offer_feasible(const CutResult& cut) {
+    if (!best_feasible_ || compare(cut.energy, best_feasible_->energy, options_.compare) == Order::Less)
+      best_feasible_ = cut;
+  }
+  std::optional<Energy> best_feasible_energy() const {
+    if (!best_feasible_) return std::nullopt;
+    return best_feasible_->energy;
+  }
+  const std::optional<CutResult>& best_feasible() const { return best_feasible_; }
+
+  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+ private:
+  const Problem& problem_;
+  const ExtractOptions& options_;
+  SearchStats stats_;
+  Clock::time_point start_, last_report_;
+  std::optional<CutResult> best_feasible_;
+};
+
+/// Deterministic total preference between states: certified energy first, then the removed set, then labels.
+bool before(const State& a, const State& b, const CompareOptions& options) {
+  const Order o = compare(a.cut.energy, b.cut.energy, options);
+  if (o == Order::Less) return true;
+  if (o == Order::Greater) return false;
+  if (a.removed != b.removed) return a.removed < b.removed;
+  return a.cut.labelling < b.cut.labelling;
+}
+
+/// Index of the preferred state in `queue` (linear scan: no ordering axioms are assumed of ties).
+std::size_t best_index(const std::vector<int>& queue, const std::vector<State>& archive,
+                       const CompareOptions& options) {
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < queue.size(); ++k)
+    if (before(archive[queue[k]], archive[queue[best]], options)) best = k;
+  return best;
+}
+
+std::vector<int> merged(const std::vector<int>& a, const std::vector<int>& b) {
+  std::vector<int> out;
+  std::set_union(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(out));
+  return out;
+}
+
+struct SearchOutcome {
+  bool found = false;
+  std::vector<State> archive;
+  int result = -1;
+};
+
+/// Fig. 9 from the state {base_removed, graph-cut}: best-first when beam_width <= 0, else a beam of that width.
+/// `forced` fixes cell labels (tie enumeration).
+SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
+                     const std::vector<signed char>& forced, int beam_width) {
+  const Problem& problem = ctx.problem();
+  const CompareOptions& cmp = ctx.options().compare;
+  SearchOutcome out;
+  std::set<std::vector<int>> visited{base_removed};
+  State root{base_removed, ctx.cut(base_removed, forced), -1};
+  if (root.cut.energy.missing_samples < 0) return out;  // the constraints admit no labelling
+  out.archive.push_back(std::move(root));
+  std::vector<int> queue{0};
+  ++ctx.stats().states_created;
+  while (!queue.empty()) {
+    if (ctx.out_of_budget(static_cast<long>(queue.size()))) return out;
+    const std::size_t pick = best_index(queue, out.archive, cmp);
+    const int current = queue[pick];
+    queue.erase(queue.begin() + static_cast<std::ptrdiff_t>(pick));
+    if (beam_width <= 0)
+      for (int other : queue)
+        if (compare(out.archive[other].cut.energy, out.archive[current].cut.energy, cmp) == Order::Tie)
+          ctx.unseparated = true;
+    ++ctx.stats().states_expanded;
+    const Labelling labelling = out.archive[current].cut.labelling;
+    const SampleConnectivity connectivity = sample_connectivity(problem, labelling);
+    if (connectivity.sample_connected()) {
+      ctx.offer_feasible(out.archive[current].cut);
+      out.found = true;
+      out.result = current;
+      return out;
+    }
+    for (const std::vector<int>& set : removable_sets(problem, labelling, connectivity)) {
+      std::vector<int> removed = merged(out.archive[current].removed, set);
+      if (!visited.insert(removed).second) continue;
+      CutResult cut = ctx.cut(removed, forced);
+      if (cut.energy.missing_samples < 0) continue;
+      if (sample_connectivity(problem, cut.labelling).sample_connected()) ctx.offer_feasible(cut);
+      out.archive.push_back(State{std::move(removed), std::move(cut), current});
+      queue.push_back(static_cast<int>(out.archive.size()) - 1);
+      ++ctx.stats().states_created;
+    }
+    if (beam_width > 0 && static_cast<int>(queue.size()) > beam_width) {
+      std::vector<int> kept;
+      while (static_cast<int>(kept.size()) < beam_width) {
+        const std::size_t k = best_index(queue, out.archive, cmp);
+        kept.push_back(queue[k]);
+        queue.erase(queue.begin() + static_cast<std::ptrdiff_t>(k));
+      }
+      queue = std::move(kept);
+    }
+    ctx.stats().max_queue = std::max(ctx.stats().max_queue, static_cast<long>(queue.size()));
+  }
+  return out;
+}
+
+/// Labels that put support g on the boundary with its orientation (inside cell 1, outside cell 0).
+bool force_on(const Problem& problem, int g, std::vector<signed char>& forced) {
+  const SupportTerm& s = problem.supports()[g];
+  if (s.inside_cell < 0) return false;
+  if (forced[s.inside_cell] == 0 || forced[s.outside_cell] == 1) return false;
+  forced[s.inside_cell] = 1;
+  forced[s.outside_cell] = 0;
+  return true;
+}
+
+/// Lawler-style enumeration of every optimal boundary. Any boundary b' != b inside a subspace either misses
+/// a support of b that the subspace does not force (one sub-search per such support, forcing the ones before
+/// it) or strictly contains b, which costs more. Each sub-search is complete (Prop. 5.2 holds under forced
+/// labels and removed supports: the target satisfies them).
+void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult& result) {
+  const Problem& problem = ctx.problem();
+  const CompareOptions& cmp = ctx.options().compare;
+  struct Subspace {
+    std::vector<int> removed;
+    std::vector<signed char> forced;
+    Labelling optimum;
+  };
+  std::vector<Subspace> work{{{}, std::vector<signed char>(problem.cell_count(), -1), optimum.labelling}};
+  std::set<Labelling> found{optimum.labelling};
+  result.ties.checked = true;
+  while (!work.empty()) {
+    Subspace space = std::move(work.back());
+    work.pop_back();
+    std::vector<signed char> forced = space.forced;
+    for (int g : boundary_supports(problem, space.optimum)) {
+      const SupportTerm& s = problem.supports()[g];
+      const bool already_forced = forced[s.inside_cell] == 1 && forced[s.outside_cell] == 0;
+      if (!already_forced && !std::binary_search(space.removed.begin(), space.removed.end(), g)) {
+        std::vector<int> removed = merged(space.removed, {g});
+        SearchOutcome sub = search(ctx, removed, forced, 0);
+        if (!ctx.stopped_by.empty()) return;
+        if (sub.found) {
+          const CutResult& cut = sub.archive[sub.result].cut;
+          const Order o = compare(cut.energy, optimum.energy, cmp);
+          if (o == Order::Equal || o == Order::Tie) {
+            if (o == Order::Tie) result.ties.certified = false;
+            if (found.insert(cut.labelling).second) {
+              result.tied.push_back(cut.labelling);
+              if (static_cast<int>(found.size()) >= ctx.options().max_ties) {
+                result.ties.capped = true;
+                result.ties.count = static_cast<int>(found.size());
+                return;
+              }
+            }
+            work.push_back({removed, forced, cut.labelling});
+          }
+        }
+      }
+      if (!force_on(problem, g, forced)) break;  // nothing later in this subspace can keep g
+    }
+  }
+  result.ties.count = static_cast<int>(found.size());
+}
+
+void fill_from_cut(const Problem& problem, const CutResult& cut, ExtractResult& result) {
+  result.labelling = cut.labelling;
+  result.energy = cut.energy;
+  result.sample_connected = sample_connectivity(problem, cut.labelling).sample_connected();
+}
+
+ExtractResult run_brute_force(const Problem& problem, const ExtractOptions& options) {
+  const auto start = Clock::now();
+  BruteForceResult bf = brute_force(problem, true, options.brute_force_limit, options.compare);
+  ExtractResult result;
+  result.method = Method::BruteForce;
+  result.labelling = bf.optimal.front();
+  result.energy = bf.energy;
+  result.sample_connected = true;
+  result.optimal = true;
+  result.ties.checked = true;
+  result.ties.count = static_cast<int>(bf.optimal.size());
+  result.ties.certified = bf.certified;
+  result.tied.assign(bf.optimal.begin() + 1, bf.optimal.end());
+  result.stats.labellings_enumerated = bf.enumerated;
+  result.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace
+
+ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
+  if (options.method == Method::BruteForce) return run_brute_force(problem, options);
+  SearchContext ctx(problem, options);
+  ExtractResult result;
+  result.method = options.method;
+  const std::vector<signed char> free_labels(problem.cell_count(), -1);
+
+  if (options.method == Method::GraphCut) {
+    const CutResult cut = ctx.cut({}, free_labels);
+    fill_from_cut(problem, cut, result);
+    // A relaxed optimum that happens to be sample-connected is the BSH optimum.
+    result.optimal = cut.certified && result.sample_connected;
+    result.removed.assign(problem.support_count(), 0);
+  } else {
+    const int width = options.method == Method::Beam ? std::max(1, options.beam_width) : 0;
+    SearchOutcome outcome = search(ctx, {}, free_labels, width);
+    result.stopped_by = ctx.stopped_by;
+    if (outcome.found) {
+      const State& best = outcome.archive[outcome.result];
+      fill_from_cut(problem, best.cut, result);
+      result.removed.assign(problem.support_count(), 0);
+      for (int g : best.removed) result.removed[g] = 1;
+      for (int k = outcome.result; k >= 0; k = outcome.archive[k].parent)
+        result.steps.insert(result.steps.begin(), outcome.archive[k].removed);
+      const bool all_certified = ctx.stats().uncertified_cuts == 0;
+      if (options.method == Method::BestFirst) {
+        result.optimal = all_certified;
+      } else {
+        // Beam results are optimal when they meet the unconstrained lower bound (the root graph cut).
+        const Order o = compare(best.cut.energy, outcome.archive[0].cut.energy, options.compare);
+        result.optimal = all_certified && o == Order::Equal;
+      }
+      if (ctx.unseparated) result.ties.certified = false;
+      if (options.method == Method::BestFirst && options.enumerate_ties && result.optimal) {
+        enumerate_ties(ctx, best.cut, result);
+        if (!ctx.stopped_by.empty()) {
+          result.stopped_by = ctx.stopped_by;
+          result.ties.checked = false;
+        }
+      }
+    } else {
+      // A limit stopped the search: the best sample-connected boundary seen, else the empty one.
+      result.removed.assign(problem.support_count(), 0);
+      if (ctx.best_feasible()) {
+        fill_from_cut(problem, *ctx.best_feasible(), result);
+      } else {
+        result.labelling.assign(problem.cell_count(), 0);
+        result.energy = energy(problem, result.labelling);
+        result.sample_connected = true;
+      }
+      result.optimal = false;
+    }
+  }
+  result.stats = ctx.stats();
+  result.stats.seconds = ctx.seconds();
+  return result;
+}
+
+BruteForceResult brute_force(const Problem& problem, bool connectivity, long limit, const CompareOptions& compare_options) {
+  const int n = problem.cell_count();
+  // Implications "x = 1 => y = 1" (x the outside cell of a support, y its inside cell); a support whose
+  // coincident halfspaces disagree ties its two cells together.
+  std::vector<std::vector<int>> implies(n), implied_by(n);
+  for (const SupportTerm& s : problem.supports()) {
+    auto link = [&](int x, int y) {
+      implies[x].push_back(y);
+      implied_by[y].push_back(x);
+    };
+    if (s.inside_cell >= 0) {
+      link(s.outside_cell, s.inside_cell);
+    } else {
+      link(s.cell_a, s.cell_b);
+      link(s.cell_b, s.cell_a);
+    }
+  }
+  BruteForceResult result;
+  std::vector<signed char> label(n, -1);
+  // Assign with propagation; returns false on a conflict. `trail` records what to undo.
+  auto assign = [&](int v, signed char value, std::vector<int>& trail) {
+    std::vector<int> stack{v};
+    if (label[v] >= 0) return label[v] == value;
+    label[v] = value;
+    trail.push_back(v);
+    while (!stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      for (int y : value ? implies[x] : implied_by[x]) {
+        if (label[y] == value) continue;
+        if (label[y] >= 0) return false;
+        label[y] = value;
+        trail.push_back(y);
+        stack.push_back(y);
+      }
+    }
+    return true;
+  };
+  std::vector<int> root_trail;
+  for (int k = 0; k < n; ++k)
+    if (problem.complex().cells[k].outer && !assign(k, 0, root_trail))
+      throw std::logic_error("brute force: outer cells forced inside");
+  bool have_best = false;
+  auto leaf = [&]() {
+    if (++result.enumerated > limit)
+      throw std::runtime_error("brute force: more than " + std::to_string(limit) +
+                               " orientation-preserving labellings; use best-first");
+    Labelling l(label.begin(), label.end());
+    if (connectivity && !sample_connectivity(problem, l).sample_connected()) return;
+    Energy e = energy(problem, l);
+    if (!have_best) {
+      have_best = true;
+      result.energy = e;
+      result.optimal = {l};
+      return;
+    }
+    const Order o = compare(e, result.energy, compare_options);
+    if (o == Order::Less) {
+      result.energy = e;
+      result.optimal = {l};
+      result.certified = true;
+    } else if (o == Order::Equal || o == Order::Tie) {
+      if (o == Order::Tie) result.certified = false;
+      result.optimal.push_back(l);
+    }
+  };
+  // Depth-first over the first unassigned cell: 0 then 1.
+  std::function<void(int)> descend = [&](int from) {
+    int v = from;
+    while (v < n && label[v] >= 0) ++v;
+    if (v == n) {
+      leaf();
+      return;
+    }
+    for (signed char value : {0, 1}) {
+      std::vector<int> trail;
+      if (assign(v, value, trail)) descend(v + 1);
+      for (int x : trail) label[x] = -1;
+    }
+  };
+  descend(0);
+  if (!have_best) throw std::logic_error("brute force: no labelling (the empty one always exists)");
+  return result;
+}
+
+}  // namespace hsx::bsh

@@ -1,0 +1,268 @@
+#include "algorithms/bsh/graph_cut.hpp"
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/edmonds_karp_max_flow.hpp>
+
+#include <limits>
+#include <map>
+
+namespace hsx::bsh {
+namespace {
+
+/// An edge weight: infinite, or (samples, measure) ordered lexicographically. Ordering questions that the
+/// certified comparison cannot separate answer "not less" (so a tie never counts as positive residual); the
+/// certificate check afterwards reports any such tie.
+struct Capacity {
+  bool infinite = false;
+  long samples = 0;
+  Measure measure;
+
+  Capacity() = default;
+  Capacity(int zero) { (void)zero; }  // NOLINT: Boost writes `FlowValue x = 0` and `0 < x`
+  static Capacity inf() {
+    Capacity c;
+    c.infinite = true;
+    return c;
+  }
+  static Capacity of(long samples, const Measure& m) {
+    Capacity c;
+    c.samples = samples;
+    c.measure = m;
+    return c;
+  }
+};
+
+// Boost's max-flow only needs +, -, < and numeric_limits::max.
+Capacity operator+(const Capacity& a, const Capacity& b) {
+  if (a.infinite || b.infinite) return Capacity::inf();
+  return Capacity::of(a.samples + b.samples, a.measure + b.measure);
+}
+Capacity operator-(const Capacity& a, const Capacity& b) {
+  if (a.infinite) return Capacity::inf();
+  if (b.infinite) throw std::logic_error("graph cut: subtracting an infinite flow");
+  return Capacity::of(a.samples - b.samples, a.measure - b.measure);
+}
+Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
+/// Certified "a < b"; Tie and Equal answer false.
+Order order(const Capacity& a, const Capacity& b) {
+  if (a.infinite || b.infinite) {
+    if (a.infinite && b.infinite) return Order::Equal;
+    return a.infinite ? Order::Greater : Order::Less;
+  }
+  if (a.samples != b.samples) return a.samples < b.samples ? Order::Less : Order::Greater;
+  if (a.measure.is_zero() && b.measure.is_zero()) return Order::Equal;
+  return hsx::compare(a.measure, b.measure);
+}
+bool operator<(const Capacity& a, const Capacity& b) { return order(a, b) == Order::Less; }
+
+}  // namespace
+}  // namespace hsx::bsh
+
+namespace std {
+template <>
+class numeric_limits<hsx::bsh::Capacity> {
+ public:
+  static constexpr bool is_specialized = true;
+  static hsx::bsh::Capacity max() { return hsx::bsh::Capacity::inf(); }
+};
+}  // namespace std
+
+namespace hsx::bsh {
+namespace {
+
+using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
+using FlowGraph = boost::adjacency_list<
+    boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+    boost::property<boost::edge_capacity_t, Capacity,
+                    boost::property<boost::edge_residual_capacity_t, Capacity,
+                                    boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>>;
+
+/// The unary and binary terms of Eqs. 2-4 as plain data.
+struct Terms {
+  std::vector<long> source_samples, sink_samples;  // h_c(0), h_c(1) finite parts
+  std::vector<char> source_infinite, sink_infinite; // forced labels: forced 1 (or outer) can't be cut from s
+  std::map<std::pair<int, int>, Capacity> binary;  // (a, b) -> h_ab(1, 0)
+};
+
+Terms build_terms(const Problem& problem, const CutConstraints& constraints) {
+  const Complex& c = problem.complex();
+  Terms t;
+  const int n = problem.cell_count();
+  t.source_samples.assign(n, 0);
+  t.sink_samples.assign(n, 0);
+  t.sink_infinite.assign(n, 0);
+  t.source_infinite.assign(n, 0);
+  for (int k = 0; k < n; ++k) {
+    t.sink_infinite[k] = c.cells[k].outer;
+  }
+  for (int k = 0; k < n; ++k) {
+    if (constraints.forced.empty() || constraints.forced[k] < 0) continue;
+    // Forced 1: cutting s -> k is impossible; forced 0: cutting k -> t is impossible.
+    if (constraints.forced[k] == 1) t.source_infinite[k] = 1; else t.sink_infinite[k] = 1;
+  }
+  for (const Patch& p : c.patches) {
+    t.source_samples[p.inside_cell] += static_cast<long>(p.samples.size());
+    t.sink_samples[p.outside_cell] += static_cast<long>(p.samples.size());
+  }
+  for (int g = 0; g < problem.support_count(); ++g) {
+    const SupportTerm& s = problem.supports()[g];
+    Capacity& ab = t.binary[{s.cell_a, s.cell_b}];
+    Capacity& ba = t.binary[{s.cell_b, s.cell_a}];
+    if ((!constraints.removed.empty() && constraints.removed[g]) || s.inside_cell < 0) {
+      ab = ba = Capacity::inf();
+      continue;
+    }
+    Capacity& allowed = s.inside_cell == s.cell_a ? ab : ba;
+    Capacity& forbidden = s.inside_cell == s.cell_a ? ba : ab;
+    forbidden = Capacity::inf();
+    allowed = allowed + Capacity::of(0, s.measure);
+  }
+  return t;
+}
+
+}  // namespace
+
+bool cut_cost(const Problem& problem, const CutConstraints& constraints, const Labelling& labelling, Energy* cost) {
+  const Terms t = build_terms(problem, constraints);
+  Capacity total;
+  for (int k = 0; k < problem.cell_count(); ++k) {
+    if (labelling[k]) {
+      if (t.sink_infinite[k]) return false;
+      total = total + Capacity::of(t.sink_samples[k], Measure());
+    } else {
+      if (t.source_infinite[k]) return false;
+      total = total + Capacity::of(t.source_samples[k], Measure());
+    }
+  }
+  for (const auto& [pair, w] : t.binary)
+    if (labelling[pair.first] && !labelling[pair.second]) total = total + w;
+  if (total.infinite) return false;
+  cost->missing_samples = total.samples;
+  cost->measure = total.measure;
+  return true;
+}
+
+CutResult graph_cut(const Problem& problem, const CutConstraints& constraints) {
+  const int n = problem.cell_count();
+  const Terms terms = build_terms(problem, constraints);
+  FlowGraph g(n + 2);
+  const int s = n, t = n + 1;
+  auto capacity = boost::get(boost::edge_capacity, g);
+  auto residual = boost::get(boost::edge_residual_capacity, g);
+  auto reverse = boost::get(boost::edge_reverse, g);
+  struct Arc { Traits::edge_descriptor e; int from, to; };
+  std::vector<Arc> arcs;
+  auto add = [&](int from, int to, const Capacity& w) {
+    auto e = boost::add_edge(from, to, g).first;
+    auto r = boost::add_edge(to, from, g).first;
+    capacity[e] = w;
+    capacity[r] = Capacity();
+    reverse[e] = r;
+    reverse[r] = e;
+    arcs.push_back({e, from, to});
+  };
+  for (int k = 0; k < n; ++k) {
+    if (terms.source_infinite[k])
+      add(s, k, Capacity::inf());
+    else if (terms.source_samples[k])
+      add(s, k, Capacity::of(terms.source_samples[k], Measure()));
+    if (terms.sink_infinite[k])
+      add(k, t, Capacity::inf());
+    else if (terms.sink_samples[k])
+      add(k, t, Capacity::of(terms.sink_samples[k], Measure()));
+  }
+  for (const auto& [pair, w] : terms.binary)
+    if (w.infinite || w.samples || !w.measure.is_zero()) add(pair.first, pair.second, w);
+
+  // Infeasible constraints show as a path of infinite edges from s to t; Edmonds-Karp would loop on it.
+  {
+    std::vector<char> seen(n + 2, 0);
+    std::vector<int> stack{s};
+    seen[s] = 1;
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (auto [it, end] = boost::out_edges(v, g); it != end; ++it) {
+        const int w = static_cast<int>(boost::target(*it, g));
+        if (!seen[w] && capacity[*it].infinite) {
+          seen[w] = 1;
+          stack.push_back(w);
+        }
+      }
+    }
+    if (seen[t]) {
+      CutResult infeasible;
+      infeasible.labelling.assign(n, 0);
+      infeasible.energy.missing_samples = -1;
+      infeasible.certificate_note = "infeasible constraints";
+      return infeasible;
+    }
+  }
+  std::vector<boost::default_color_type> color(n + 2);
+  std::vector<Traits::edge_descriptor> pred(n + 2);
+  // Boost's returned value adds "capacity - residual" on infinite edges, which is meaningless here; the flow value
+  // is recomputed below from the flow on each arc out of s.
+  (void)boost::edmonds_karp_max_flow(
+      g, s, t, capacity, residual, reverse, boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
+      boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)));
+
+  // S side: vertices reachable from s through edges with (certainly) positive residual capacity.
+  CutResult result;
+  result.labelling.assign(n, 0);
+
+  std::vector<char> reach(n + 2, 0);
+  std::vector<int> stack{s};
+  reach[s] = 1;
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (auto [it, end] = boost::out_edges(v, g); it != end; ++it) {
+      const int w = static_cast<int>(boost::target(*it, g));
+      if (!reach[w] && Capacity() < residual[*it]) {
+        reach[w] = 1;
+        stack.push_back(w);
+      }
+    }
+  }
+  for (int k = 0; k < n; ++k) result.labelling[k] = reach[k];
+  result.energy = energy(problem, result.labelling);
+
+  // Certificate: feasibility of the flow and value == energy of the labelling.
+  auto note = [&](const std::string& why) {
+    if (result.certificate_note.empty()) result.certificate_note = why;
+  };
+  if (reach[t]) note("sink reachable after max flow");
+  std::vector<Capacity> balance(n + 2);
+  Capacity flow;
+  for (const Arc& a : arcs) {
+    const Capacity& cap = capacity[a.e];
+    const Capacity& res = residual[a.e];
+    if (cap.infinite) {
+      // Flow on an infinite edge is infinite minus its residual; it is feasible by definition, but it must
+      // also be a finite, non-negative amount for conservation: track it from the reverse edge.
+      const Capacity& back = residual[reverse[a.e]];
+      if (order(back, Capacity()) == Order::Less || order(back, Capacity()) == Order::Tie) note("negative flow");
+      balance[a.to] = balance[a.to] + back;
+      balance[a.from] = balance[a.from] - back;
+      if (a.from == s) flow += back;
+      continue;
+    }
+    const Capacity f = cap - res;
+    const Order lo = order(Capacity(), f), hi = order(res, Capacity());
+    if (lo == Order::Greater || lo == Order::Tie) note("flow not provably >= 0 on an edge");
+    if (hi == Order::Less || hi == Order::Tie) note("flow not provably <= capacity on an edge");
+    balance[a.to] = balance[a.to] + f;
+    balance[a.from] = balance[a.from] - f;
+    if (a.from == s) flow += f;
+  }
+  for (int k = 0; k < n; ++k)
+    if (balance[k].infinite || balance[k].samples != 0 || !balance[k].measure.is_zero())
+      note("flow not conserved at cell " + std::to_string(k));
+  if (flow.infinite || flow.samples != result.energy.missing_samples ||
+      !(flow.measure - result.energy.measure).is_zero())
+    note("flow value differs from the energy of the cut");
+  result.certified = result.certificate_note.empty();
+  return result;
+}
+
+}  // namespace hsx::bsh

@@ -1,0 +1,163 @@
+#include "algorithms/bsh/problem.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <set>
+
+namespace hsx::bsh {
+
+Order compare(const Energy& a, const Energy& b, const CompareOptions& options) {
+  if (a.missing_samples != b.missing_samples)
+    return a.missing_samples < b.missing_samples ? Order::Less : Order::Greater;
+  return hsx::compare(a.measure, b.measure, options);
+}
+
+Problem::Problem(const Complex& complex) : complex_(complex) {
+  supports_.resize(complex.supports.size());
+  for (std::size_t g = 0; g < complex.supports.size(); ++g) {
+    SupportTerm& term = supports_[g];
+    term.patches = complex.supports[g];
+    const Patch& first = complex.patches.at(term.patches.at(0));
+    term.cell_a = first.inside_cell;
+    term.cell_b = first.outside_cell;
+    term.inside_cell = first.inside_cell;
+    term.outside_cell = first.outside_cell;
+    for (int p : term.patches) {
+      const Patch& patch = complex.patches[p];
+      term.samples += static_cast<long>(patch.samples.size());
+      if (patch.inside_cell != term.inside_cell) term.inside_cell = term.outside_cell = -1;
+    }
+    term.measure = first.measure;
+    total_samples_ += term.samples;
+  }
+  support_neighbours_.resize(supports_.size());
+  for (const Junction& j : complex.junctions) {
+    std::vector<int> groups;
+    for (int p : j.patches) groups.push_back(complex.patches[p].support);
+    std::sort(groups.begin(), groups.end());
+    groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+    for (int g : groups)
+      for (int h : groups)
+        if (g != h) support_neighbours_[g].push_back(h);
+  }
+  for (auto& list : support_neighbours_) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+}
+
+std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling) {
+  std::vector<int> out;
+  for (int g = 0; g < problem.support_count(); ++g) {
+    const SupportTerm& s = problem.supports()[g];
+    if (labelling[s.cell_a] != labelling[s.cell_b]) out.push_back(g);
+  }
+  return out;
+}
+
+bool is_orientation_preserving(const Problem& problem, const Labelling& labelling, std::string* why) {
+  const Complex& c = problem.complex();
+  for (int k = 0; k < problem.cell_count(); ++k)
+    if (c.cells[k].outer && labelling[k]) {
+      if (why) *why = "outer cell " + std::to_string(k) + " is labelled inside";
+      return false;
+    }
+  for (int g : boundary_supports(problem, labelling)) {
+    const SupportTerm& s = problem.supports()[g];
+    if (s.inside_cell < 0 || !labelling[s.inside_cell]) {
+      if (why)
+        *why = "patch " + std::to_string(s.patches.front()) + " (" +
+               c.halfspace_names[c.patches[s.patches.front()].halfspace] + ") is on the boundary " +
+               (s.inside_cell < 0 ? "although its coincident halfspaces disagree on inside"
+                                  : "with its orientation reversed");
+      return false;
+    }
+  }
+  return true;
+}
+
+Energy energy(const Problem& problem, const Labelling& labelling) {
+  Energy e;
+  e.missing_samples = problem.total_samples();
+  for (int g : boundary_supports(problem, labelling)) {
+    const SupportTerm& s = problem.supports()[g];
+    e.missing_samples -= s.samples;
+    e.measure += s.measure;
+  }
+  return e;
+}
+
+SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& labelling) {
+  const Complex& c = problem.complex();
+  SampleConnectivity out;
+  std::vector<char> on_b(c.patches.size(), 0);
+  for (int g : boundary_supports(problem, labelling))
+    for (int p : problem.supports()[g].patches) on_b[p] = 1;
+  // Union-find over patches of the same halfspace that share a junction.
+  std::vector<int> parent(c.patches.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  for (const Junction& j : c.junctions)
+    for (std::size_t a = 0; a < j.patches.size(); ++a)
+      for (std::size_t b = a + 1; b < j.patches.size(); ++b) {
+        const int p = j.patches[a], q = j.patches[b];
+        if (on_b[p] && on_b[q] && c.patches[p].halfspace == c.patches[q].halfspace) parent[find(p)] = find(q);
+      }
+  std::map<std::pair<int, int>, int> component_of_root;  // (halfspace, smallest patch) order via root lookup
+  std::map<int, std::vector<int>> members;
+  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p)
+    if (on_b[p]) members[find(p)].push_back(p);
+  std::vector<std::pair<std::pair<int, int>, std::vector<int>>> ordered;
+  for (auto& [root, list] : members) ordered.push_back({{c.patches[list.front()].halfspace, list.front()}, list});
+  std::sort(ordered.begin(), ordered.end());
+  for (auto& [key, list] : ordered) {
+    Component comp;
+    comp.halfspace = key.first;
+    comp.patches = list;
+    for (int p : list) comp.has_sample = comp.has_sample || !c.patches[p].samples.empty();
+    if (!comp.has_sample) out.islands.push_back(static_cast<int>(out.components.size()));
+    out.components.push_back(std::move(comp));
+  }
+  return out;
+}
+
+std::vector<std::vector<int>> removable_sets(const Problem& problem, const Labelling& labelling,
+                                             const SampleConnectivity& connectivity) {
+  const Complex& c = problem.complex();
+  const std::vector<int> on_b_list = boundary_supports(problem, labelling);
+  std::vector<char> on_b(problem.support_count(), 0);
+  for (int g : on_b_list) on_b[g] = 1;
+  std::set<std::vector<int>> seen;
+  std::vector<std::vector<int>> out;
+  auto add = [&](std::vector<int> set) {
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+    if (seen.insert(set).second) out.push_back(std::move(set));
+  };
+  for (int island : connectivity.islands) {
+    std::vector<int> island_supports;
+    for (int p : connectivity.components[island].patches) island_supports.push_back(c.patches[p].support);
+    std::sort(island_supports.begin(), island_supports.end());
+    island_supports.erase(std::unique(island_supports.begin(), island_supports.end()), island_supports.end());
+    add(island_supports);
+    std::set<int> adjacent;
+    for (int g : island_supports)
+      for (int h : problem.support_neighbours()[g])
+        if (on_b[h] && !std::binary_search(island_supports.begin(), island_supports.end(), h)) adjacent.insert(h);
+    for (int h : adjacent) add({h});
+  }
+  return out;
+}
+
+Measure inside_measure(const Complex& complex, const Labelling& labelling) {
+  Measure total;
+  for (std::size_t k = 0; k < complex.cells.size(); ++k)
+    if (labelling[k]) total += complex.cells[k].measure;
+  return total;
+}
+
+}  // namespace hsx::bsh

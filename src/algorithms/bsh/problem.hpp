@@ -1,0 +1,94 @@
+// The BSH labelling problem on a complex (BSH paper, Sections 3 and 5).
+//
+// Conventions (owned here):
+// - A labelling gives every cell 1 (inside the shape) or 0 (outside); outer cells are always 0.
+// - The boundary b of a labelling is the set of supports (groups of coincident patches, complex/complex.hpp)
+//   whose two cells have different labels; a patch is on b when its support is.
+// - Orientation-preserving (Def. 3.1): a support may lie on b only with its halfspaces' inside cell labelled 1.
+//   On coincident boundaries hsx asks this of EVERY halfspace through the support (Def. 3.1 without its
+//   genericity escape clause), so a halfspace given twice behaves like one, and a disk and its complement
+//   cannot be used at all where they coincide. Equivalently: label(outside cell) = 1 implies label(inside) = 1,
+//   and a support whose halfspaces disagree forces equal labels.
+// - A sample is covered when its patch is on b. Energy (Eq. 1) is the pair (missing samples, measure of b)
+//   compared lexicographically: no lambda constant.
+// - Sample-connected (Def. 3.2): for every halfspace i, every connected component of b ∩ b_i (patches of i on b,
+//   connected through shared junctions) holds a sample of i.
+#pragma once
+
+#include "complex/complex.hpp"
+#include "kernel/measure.hpp"
+
+#include <string>
+#include <vector>
+
+namespace hsx::bsh {
+
+using Labelling = std::vector<char>;  ///< per cell: 1 inside the shape, 0 outside
+
+/// E(b) as the pair (|S \ b|, |b|).
+struct Energy {
+  long missing_samples = 0;
+  Measure measure;
+};
+/// Lexicographic and certified: Less/Greater/Equal are proofs, Tie means the measures did not separate.
+Order compare(const Energy& a, const Energy& b, const CompareOptions& options = {});
+
+/// One support group seen by the labelling problem.
+struct SupportTerm {
+  int inside_cell = -1;   ///< the cell its halfspaces have inside (-1 when they disagree: never on b)
+  int outside_cell = -1;
+  int cell_a = -1, cell_b = -1;  ///< the two cells, in the first patch's inside/outside order
+  std::vector<int> patches;
+  long samples = 0;       ///< samples on all its patches
+  Measure measure;        ///< counted once
+};
+
+/// Precomputed, read-only view of a complex for the BSH algorithms.
+class Problem {
+ public:
+  explicit Problem(const Complex& complex);
+  const Complex& complex() const { return complex_; }
+  const std::vector<SupportTerm>& supports() const { return supports_; }
+  int cell_count() const { return static_cast<int>(complex_.cells.size()); }
+  int support_count() const { return static_cast<int>(supports_.size()); }
+  long total_samples() const { return total_samples_; }
+  /// Supports adjacent to each support (sharing a junction through any of their patches), ascending.
+  const std::vector<std::vector<int>>& support_neighbours() const { return support_neighbours_; }
+
+ private:
+  const Complex& complex_;
+  std::vector<SupportTerm> supports_;
+  std::vector<std::vector<int>> support_neighbours_;
+  long total_samples_ = 0;
+};
+
+/// Supports on the boundary of `labelling`, ascending.
+std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling);
+/// True when every outer cell is 0 and every support on b has its inside cell labelled 1. When false and `why`
+/// is given, names the first offending cell or support.
+bool is_orientation_preserving(const Problem& problem, const Labelling& labelling, std::string* why = nullptr);
+Energy energy(const Problem& problem, const Labelling& labelling);
+
+/// A connected component of b ∩ b_i.
+struct Component {
+  int halfspace = -1;
+  std::vector<int> patches;   ///< ascending
+  bool has_sample = false;
+};
+
+struct SampleConnectivity {
+  std::vector<Component> components;  ///< ordered by halfspace, then smallest patch
+  std::vector<int> islands;           ///< indices into components without a sample of their halfspace
+  bool sample_connected() const { return islands.empty(); }
+};
+SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& labelling);
+
+/// Removable sets of b (Section 5.2) as sets of supports: each island, and each single support on b adjacent to
+/// an island (outside it). Deduplicated, in a deterministic order.
+std::vector<std::vector<int>> removable_sets(const Problem& problem, const Labelling& labelling,
+                                             const SampleConnectivity& connectivity);
+
+/// Area (2D) or volume (3D) of the cells labelled 1.
+Measure inside_measure(const Complex& complex, const Labelling& labelling);
+
+}  // namespace hsx::bsh

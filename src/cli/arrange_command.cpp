@@ -1,0 +1,77 @@
+// hsx arrange SCENE [--svg FILE] [--json FILE]: the exact arrangement of a scene and its complex.
+#include "cli/commands.hpp"
+#include "complex/from_arrangement2.hpp"
+#include "io/complex_json.hpp"
+#include "io/files.hpp"
+#include "io/scene_json.hpp"
+#include "io/svg.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace hsx::cli {
+namespace {
+
+struct ArrangeOptions {
+  std::string scene_path;
+  std::string svg_path;
+  std::string json_path;
+  bool quiet = false;
+};
+
+std::string summary_text(const Scene2& scene, const Arranged2& arranged) {
+  const Complex& c = arranged.complex;
+  const Arrangement2& arr = arranged.arrangement;
+  std::ostringstream out;
+  out << "domain " << "[" << exact_string(scene.domain.min.x) << ", " << exact_string(scene.domain.min.y)
+      << "] .. [" << exact_string(scene.domain.max.x) << ", " << exact_string(scene.domain.max.y) << "]"
+      << (scene.domain_given ? "" : " (chosen by hsx)") << "\n";
+  out << "vertices " << arr.vertices().size() << "  edges " << arr.edges().size() << "  cells " << c.cells.size()
+      << "  outer_cells " << c.outer_cell_count() << "  patches " << c.patches.size() << "  junctions "
+      << c.junctions.size() << "  samples " << c.samples.size() << "\n";
+  out << "patch  halfspace  inside/outside cell  samples  length\n";
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
+    const Patch& patch = c.patches[p];
+    out << std::left << std::setw(7) << p << std::setw(11) << c.halfspace_names[patch.halfspace]
+        << std::setw(21) << (std::to_string(patch.inside_cell) + "/" + std::to_string(patch.outside_cell))
+        << std::setw(9) << patch.samples.size() << patch.measure.decimal_string(30);
+    if (auto exact = patch.measure.exact_string()) out << "  = " << *exact;
+    if (c.supports[patch.support].size() > 1) out << "  (coincident with another boundary)";
+    out << "\n";
+  }
+  return out.str();
+}
+
+void run_arrange(const ArrangeOptions& options) {
+  const Scene2 scene = read_scene_file(options.scene_path);
+  const Arranged2 arranged = arrange(scene);
+  // Render everything before writing anything, so a failure leaves no partial output.
+  std::string json_text, svg_text;
+  if (!options.json_path.empty())
+    json_text = complex_to_json(arranged.complex, &arranged.arrangement, &scene.domain).dump(2) + "\n";
+  if (!options.svg_path.empty()) {
+    SvgOptions svg_options;
+    svg_options.title = options.scene_path;
+    svg_text = arrangement_svg(scene, arranged.arrangement, arranged.complex, svg_options);
+  }
+  if (!options.json_path.empty()) write_file_atomically(options.json_path, json_text);
+  if (!options.svg_path.empty()) write_file_atomically(options.svg_path, svg_text);
+  if (!options.quiet && options.json_path != "-") std::cout << summary_text(scene, arranged);
+}
+
+}  // namespace
+
+void add_arrange_command(CLI::App& app) {
+  auto options = std::make_shared<ArrangeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "arrange", "Build the exact arrangement of a 2D scene and its complex; print counts and patches");
+  cmd->add_option("SCENE", options->scene_path, "hsx-scene/1 JSON file")->required();
+  cmd->add_option("--svg", options->svg_path, "write a picture: cells, patches per halfspace, samples");
+  cmd->add_option("--json", options->json_path, "write the complex as hsx-complex/1 JSON ('-' for stdout)");
+  cmd->add_flag("-q,--quiet", options->quiet, "do not print the summary");
+  cmd->callback([options] { run_arrange(*options); });
+}
+
+}  // namespace hsx::cli

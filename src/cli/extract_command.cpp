@@ -1,0 +1,137 @@
+// hsx extract INPUT --method graphcut|beam|best-first|brute-force: the BSH shape (paper, Sections 3 and 5).
+#include "algorithms/bsh/extract.hpp"
+#include "cli/commands.hpp"
+#include "cli/input.hpp"
+#include "io/files.hpp"
+#include "io/result_json.hpp"
+#include "io/svg.hpp"
+
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace hsx::cli {
+namespace {
+
+struct ExtractCommandOptions {
+  std::string input;
+  std::string method = "beam";
+  int beam_width = 1;
+  long max_states = 0;
+  double time_limit = 0;
+  int precision_bits = 2048;
+  int max_ties = 16;
+  std::string svg_path, json_path;
+  bool show_removed = false;
+  bool no_timing = false;
+  bool quiet = false;
+};
+
+std::string energy_text(const bsh::Energy& e) {
+  std::string s = std::to_string(e.missing_samples) + " missing sample" + (e.missing_samples == 1 ? "" : "s") +
+                  ", boundary measure " + e.measure.decimal_string(30);
+  if (auto exact = e.measure.exact_string()) s += " = " + *exact;
+  return s;
+}
+
+std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bsh::ExtractResult& r,
+                    const ExtractCommandOptions& o) {
+  std::ostringstream out;
+  out << "method " << bsh::to_string(r.method);
+  if (r.method == bsh::Method::Beam) out << " (K = " << std::max(1, o.beam_width) << ")";
+  out << "  optimal " << (r.optimal ? "yes (proven)" : "not proven");
+  if (!r.stopped_by.empty()) out << "  stopped by " << r.stopped_by;
+  out << "\nenergy " << energy_text(r.energy) << "\n";
+  const Measure area = bsh::inside_measure(in.complex(), r.labelling);
+  out << (in.complex().dimension == 3 ? "volume " : "area ") << area.decimal_string(30);
+  if (auto exact = area.exact_string()) out << " = " << *exact;
+  out << "\nsample-connected " << (r.sample_connected ? "yes" : "no") << "  ties ";
+  if (!r.ties.checked)
+    out << "not checked by this method";
+  else
+    out << r.ties.count << (r.ties.capped ? "+" : "")
+        << (r.ties.count > 1 ? (r.ties.certified ? " (proven equal energies)" : " (not separated at the precision cap)")
+                             : (r.ties.certified ? " (unique)" : " (unique up to unseparated comparisons)"));
+  const auto boundary = bsh::boundary_supports(problem, r.labelling);
+  out << "\nboundary " << boundary.size() << " patch" << (boundary.size() == 1 ? "" : "es") << ":";
+  for (int g : boundary) {
+    const Patch& p = in.complex().patches[problem.supports()[g].patches.front()];
+    out << " " << in.complex().halfspace_names[p.halfspace] << "#" << problem.supports()[g].patches.front();
+  }
+  out << "\nstats " << r.stats.graph_cuts << " graph cuts (" << r.stats.uncertified_cuts << " uncertified), "
+      << r.stats.states_expanded << " states expanded, " << r.stats.states_created << " created";
+  if (r.stats.labellings_enumerated) out << ", " << r.stats.labellings_enumerated << " labellings enumerated";
+  out << ", " << r.stats.seconds << " s\n";
+  return out.str();
+}
+
+void run_extract(const ExtractCommandOptions& o) {
+  const auto method = bsh::method_from_string(o.method);
+  if (!method) throw InputError("--method: unknown method \"" + o.method + "\" (graphcut, beam, best-first, brute-force)");
+  if (o.beam_width < 1) throw InputError("--beam-width: must be at least 1");
+  if (o.max_states < 0) throw InputError("--max-states: must be >= 0");
+  if (o.time_limit < 0) throw InputError("--time-limit: must be >= 0");
+  if (o.precision_bits < 64) throw InputError("--precision: at least 64 bits");
+  const LoadedInput in = load_input(o.input);
+  if (!o.svg_path.empty() && !in.scene)
+    throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
+
+  bsh::ExtractOptions options;
+  options.method = *method;
+  options.beam_width = o.beam_width;
+  options.max_states = o.max_states;
+  options.time_limit = o.time_limit;
+  options.max_ties = o.max_ties;
+  options.compare.max_bits = o.precision_bits;
+  if (!o.quiet)
+    options.progress = [](const bsh::SearchProgress& p) {
+      std::cerr << "\r[hsx] states expanded " << p.states_expanded << ", queue " << p.queue_size << ", graph cuts "
+                << p.graph_cuts;
+      if (p.best_energy)
+        std::cerr << ", best so far " << p.best_energy->missing_samples << " missing / "
+                  << p.best_energy->measure.decimal_string(12);
+      std::cerr << "      " << std::flush;
+    };
+  const bsh::Problem problem(in.complex());
+  const bsh::ExtractResult result = bsh::extract(problem, options);
+  if (options.progress && result.stats.seconds > 0.5) std::cerr << "\n";
+
+  std::string json_text, svg_text;
+  if (!o.json_path.empty()) json_text = result_to_json(problem, result, in.pieces(), !o.no_timing).dump(2) + "\n";
+  if (!o.svg_path.empty()) {
+    SvgOptions svg;
+    svg.title = o.input + " - " + bsh::to_string(result.method) + (result.optimal ? " (optimal)" : "");
+    svg.cell_fill = result.labelling;
+    if (o.show_removed) {
+      svg.highlight_patches.assign(in.complex().patches.size(), 0);
+      for (int p : patches_of_supports(in.complex(), result.removed)) svg.highlight_patches[p] = 1;
+    }
+    svg_text = arrangement_svg(*in.scene, in.arranged->arrangement, in.complex(), svg);
+  }
+  if (!o.json_path.empty()) write_file_atomically(o.json_path, json_text);
+  if (!o.svg_path.empty()) write_file_atomically(o.svg_path, svg_text);
+  if (!o.quiet && o.json_path != "-") std::cout << summary(in, problem, result, o);
+}
+
+}  // namespace
+
+void add_extract_command(CLI::App& app) {
+  auto o = std::make_shared<ExtractCommandOptions>();
+  CLI::App* cmd = app.add_subcommand("extract", "Extract the BSH shape (orientation-preserving, sample-connected, "
+                                                "least energy) of a scene or a complex");
+  cmd->add_option("INPUT", o->input, "hsx-scene/1 or hsx-complex/1 JSON file")->required();
+  cmd->add_option("--method", o->method, "graphcut | beam | best-first | brute-force (default beam)");
+  cmd->add_option("--beam-width", o->beam_width, "K for the beam search (default 1, as in the paper)");
+  cmd->add_option("--max-states", o->max_states, "stop after expanding N states (0: no limit)");
+  cmd->add_option("--time-limit", o->time_limit, "stop after S seconds (0: no limit)");
+  cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons (default 2048)");
+  cmd->add_option("--max-ties", o->max_ties, "stop enumerating optimal boundaries after N (default 16)");
+  cmd->add_option("--svg", o->svg_path, "write a picture of the shape");
+  cmd->add_flag("--show-removed", o->show_removed, "highlight the removed patches in the picture (paper Fig. 10)");
+  cmd->add_option("--json", o->json_path, "write the hsx-result/1 document ('-' for stdout)");
+  cmd->add_flag("--no-timing", o->no_timing, "leave seconds out of the JSON (byte-reproducible output)");
+  cmd->add_flag("-q,--quiet", o->quiet, "no summary, no progress");
+  cmd->callback([o] { run_extract(*o); });
+}
+
+}  // namespace hsx::cli

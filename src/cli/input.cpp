@@ -1,0 +1,36 @@
+#include "cli/input.hpp"
+
+#include "io/exact_json.hpp"
+#include "io/scene_json.hpp"
+
+namespace hsx::cli {
+
+PlanarPieces LoadedInput::pieces() const {
+  if (arranged) return {&arranged->arrangement.vertices(), &arranged->arrangement.edges()};
+  if (document && document->has_geometry) return {&document->vertices, &document->edges};
+  return {};
+}
+
+LoadedInput load_input(const std::string& path) {
+  LoadedInput in;
+  in.path = path;
+  const nlohmann::json doc = read_exact_json_file(path);
+  const nlohmann::json* format = doc.is_object() && doc.contains("format") ? &doc.at("format") : nullptr;
+  if (format && format->is_string() && format->get<std::string>() == kComplexFormat) {
+    try {
+      in.document = complex_document_from_json(doc);
+    } catch (const InputError& e) {
+      throw InputError(path + ": " + e.what());
+    }
+    return in;
+  }
+  try {
+    in.scene = read_scene2(doc);
+    in.arranged = arrange(*in.scene);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+  return in;
+}
+
+}  // namespace hsx::cli

@@ -1,0 +1,27 @@
+// What a command reads: an hsx-scene/1 file (arranged here) or an hsx-complex/1 file (an arrangement computed
+// elsewhere). Dispatch is on the document's "format" field.
+#pragma once
+
+#include "complex/from_arrangement2.hpp"
+#include "io/complex_json.hpp"
+#include "io/result_json.hpp"
+
+#include <optional>
+#include <string>
+
+namespace hsx::cli {
+
+struct LoadedInput {
+  std::string path;
+  std::optional<Scene2> scene;              ///< set for scene input
+  std::optional<Arranged2> arranged;        ///< set for scene input
+  std::optional<ComplexDocument> document;  ///< set for complex input
+
+  const Complex& complex() const { return arranged ? arranged->complex : document->complex; }
+  PlanarPieces pieces() const;
+};
+
+/// Throws InputError naming the file and field.
+LoadedInput load_input(const std::string& path);
+
+}  // namespace hsx::cli

@@ -1,0 +1,28 @@
+// hsx: exact-arithmetic research and verification engine for halfspace-based solid modelling.
+#include "cli/commands.hpp"
+#include "geometry/scene.hpp"
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{"hsx: exact arrangements, BSH shapes and halfspace CSG, with certified answers"};
+  app.set_version_flag("--version", std::string("hsx ") + HSX_VERSION);
+  app.require_subcommand(1);
+  hsx::cli::add_arrange_command(app);
+  hsx::cli::add_extract_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const hsx::InputError& e) {
+    std::cerr << "hsx: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "hsx: internal error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

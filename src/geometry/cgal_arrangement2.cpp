@@ -1,0 +1,370 @@
+// The only translation unit that instantiates CGAL's 2D arrangement (it takes ~20 s and ~1.2 GB to compile: keep
+// CGAL out of every other file). Everything it hands out is plain data (geometry/arrangement2.hpp).
+#include "geometry/arrangement2.hpp"
+#include "geometry/planar_measures.hpp"
+
+#include <CGAL/Arr_circle_segment_traits_2.h>
+#include <CGAL/Arr_consolidated_curve_data_traits_2.h>
+#include <CGAL/Arr_walk_along_line_point_location.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Cartesian.h>
+
+#include <algorithm>
+#include <deque>
+#include <numeric>
+#include <sstream>
+#include <unordered_map>
+
+namespace hsx {
+namespace {
+
+using NT = mpq_class;
+using Kernel = CGAL::Cartesian<NT>;
+using BaseTraits = CGAL::Arr_circle_segment_traits_2<Kernel>;
+using Traits = CGAL::Arr_consolidated_curve_data_traits_2<BaseTraits, int>;
+using CgalArrangement = CGAL::Arrangement_2<Traits>;
+using CoordNT = BaseTraits::CoordNT;
+using CgalPoint = BaseTraits::Point_2;
+using BaseCurve = BaseTraits::Curve_2;
+using Curve = Traits::Curve_2;
+using XCurve = Traits::X_monotone_curve_2;
+using Halfedge = CgalArrangement::Halfedge_const_handle;
+using FaceHandle = CgalArrangement::Face_const_handle;
+using VertexHandle = CgalArrangement::Vertex_const_handle;
+using PointLocation = CGAL::Arr_walk_along_line_point_location<CgalArrangement>;
+
+constexpr int kBoxCurve = -1;  // curve data of the domain box's sides
+
+OneRoot to_one_root(const CoordNT& c) {
+  if (!c.is_extended()) return OneRoot(c.a0());
+  return OneRoot(c.a0(), c.a1(), c.root());
+}
+
+OneRootPoint to_point(const CgalPoint& p) { return OneRootPoint(to_one_root(p.x()), to_one_root(p.y())); }
+
+CoordNT to_coord(const OneRoot& r) {
+  if (r.is_rational()) return CoordNT(r.a0);
+  return CoordNT(r.a0, r.a1, r.root);
+}
+
+Kernel::Point_2 to_kernel(const PointQ2& p) { return Kernel::Point_2(p.x, p.y); }
+
+/// The part of the line {x : n.x = offset} inside the closed box, as a segment; nullopt when the line misses the
+/// box's interior (it may still touch a corner or run along a side: then it is reported too, see below).
+std::optional<std::pair<PointQ2, PointQ2>> clip_line_to_box(const PointQ2& n, const Rational& offset,
+                                                            const Box2& box) {
+  std::vector<PointQ2> hits;
+  auto add = [&](const PointQ2& p) {
+    if (!box.contains(p)) return;
+    for (const auto& q : hits)
+      if (q == p) return;
+    hits.push_back(p);
+  };
+  if (n.y != 0) {  // intersections with the vertical sides x = min.x, x = max.x
+    for (const Rational& x : {box.min.x, box.max.x}) {
+      Rational y = (offset - n.x * x) / n.y;
+      add({x, y});
+    }
+  }
+  if (n.x != 0) {  // with the horizontal sides
+    for (const Rational& y : {box.min.y, box.max.y}) {
+      Rational x = (offset - n.y * y) / n.x;
+      add({x, y});
+    }
+  }
+  if (hits.size() < 2) return std::nullopt;  // misses the box or touches it at a single corner
+  // A convex box meets a line in one segment: its extreme hits are its end points.
+  auto less = [](const PointQ2& a, const PointQ2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+  auto [lo, hi] = std::minmax_element(hits.begin(), hits.end(), less);
+  return std::make_pair(*lo, *hi);
+}
+
+/// Exact interval refinement until two distinct one-root numbers separate; returns a rational strictly between.
+Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi) {
+  for (mpfr_prec_t bits = 64;; bits *= 2) {
+    Interval a = lo.enclose(bits), b = hi.enclose(bits);
+    Interval gap = b - a;
+    if (gap.certain_sign() > 0) return Interval::rational_between(a, b);
+    if (bits > (1 << 22)) throw std::logic_error("rational_strictly_between: values do not separate");
+  }
+}
+
+/// y of a non-vertical x-monotone curve at x0 (x0 within its closed x-range).
+OneRoot y_at(const XCurve& cv, const Rational& x0) {
+  if (cv.is_linear()) {
+    const auto line = cv.supporting_line();
+    return OneRoot(Rational(-(line.a() * x0 + line.c()) / line.b()));
+  }
+  const auto circle = cv.supporting_circle();
+  const Rational dx = x0 - circle.center().x();
+  Rational radicand = circle.squared_radius() - dx * dx;
+  // Counter-clockwise travel runs right to left on the upper half-circle.
+  const bool upper = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
+  OneRoot y(circle.center().y(), Rational(upper ? 1 : -1), radicand);
+  y.normalise();
+  return y;
+}
+
+}  // namespace
+
+struct Arrangement2::Impl {
+  CgalArrangement arr;
+  std::unique_ptr<PointLocation> locator;
+  std::unordered_map<const void*, int> vertex_index, face_index, edge_index;  // keyed by CGAL record address
+};
+
+namespace {
+
+template <typename Handle>
+const void* key(Handle h) {
+  return &*h;
+}
+
+}  // namespace
+
+Arrangement2 Arrangement2::build(const Scene2& scene) {
+  Arrangement2 out;
+  out.domain_ = scene.domain;
+  out.halfspace_count_ = static_cast<int>(scene.halfspaces.size());
+  auto impl = std::make_shared<Impl>();
+  CgalArrangement& arr = impl->arr;
+
+  // --- 1. Curves: the box, then every halfspace boundary tagged with its index. ---------------------------------
+  std::vector<Curve> curves;
+  const Box2& box = scene.domain;
+  const PointQ2 corners[4] = {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
+  for (int k = 0; k < 4; ++k)
+    curves.emplace_back(BaseCurve(Kernel::Segment_2(to_kernel(corners[k]), to_kernel(corners[(k + 1) % 4]))),
+                        kBoxCurve);
+  for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
+    const Halfspace2& h = scene.halfspaces[i];
+    switch (h.kind) {
+      case HalfspaceKind2::Halfplane:
+        if (auto seg = clip_line_to_box(h.normal, h.offset, box))
+          curves.emplace_back(BaseCurve(Kernel::Segment_2(to_kernel(seg->first), to_kernel(seg->second))), i);
+        break;
+      case HalfspaceKind2::Disk:
+        curves.emplace_back(
+            BaseCurve(Kernel::Circle_2(to_kernel(h.center), h.radius * h.radius, CGAL::COUNTERCLOCKWISE)), i);
+        break;
+      case HalfspaceKind2::Polygon:
+        for (std::size_t k = 0; k < h.vertices.size(); ++k)
+          curves.emplace_back(BaseCurve(Kernel::Segment_2(to_kernel(h.vertices[k]),
+                                                          to_kernel(h.vertices[(k + 1) % h.vertices.size()]))),
+                              i);
+        break;
+    }
+  }
+  CGAL::insert(arr, curves.begin(), curves.end());
+
+  // --- 2. Vertices. ----------------------------------------------------------------------------------------------
+  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
+    impl->vertex_index[key(VertexHandle(v))] = static_cast<int>(out.vertices_.size());
+    out.vertices_.push_back({to_point(v->point()), static_cast<int>(v->degree())});
+  }
+  // --- 3. Faces: bounded ones only; the unbounded face is outside the domain. -------------------------------------
+  std::vector<FaceHandle> faces;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (f->is_unbounded()) continue;
+    impl->face_index[key(FaceHandle(f))] = static_cast<int>(faces.size());
+    faces.push_back(f);
+  }
+  auto face_id = [&](FaceHandle f) -> int {
+    if (f->is_unbounded()) return -1;
+    return impl->face_index.at(key(f));
+  };
+  auto vertex_id = [&](VertexHandle v) { return impl->vertex_index.at(key(v)); };
+
+  // --- 4. Edges, oriented as CGAL's representative halfedge. ------------------------------------------------------
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
+    Halfedge h = e;
+    const int id = static_cast<int>(out.edges_.size());
+    impl->edge_index[key(h)] = id;
+    impl->edge_index[key(h->twin())] = id;
+    ArrEdge2 edge;
+    edge.source = vertex_id(h->source());
+    edge.target = vertex_id(h->target());
+    edge.left_face = face_id(h->face());
+    edge.right_face = face_id(h->twin()->face());
+    for (auto it = h->curve().data().begin(); it != h->curve().data().end(); ++it) {
+      if (*it == kBoxCurve)
+        edge.on_box = true;
+      else
+        edge.halfspaces.push_back(*it);
+    }
+    std::sort(edge.halfspaces.begin(), edge.halfspaces.end());
+    edge.halfspaces.erase(std::unique(edge.halfspaces.begin(), edge.halfspaces.end()), edge.halfspaces.end());
+    const XCurve& cv = h->curve();
+    if (cv.is_circular()) {
+      edge.shape = EdgeShape2::Arc;
+      const auto circle = cv.supporting_circle();
+      edge.center = {circle.center().x(), circle.center().y()};
+      // Arcs come only from disks, and coincident arcs lie on one circle: take the radius of the first disk.
+      edge.radius = scene.halfspaces.at(edge.halfspaces.at(0)).radius;
+      const bool halfedge_directed_right = h->direction() == CGAL::ARR_LEFT_TO_RIGHT;
+      const bool same_as_curve = halfedge_directed_right == cv.is_directed_right();
+      edge.ccw = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == same_as_curve;
+    }
+    edge.length = edge_length(edge, out.vertices_[edge.source].point, out.vertices_[edge.target].point);
+    out.edges_.push_back(std::move(edge));
+  }
+  auto edge_of = [&](Halfedge h) { return impl->edge_index.at(key(h)); };
+  auto forward = [&](Halfedge h) { return vertex_id(h->source()) == out.edges_[edge_of(h)].source; };
+
+  // --- 5. Per face: boundary walks, outer flag, area (Green's theorem), an exact interior point. -----------------
+  out.faces_.resize(faces.size());
+  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
+    FaceHandle f = faces[fi];
+    ArrFace2& face = out.faces_[fi];
+    std::vector<Halfedge> walk_halfedges;
+    auto walk = [&](CgalArrangement::Ccb_halfedge_const_circulator start) {
+      std::vector<std::pair<int, bool>> cycle;
+      auto c = start;
+      do {
+        Halfedge h = c;
+        walk_halfedges.push_back(h);
+        cycle.emplace_back(edge_of(h), forward(h));
+      } while (++c != start);
+      face.boundary.push_back(std::move(cycle));
+    };
+    walk(f->outer_ccb());
+    for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end(); ++hole) walk(*hole);
+
+    for (Halfedge h : walk_halfedges)
+      if (out.edges_[edge_of(h)].on_box) face.outer = true;
+    face.area = enclosed_area(face.boundary, out.edges_, out.vertices_);
+
+    // Interior point: shoot vertically from a point of a non-vertical boundary edge into the face; the open
+    // vertical segment up to the next boundary crossing lies in the face.
+    Halfedge base;
+    bool found = false;
+    for (Halfedge h : walk_halfedges)
+      if (!h->curve().is_vertical()) {
+        base = h;
+        found = true;
+        break;
+      }
+    if (!found) throw std::logic_error("arrangement face without a non-vertical boundary edge");
+    const OneRoot xl = to_one_root(base->curve().left().x());
+    OneRoot xn = to_one_root(base->curve().right().x());
+    for (Halfedge h : walk_halfedges) {
+      OneRoot x = to_one_root(h->target()->point().x());
+      if (compare(x, xl) > 0 && compare(x, xn) < 0) xn = x;
+    }
+    const Rational x0 = rational_strictly_between(xl, xn);
+    const OneRoot y_base = y_at(base->curve(), x0);
+    const bool face_above = base->direction() == CGAL::ARR_LEFT_TO_RIGHT;
+    std::optional<OneRoot> y_next;
+    for (Halfedge h : walk_halfedges) {
+      const XCurve& cv = h->curve();
+      if (cv.is_vertical()) continue;
+      const OneRoot l = to_one_root(cv.left().x()), r = to_one_root(cv.right().x());
+      if (!(compare(l, OneRoot(x0)) < 0 && compare(OneRoot(x0), r) < 0)) continue;
+      OneRoot y = y_at(cv, x0);
+      const int side = compare(y, y_base);
+      if (face_above ? side <= 0 : side >= 0) continue;
+      if (!y_next || (face_above ? compare(y, *y_next) < 0 : compare(y, *y_next) > 0)) y_next = y;
+    }
+    if (!y_next) throw std::logic_error("arrangement face is not closed above/below its base edge");
+    const Rational y0 =
+        face_above ? rational_strictly_between(y_base, *y_next) : rational_strictly_between(*y_next, y_base);
+    face.interior = {x0, y0};
+  }
+
+  // --- 6. Sides: evaluate one face directly, then flip halfspace bits across edges (breadth first). ---------------
+  const std::size_t n_half = scene.halfspaces.size();
+  if (!out.faces_.empty()) {
+    std::vector<char> seen(out.faces_.size(), 0);
+    ArrFace2& root = out.faces_[0];
+    root.inside.assign(n_half, 0);
+    for (std::size_t i = 0; i < n_half; ++i) {
+      const int side = scene.halfspaces[i].side(root.interior);
+      if (side == 0) throw std::logic_error("face interior point lies on a boundary");
+      root.inside[i] = side > 0;
+    }
+    std::deque<int> queue{0};
+    seen[0] = 1;
+    while (!queue.empty()) {
+      const int fi = queue.front();
+      queue.pop_front();
+      for (const auto& cycle : out.faces_[fi].boundary)
+        for (const auto& [ei, fwd] : cycle) {
+          const ArrEdge2& e = out.edges_[ei];
+          const int other = fwd ? e.right_face : e.left_face;
+          if (other < 0 || seen[other]) continue;
+          seen[other] = 1;
+          out.faces_[other].inside = out.faces_[fi].inside;
+          for (int i : e.halfspaces) out.faces_[other].inside[i] ^= 1;
+          queue.push_back(other);
+        }
+    }
+    if (std::find(seen.begin(), seen.end(), 0) != seen.end())
+      throw std::logic_error("arrangement faces inside the domain are not connected");
+  }
+
+  // --- 7. Samples: exact point location on the boundary of their halfspace. ---------------------------------------
+  impl->locator = std::make_unique<PointLocation>(arr);
+  for (std::size_t s = 0; s < scene.samples.size(); ++s) {
+    const Sample2& sample = scene.samples[s];
+    const std::string who = "samples[" + std::to_string(s) + "] (on \"" +
+                            scene.halfspaces.at(sample.halfspace).name + "\")";
+    const CgalPoint p(to_coord(sample.location.x), to_coord(sample.location.y));
+    const auto located = impl->locator->locate(p);
+    auto carries = [&](int ei) {
+      const ArrEdge2& e = out.edges_[ei];
+      return !e.on_box && std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), sample.halfspace);
+    };
+    int edge = -1;
+    if (const Halfedge* h = boost::get<Halfedge>(&located)) {
+      edge = edge_of(*h);
+      if (out.edges_[edge].on_box)
+        throw InputError(who + ": lies on the domain boundary " + sample.location.exact_string() +
+                         "; move it inside the domain");
+      if (!carries(edge)) throw std::logic_error(who + ": located on an edge of another boundary");
+    } else if (const VertexHandle* v = boost::get<VertexHandle>(&located)) {
+      // A degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is inside a patch.
+      std::vector<int> incident;
+      auto c = (*v)->incident_halfedges();
+      for (std::size_t k = 0; k < (*v)->degree(); ++k, ++c) incident.push_back(edge_of(Halfedge(c)));
+      const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
+                              out.edges_[incident[0]].halfspaces == out.edges_[incident[1]].halfspaces;
+      if (!inside_run)
+        throw InputError(who + ": lies on an arrangement vertex " + sample.location.exact_string() +
+                         " where boundaries meet; a sample must lie inside a patch");
+      edge = std::min(incident[0], incident[1]);
+    } else {
+      throw InputError(who + ": " + sample.location.exact_string() + " is not on the boundary inside the domain");
+    }
+    out.sample_edges_.push_back(edge);
+  }
+  out.impl_ = std::move(impl);
+  return out;
+}
+
+int Arrangement2::connected_components() const {
+  std::vector<int> parent(vertices_.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& e : edges_) parent[find(e.source)] = find(e.target);
+  int count = 0;
+  for (std::size_t v = 0; v < parent.size(); ++v) count += find(static_cast<int>(v)) == static_cast<int>(v);
+  return count;
+}
+
+PointLocation2 Arrangement2::locate(const PointQ2& p) const {
+  const CgalPoint q(CoordNT(p.x), CoordNT(p.y));
+  const auto located = impl_->locator->locate(q);
+  if (const FaceHandle* f = boost::get<FaceHandle>(&located)) {
+    if ((*f)->is_unbounded()) return {PointLocation2::Outside, -1};
+    return {PointLocation2::Face, impl_->face_index.at(key(*f))};
+  }
+  if (const Halfedge* h = boost::get<Halfedge>(&located))
+    return {PointLocation2::Edge, impl_->edge_index.at(key(*h))};
+  const VertexHandle* v = boost::get<VertexHandle>(&located);
+  return {PointLocation2::Vertex, impl_->vertex_index.at(key(*v))};
+}
+
+}  // namespace hsx

@@ -1,0 +1,1027 @@
+// The hsx-complex/1 document: see complex_json.hpp.
+#include "io/complex_json.hpp"
+
+#include "geometry/planar_measures.hpp"
+#include "io/exact_json.hpp"
+#include "kernel/interval.hpp"
+
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace hsx {
+
+namespace {
+
+using json = nlohmann::json;
+
+// ---------------------------------------------------------------------------------------------------------------
+// Closed forms and one-root numbers
+
+/// Limits on a closed form, so that hostile input fails fast (the kernel compares radicands pairwise).
+constexpr std::size_t kMaxClosedFormChars = 200000;
+constexpr std::size_t kMaxClosedFormTerms = 4096;
+constexpr std::size_t kMaxRadicandChars = 1000;
+
+struct Term {
+  Rational coefficient;
+  std::optional<Rational> radicand;  ///< nullopt: a rational term
+};
+
+bool fail_with(std::string* why, std::string reason) {
+  if (why != nullptr) *why = std::move(reason);
+  return false;
+}
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+/// Terms of "t1 + t2 - t3 ...", each t: q | q*sqrt(m) | sqrt(m), each optionally with its own sign.
+bool parse_terms(std::string_view text, std::vector<Term>& terms, std::string* why) {
+  const std::size_t n = text.size();
+  std::size_t i = 0;
+  auto skip = [&] {
+    while (i < n && is_space(text[i])) ++i;
+  };
+  auto at = [&](std::size_t k) { return "at character " + std::to_string(k + 1); };
+  auto parse_sqrt = [&](Rational& m) {  // at "sqrt"
+    if (text.substr(i, 4) != "sqrt") return fail_with(why, "expected a number or sqrt(...) " + at(i));
+    i += 4;
+    skip();
+    if (i >= n || text[i] != '(') return fail_with(why, "expected '(' after sqrt " + at(i));
+    const std::size_t open = i++;
+    const std::size_t close = text.find_first_of("()", i);
+    if (close == std::string_view::npos || text[close] != ')') {
+      return fail_with(why, close == std::string_view::npos ? "unbalanced parenthesis " + at(open)
+                                                            : "nested radicals are not accepted " + at(close));
+    }
+    std::string_view inner = text.substr(i, close - i);
+    while (!inner.empty() && is_space(inner.front())) inner.remove_prefix(1);
+    while (!inner.empty() && is_space(inner.back())) inner.remove_suffix(1);
+    if (inner.size() > kMaxRadicandChars) {
+      return fail_with(why, "a radicand longer than " + std::to_string(kMaxRadicandChars) + " characters");
+    }
+    std::string reason;
+    auto q = parse_rational(inner, &reason);
+    if (!q) return fail_with(why, "bad radicand \"" + std::string(inner.substr(0, 40)) + "\": " + reason);
+    if (sgn(*q) < 0) return fail_with(why, "negative radicand " + exact_string(*q));
+    m = *q;
+    i = close + 1;
+    return true;
+  };
+  if (n > kMaxClosedFormChars) {
+    return fail_with(why, "longer than " + std::to_string(kMaxClosedFormChars) + " characters");
+  }
+  skip();
+  if (i >= n) return fail_with(why, "empty");
+  bool first = true;
+  while (true) {
+    skip();
+    if (i >= n) break;
+    int sign = 1;
+    if (!first) {
+      if (text[i] != '+' && text[i] != '-') return fail_with(why, "expected '+' or '-' " + at(i));
+      sign = text[i] == '-' ? -1 : 1;
+      ++i;
+      skip();
+    }
+    if (i < n && (text[i] == '+' || text[i] == '-')) {
+      if (text[i] == '-') sign = -sign;
+      ++i;
+      skip();
+    }
+    if (i >= n) return fail_with(why, "missing term at the end");
+    Term term;
+    if (text[i] == 's') {
+      Rational m;
+      if (!parse_sqrt(m)) return false;
+      term.coefficient = sign;
+      term.radicand = m;
+    } else if (is_digit(text[i]) || text[i] == '.') {
+      const std::size_t start = i;
+      while (i < n) {
+        const char c = text[i];
+        if (is_digit(c) || c == '.' || c == '/') {
+          ++i;
+        } else if ((c == 'e' || c == 'E') && i + 1 < n &&
+                   (is_digit(text[i + 1]) || ((text[i + 1] == '+' || text[i + 1] == '-') && i + 2 < n &&
+                                              is_digit(text[i + 2])))) {
+          i += 2;
+        } else {
+          break;
+        }
+      }
+      std::string reason;
+      auto q = parse_rational(text.substr(start, i - start), &reason);
+      if (!q) {
+        return fail_with(why, "bad number \"" + std::string(text.substr(start, std::min<std::size_t>(i - start, 40))) +
+                                  "\": " + reason);
+      }
+      term.coefficient = sign > 0 ? *q : Rational(-*q);
+      skip();
+      if (i < n && text[i] == '*') {
+        ++i;
+        skip();
+        Rational m;
+        if (!parse_sqrt(m)) return false;
+        term.radicand = m;
+      }
+    } else {
+      return fail_with(why, "expected a number or sqrt(...) " + at(i));
+    }
+    if (terms.size() >= kMaxClosedFormTerms) {
+      return fail_with(why, "more than " + std::to_string(kMaxClosedFormTerms) + " terms");
+    }
+    terms.push_back(std::move(term));
+    first = false;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Decimals
+
+struct DecimalText {
+  Rational value;
+  bool zero = false;
+  long leading_exponent = 0;  ///< 10^E <= |value| < 10^(E+1)
+  long last_exponent = 0;     ///< the last written digit's place
+};
+
+/// A decimal "[-+]d*[.d*][e[-+]d+]" (at least one digit), or nullopt with *why.
+std::optional<DecimalText> parse_decimal(const std::string& text, std::string* why) {
+  std::string reason;
+  auto q = parse_rational(text, &reason);
+  if (!q || text.find('/') != std::string::npos) {
+    fail_with(why, "expected a decimal number, got \"" + text.substr(0, 40) + "\"" +
+                       (reason.empty() ? "" : " (" + reason + ")"));
+    return std::nullopt;
+  }
+  DecimalText d;
+  d.value = *q;
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  if (i < n && (text[i] == '+' || text[i] == '-')) ++i;
+  long leading = -1;  // number of mantissa digits from the first non-zero digit to the end
+  long frac = 0;
+  bool in_frac = false;
+  for (; i < n && (is_digit(text[i]) || text[i] == '.'); ++i) {
+    if (text[i] == '.') {
+      in_frac = true;
+      continue;
+    }
+    if (in_frac) ++frac;
+    if (leading >= 0) {
+      ++leading;
+    } else if (text[i] != '0') {
+      leading = 1;
+    }
+  }
+  long exponent = 0;
+  if (i < n && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    int s = 1;
+    if (i < n && (text[i] == '+' || text[i] == '-')) s = text[i++] == '-' ? -1 : 1;
+    for (; i < n && is_digit(text[i]); ++i) exponent = std::min<long>(exponent * 10 + (text[i] - '0'), 1000000000L);
+    exponent *= s;
+  }
+  d.zero = sgn(d.value) == 0;
+  d.last_exponent = exponent - frac;
+  d.leading_exponent = d.zero ? d.last_exponent : d.last_exponent + leading - 1;
+  return d;
+}
+
+/// True unless `value` is proven to differ from the decimal by more than one unit in its last digit (at least 6,
+/// at most 60 significant digits considered).
+bool decimal_agrees(const Measure& value, const DecimalText& d) {
+  if (d.zero) return value.is_zero();
+  const long E = d.leading_exponent;
+  long t = std::min(d.last_exponent, E - 5);
+  t = std::max(t, E - 59);
+  Rational tolerance = 1;
+  const Integer p = [&] {
+    Integer r;
+    mpz_ui_pow_ui(r.get_mpz_t(), 10, static_cast<unsigned long>(t < 0 ? -t : t));
+    return r;
+  }();
+  tolerance = t < 0 ? make_rational(1, p) : Rational(p);
+  const mpfr_prec_t bits = static_cast<mpfr_prec_t>(128 + 4 * (E - t));
+  const Measure diff = value - Measure(d.value);
+  const Interval I = diff.enclose(bits);
+  const Interval T(tolerance, bits);
+  const Interval minus_T = -T;
+  const bool above = mpfr_cmp(I.lo(), T.hi()) > 0;
+  const bool below = mpfr_cmp(I.hi(), minus_T.lo()) < 0;
+  return !above && !below;
+}
+
+/// The text of a "decimal" field: a string, a JSON integer or an exact-number marker.
+std::string decimal_text(const JsonField& f) {
+  const json& v = f.json();
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
+  if (is_exact_number(v)) return v.find(kExactNumberKey)->get<std::string>();
+  f.fail("expected a decimal number, got " + describe_json(v));
+}
+
+DecimalText read_decimal(const JsonField& f) {
+  std::string why;
+  auto d = parse_decimal(decimal_text(f), &why);
+  if (!d) f.fail(why);
+  return *d;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Measures in documents
+
+json measure_json(const Measure& m) {
+  json j = json::object();
+  j["decimal"] = m.decimal_string(30);
+  const auto exact = m.exact_string();
+  j["exact"] = exact ? json(*exact) : json(nullptr);
+  return j;
+}
+
+struct MeasureFields {
+  std::optional<JsonField> exact, decimal;
+};
+
+MeasureFields measure_fields(const JsonField& f) {
+  const json& v = f.json();
+  MeasureFields out;
+  if (v.is_string() || v.is_number() || is_exact_number(v)) {
+    out.exact = f;
+    return out;
+  }
+  if (!v.is_object()) f.fail("expected a measure {\"decimal\": ..., \"exact\": ...}, got " + describe_json(v));
+  f.check_keys({"decimal", "exact"}, "a measure");
+  if (auto e = f.get("exact"); e && !e->json().is_null()) out.exact = e;
+  if (auto d = f.get("decimal"); d && !d->json().is_null()) out.decimal = d;
+  return out;
+}
+
+/// The exact value of an "exact" field: a number, or a closed-form string; nullopt (with *why) when the string
+/// is not in the accepted grammar.
+std::optional<Measure> exact_value(const JsonField& f, std::string* why) {
+  const json& v = f.json();
+  if (v.is_string()) return parse_closed_form(v.get<std::string>(), why);
+  return Measure(f.rational());
+}
+
+std::string show(const Measure& m) {
+  const auto e = m.exact_string();
+  return e ? "\"" + *e + "\" = " + m.decimal_string(20) : m.decimal_string(20);
+}
+
+/// A measure read without geometry.
+Measure measure_from_fields(const JsonField& f) {
+  const MeasureFields m = measure_fields(f);
+  if (m.exact) {
+    std::string why;
+    auto value = exact_value(*m.exact, &why);
+    if (!value) m.exact->fail("not an accepted closed form (" + why + "); give a \"decimal\" instead, or a geometry section");
+    if (m.decimal && !decimal_agrees(*value, read_decimal(*m.decimal))) {
+      m.decimal->fail("does not agree with the exact value " + show(*value));
+    }
+    return *value;
+  }
+  if (m.decimal) return Measure(read_decimal(*m.decimal).value);
+  f.fail("needs \"exact\" or \"decimal\"");
+}
+
+/// Checks given measure fields against a value recomputed from the geometry.
+void check_measure(const JsonField& f, const Measure& recomputed, const std::string& what) {
+  const MeasureFields m = measure_fields(f);
+  if (m.exact) {
+    std::string why;
+    const auto given = exact_value(*m.exact, &why);
+    bool ok;
+    if (given) {
+      ok = compare(*given, recomputed) == Order::Equal;
+    } else {
+      // Outside the parser's grammar (a nested radical): it must be the recomputed closed form itself.
+      const auto text = recomputed.exact_string();
+      ok = m.exact->json().is_string() && text && *text == m.exact->json().get<std::string>();
+    }
+    if (!ok) m.exact->fail("differs from the " + what + " recomputed from the geometry, " + show(recomputed));
+  }
+  if (m.decimal && !decimal_agrees(recomputed, read_decimal(*m.decimal))) {
+    m.decimal->fail("differs from the " + what + " recomputed from the geometry, " + show(recomputed));
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Reading helpers
+
+int read_index(const JsonField& f, std::size_t count, const std::string& what) {
+  const std::int64_t v = f.integer();
+  if (v < 0 || static_cast<std::uint64_t>(v) >= count) {
+    f.fail(what + " " + std::to_string(v) + " is out of range (there " + (count == 1 ? "is " : "are ") +
+           std::to_string(count) + " " + what + (count == 1 ? "" : "s") + ")");
+  }
+  return static_cast<int>(v);
+}
+
+void check_id(const JsonField& element, std::size_t position) {
+  if (auto id = element.get("id")) {
+    const std::int64_t v = id->integer();
+    if (v < 0 || static_cast<std::uint64_t>(v) != position) {
+      id->fail("is " + std::to_string(v) + " but ids are array positions; expected " + std::to_string(position));
+    }
+  }
+}
+
+/// Indices in range, sorted, no duplicates.
+std::vector<int> read_index_set(const JsonField& f, std::size_t count, const std::string& what) {
+  std::vector<int> out;
+  const std::size_t n = f.size();
+  out.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) out.push_back(read_index(f.at(k), count, what));
+  std::vector<int> sorted = out;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t k = 1; k < sorted.size(); ++k)
+    if (sorted[k] == sorted[k - 1]) f.fail("lists " + what + " " + std::to_string(sorted[k]) + " twice");
+  return sorted;
+}
+
+class Names {
+ public:
+  explicit Names(const std::vector<std::string>& names) {
+    for (std::size_t i = 0; i < names.size(); ++i) index_.emplace(names[i], static_cast<int>(i));
+  }
+  int operator()(const JsonField& f) const {
+    const std::string name = f.string();
+    auto it = index_.find(name);
+    if (it == index_.end()) f.fail("unknown halfspace " + describe_json(json(name)));
+    return it->second;
+  }
+
+ private:
+  std::map<std::string, int> index_;
+};
+
+std::string name_of(const std::vector<std::string>& names, int h) {
+  return describe_json(json(names.at(static_cast<std::size_t>(h))));
+}
+
+OneRoot read_one_root(const JsonField& f) {
+  if (f.json().is_string()) {
+    std::string why;
+    auto v = parse_one_root(f.json().get<std::string>(), &why);
+    if (!v) f.fail("expected an exact number \"a\" or \"a + b*sqrt(c)\", got " + describe_json(f.json()) + " (" + why + ")");
+    return *v;
+  }
+  return OneRoot(f.rational());
+}
+
+OneRootPoint read_one_root_point(const JsonField& f) {
+  if (f.size() != 2) f.fail("expected a point [x, y], got " + std::to_string(f.size()) + " coordinates");
+  return OneRootPoint(read_one_root(f.at(std::size_t{0})), read_one_root(f.at(std::size_t{1})));
+}
+
+bool same_point(const OneRootPoint& a, const OneRootPoint& b) { return a.x == b.x && a.y == b.y; }
+
+OneRoot minus(const OneRoot& a, const Rational& c) { return OneRoot(a.a0 - c, a.a1, a.root); }
+
+/// |p - c|^2 == r^2 exactly.
+bool on_circle(const OneRootPoint& p, const PointQ2& c, const Rational& r) {
+  const OneRoot dx = minus(p.x, c.x), dy = minus(p.y, c.y);
+  const Measure d = Measure::product(dx, dx) + Measure::product(dy, dy) - Measure(r * r);
+  return d.is_zero();
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Geometry section
+
+void read_geometry(const JsonField& g, const Names& names, std::size_t cell_count, ComplexDocument& doc) {
+  g.check_keys({"vertices", "edges", "faces"}, "a geometry section");
+  // Vertices
+  const JsonField jv = g.at("vertices");
+  const std::size_t nv = jv.size();
+  doc.vertices.resize(nv);
+  for (std::size_t k = 0; k < nv; ++k) {
+    const JsonField v = jv.at(k);
+    v.check_keys({"id", "point", "degree"}, "a vertex");
+    check_id(v, k);
+    doc.vertices[k].point = read_one_root_point(v.at("point"));
+  }
+  // Edges
+  const JsonField je = g.at("edges");
+  const std::size_t ne = je.size();
+  doc.edges.resize(ne);
+  std::vector<int> degree(nv, 0);
+  for (std::size_t k = 0; k < ne; ++k) {
+    const JsonField e = je.at(k);
+    ArrEdge2& edge = doc.edges[k];
+    const std::string shape = e.at("shape").string();
+    if (shape == "segment") {
+      e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape"},
+                   "a segment edge");
+      edge.shape = EdgeShape2::Segment;
+    } else if (shape == "arc") {
+      e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape", "center",
+                    "radius", "ccw"},
+                   "an arc edge");
+      edge.shape = EdgeShape2::Arc;
+    } else {
+      e.at("shape").fail("expected \"segment\" or \"arc\", got " + describe_json(e.at("shape").json()));
+    }
+    check_id(e, k);
+    edge.source = read_index(e.at("source"), nv, "vertex");
+    edge.target = read_index(e.at("target"), nv, "vertex");
+    ++degree[edge.source];
+    ++degree[edge.target];
+    const JsonField hs = e.at("halfspaces");
+    for (std::size_t i = 0; i < hs.size(); ++i) edge.halfspaces.push_back(names(hs.at(i)));
+    std::sort(edge.halfspaces.begin(), edge.halfspaces.end());
+    if (std::adjacent_find(edge.halfspaces.begin(), edge.halfspaces.end()) != edge.halfspaces.end())
+      hs.fail("lists a halfspace twice");
+    edge.on_box = e.at("on_box").boolean();
+    for (const char* side : {"left_face", "right_face"}) {
+      const JsonField f = e.at(side);
+      const std::int64_t v = f.integer();
+      if (v < -1 || (v >= 0 && static_cast<std::uint64_t>(v) >= cell_count)) {
+        f.fail("face " + std::to_string(v) + " is out of range (-1 for outside the domain, or one of the " +
+               std::to_string(cell_count) + " faces)");
+      }
+      (side[0] == 'l' ? edge.left_face : edge.right_face) = static_cast<int>(v);
+    }
+    const OneRootPoint& p = doc.vertices[edge.source].point;
+    const OneRootPoint& q = doc.vertices[edge.target].point;
+    if (edge.shape == EdgeShape2::Segment) {
+      if (edge.source == edge.target || same_point(p, q)) e.fail("a segment whose source and target coincide");
+    } else {
+      edge.center = e.at("center").point2();
+      edge.radius = e.at("radius").rational();
+      if (sgn(edge.radius) <= 0) e.at("radius").fail("must be positive");
+      edge.ccw = e.at("ccw").boolean();
+      if (!on_circle(p, edge.center, edge.radius)) e.at("source").fail("the vertex does not lie on the arc's circle");
+      if (!on_circle(q, edge.center, edge.radius)) e.at("target").fail("the vertex does not lie on the arc's circle");
+    }
+    edge.length = edge_length(edge, p, q);
+  }
+  for (std::size_t k = 0; k < nv; ++k) {
+    doc.vertices[k].degree = degree[k];
+    if (auto d = jv.at(k).get("degree"); d && d->integer() != degree[k]) {
+      d->fail("is " + std::to_string(d->integer()) + " but " + std::to_string(degree[k]) + " edges end there");
+    }
+  }
+  // Faces
+  const JsonField jf = g.at("faces");
+  const std::size_t nf = jf.size();
+  if (nf != cell_count) {
+    jf.fail("has " + std::to_string(nf) + " faces but there are " + std::to_string(cell_count) +
+            " cells (faces and cells correspond one to one)");
+  }
+  doc.faces.resize(nf);
+  for (std::size_t k = 0; k < nf; ++k) {
+    const JsonField f = jf.at(k);
+    f.check_keys({"id", "boundary"}, "a face");
+    check_id(f, k);
+    const JsonField walks = f.at("boundary");
+    if (walks.size() == 0) walks.fail("a face needs at least one boundary walk");
+    auto& boundary = doc.faces[k].boundary;
+    for (std::size_t w = 0; w < walks.size(); ++w) {
+      const JsonField walk = walks.at(w);
+      if (walk.size() == 0) walk.fail("an empty boundary walk");
+      std::vector<std::pair<int, bool>> steps;
+      for (std::size_t s = 0; s < walk.size(); ++s) {
+        const JsonField step = walk.at(s);
+        if (step.size() != 2) step.fail("expected [edge, forward]");
+        const int e = read_index(step.at(std::size_t{0}), ne, "edge");
+        const bool forward = step.at(std::size_t{1}).boolean();
+        const ArrEdge2& edge = doc.edges[e];
+        if ((forward ? edge.left_face : edge.right_face) != static_cast<int>(k)) {
+          step.fail(std::string("edge ") + std::to_string(e) + " walked " + (forward ? "forward" : "backward") +
+                    " does not have face " + std::to_string(k) + " on its left");
+        }
+        steps.emplace_back(e, forward);
+      }
+      for (std::size_t s = 0; s < steps.size(); ++s) {
+        const auto& [e1, f1] = steps[s];
+        const auto& [e2, f2] = steps[(s + 1) % steps.size()];
+        const int end = f1 ? doc.edges[e1].target : doc.edges[e1].source;
+        const int start = f2 ? doc.edges[e2].source : doc.edges[e2].target;
+        if (end != start) walk.at(s).fail("the walk is not closed: this step ends where the next does not start");
+      }
+      boundary.push_back(std::move(steps));
+    }
+    doc.faces[k].area = enclosed_area(boundary, doc.edges, doc.vertices);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The document
+
+ComplexDocument read_document(const json& document) {
+  const JsonField root(document, "");
+  root.check_keys({"format", "dimension", "description", "halfspaces", "domain", "counts", "cells", "patches",
+                   "supports", "junctions", "samples", "geometry"},
+                  "an hsx-complex/1 document");
+  ComplexDocument doc;
+  Complex& c = doc.complex;
+  {
+    const JsonField f = root.at("format");
+    if (f.string() != kComplexFormat) {
+      f.fail("expected \"" + std::string(kComplexFormat) + "\", got " + describe_json(f.json()));
+    }
+  }
+  {
+    const JsonField f = root.at("dimension");
+    const std::int64_t d = f.integer();
+    if (d != 2 && d != 3) f.fail("expected 2 or 3, got " + std::to_string(d));
+    c.dimension = static_cast<int>(d);
+  }
+  if (auto f = root.get("description")) (void)f->string();
+  {
+    const JsonField f = root.at("halfspaces");
+    std::set<std::string> seen;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      const JsonField h = f.at(i);
+      std::string name = h.string();
+      if (name.empty()) h.fail("a halfspace name must not be empty");
+      if (!seen.insert(name).second) h.fail("duplicate halfspace name " + describe_json(json(name)));
+      c.halfspace_names.push_back(std::move(name));
+    }
+  }
+  const Names names(c.halfspace_names);
+  const std::size_t n_half = c.halfspace_names.size();
+  if (auto f = root.get("domain")) {
+    if (c.dimension != 2) f->fail("only a 2D domain box is supported");
+    f->check_keys({"min", "max"}, "a domain");
+    Box2 box{f->at("min").point2(), f->at("max").point2()};
+    if (!(box.min.x < box.max.x && box.min.y < box.max.y)) f->fail("min must be below max in both coordinates");
+    doc.domain = box;
+  }
+
+  const JsonField cells = root.at("cells");
+  const std::size_t n_cells = cells.size();
+  if (auto g = root.get("geometry")) {
+    if (c.dimension != 2) g->fail("a geometry section is only defined for dimension 2");
+    read_geometry(*g, names, n_cells, doc);
+    doc.has_geometry = true;
+  }
+
+  // Cells
+  c.cells.resize(n_cells);
+  for (std::size_t k = 0; k < n_cells; ++k) {
+    const JsonField f = cells.at(k);
+    f.check_keys({"id", "outer", "witness", "inside", "measure"}, "a cell");
+    check_id(f, k);
+    Cell& cell = c.cells[k];
+    cell.outer = f.at("outer").boolean();
+    if (auto w = f.get("witness")) {
+      if (w->size() != static_cast<std::size_t>(c.dimension)) {
+        w->fail("expected " + std::to_string(c.dimension) + " coordinates, got " + std::to_string(w->size()));
+      }
+      for (std::size_t i = 0; i < w->size(); ++i) cell.witness.push_back(w->at(i).rational());
+    }
+    cell.inside.assign(n_half, 0);
+    const JsonField in = f.at("inside");
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      const int h = names(in.at(i));
+      if (cell.inside[h]) in.at(i).fail("halfspace listed twice");
+      cell.inside[h] = 1;
+    }
+    if (doc.has_geometry) {
+      cell.measure = doc.faces[k].area;
+      if (auto m = f.get("measure")) check_measure(*m, cell.measure, "area");
+      ArrFace2& face = doc.faces[k];
+      face.outer = cell.outer;
+      face.inside = cell.inside;
+      if (cell.witness.size() == 2) face.interior = PointQ2{cell.witness[0], cell.witness[1]};
+    } else {
+      cell.measure = measure_from_fields(f.at("measure"));
+    }
+  }
+
+  // Patches: fields that stand alone
+  const JsonField patches = root.at("patches");
+  const std::size_t n_patches = patches.size();
+  c.patches.resize(n_patches);
+  for (std::size_t p = 0; p < n_patches; ++p) {
+    const JsonField f = patches.at(p);
+    f.check_keys({"id", "halfspace", "inside_cell", "outside_cell", "measure", "samples", "sample_ids", "support",
+                  "junctions", "pieces"},
+                 "a patch");
+    check_id(f, p);
+    Patch& patch = c.patches[p];
+    patch.halfspace = names(f.at("halfspace"));
+    patch.inside_cell = read_index(f.at("inside_cell"), n_cells, "cell");
+    patch.outside_cell = read_index(f.at("outside_cell"), n_cells, "cell");
+    const std::string hname = name_of(c.halfspace_names, patch.halfspace);
+    if (patch.inside_cell == patch.outside_cell) f.at("outside_cell").fail("is the same cell as inside_cell");
+    if (!c.cells[patch.inside_cell].inside[patch.halfspace]) {
+      f.at("inside_cell").fail("cell " + std::to_string(patch.inside_cell) + " is not inside halfspace " + hname);
+    }
+    if (c.cells[patch.outside_cell].inside[patch.halfspace]) {
+      f.at("outside_cell").fail("cell " + std::to_string(patch.outside_cell) + " is inside halfspace " + hname);
+    }
+    if (auto pieces = f.get("pieces")) {
+      const std::size_t n = pieces->size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const JsonField piece = pieces->at(k);
+        if (doc.has_geometry) {
+          patch.pieces.push_back(read_index(piece, doc.edges.size(), "edge"));
+        } else {
+          const std::int64_t v = piece.integer();
+          if (v < 0 || v > INT32_MAX) piece.fail("expected a non-negative piece index, got " + std::to_string(v));
+          patch.pieces.push_back(static_cast<int>(v));
+        }
+      }
+    }
+    if (doc.has_geometry) {
+      if (patch.pieces.empty()) f.fail("needs \"pieces\" (its edges) when the document has a geometry section");
+      Measure length;
+      for (std::size_t k = 0; k < patch.pieces.size(); ++k) {
+        const JsonField where = f.at("pieces").at(k);
+        const ArrEdge2& e = doc.edges[patch.pieces[k]];
+        if (e.on_box) where.fail("edge " + std::to_string(patch.pieces[k]) + " lies on the domain box");
+        if (!std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), patch.halfspace)) {
+          where.fail("edge " + std::to_string(patch.pieces[k]) + " is not on the boundary of halfspace " + hname);
+        }
+        if (std::minmax(e.left_face, e.right_face) != std::minmax(patch.inside_cell, patch.outside_cell)) {
+          where.fail("edge " + std::to_string(patch.pieces[k]) + " separates faces " + std::to_string(e.left_face) +
+                     " and " + std::to_string(e.right_face) + ", not the patch's cells");
+        }
+        if (k > 0) {
+          const ArrEdge2& prev = doc.edges[patch.pieces[k - 1]];
+          if (e.source != prev.source && e.source != prev.target && e.target != prev.source &&
+              e.target != prev.target) {
+            where.fail("edge " + std::to_string(patch.pieces[k]) + " does not share a vertex with the previous piece");
+          }
+        }
+        length += e.length;
+      }
+      patch.measure = length;
+      if (auto m = f.get("measure")) check_measure(*m, patch.measure, "length");
+    } else {
+      patch.measure = measure_from_fields(f.at("measure"));
+    }
+  }
+
+  // Supports
+  if (auto s = root.get("supports")) {
+    std::vector<int> group_of(n_patches, -1);
+    const std::size_t n_groups = s->size();
+    c.supports.resize(n_groups);
+    for (std::size_t g = 0; g < n_groups; ++g) {
+      const JsonField group = s->at(g);
+      c.supports[g] = read_index_set(group, n_patches, "patch");
+      if (c.supports[g].empty()) group.fail("an empty support group");
+      for (int p : c.supports[g]) {
+        if (group_of[p] >= 0) {
+          group.fail("patch " + std::to_string(p) + " is already in support group " + std::to_string(group_of[p]));
+        }
+        group_of[p] = static_cast<int>(g);
+      }
+    }
+    for (std::size_t p = 0; p < n_patches; ++p) {
+      if (group_of[p] < 0) s->fail("patch " + std::to_string(p) + " is in no support group");
+      c.patches[p].support = group_of[p];
+    }
+  } else {
+    for (std::size_t p = 0; p < n_patches; ++p) {
+      c.supports.push_back({static_cast<int>(p)});
+      c.patches[p].support = static_cast<int>(p);
+    }
+  }
+  for (std::size_t p = 0; p < n_patches; ++p) {
+    if (auto f = patches.at(p).get("support")) {
+      const std::int64_t v = f->integer();
+      if (v != c.patches[p].support) {
+        f->fail("is " + std::to_string(v) + " but the patch is in support group " +
+                std::to_string(c.patches[p].support) +
+                (root.has("supports") ? "" : " (without \"supports\", every patch is its own group)"));
+      }
+    }
+  }
+
+  // Samples
+  std::vector<std::vector<int>> samples_on(n_patches);
+  if (auto s = root.get("samples")) {
+    const std::size_t n = s->size();
+    c.samples.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      const JsonField f = s->at(k);
+      f.check_keys({"id", "halfspace", "patch"}, "a sample");
+      check_id(f, k);
+      SampleSite& site = c.samples[k];
+      site.halfspace = names(f.at("halfspace"));
+      site.patch = read_index(f.at("patch"), n_patches, "patch");
+      if (c.patches[site.patch].halfspace != site.halfspace) {
+        f.at("halfspace").fail("is " + name_of(c.halfspace_names, site.halfspace) + " but patch " +
+                               std::to_string(site.patch) + " lies on halfspace " +
+                               name_of(c.halfspace_names, c.patches[site.patch].halfspace));
+      }
+      samples_on[site.patch].push_back(static_cast<int>(k));
+    }
+  }
+  for (std::size_t p = 0; p < n_patches; ++p) {
+    const JsonField f = patches.at(p);
+    Patch& patch = c.patches[p];
+    patch.samples = samples_on[p];
+    if (auto ids = f.get("sample_ids")) {
+      const std::vector<int> given = read_index_set(*ids, c.samples.size(), "sample");
+      for (int s : given)
+        if (c.samples[s].patch != static_cast<int>(p)) {
+          ids->fail("lists sample " + std::to_string(s) + ", which sits on patch " + std::to_string(c.samples[s].patch));
+        }
+      for (int s : patch.samples)
+        if (!std::binary_search(given.begin(), given.end(), s)) {
+          ids->fail("does not list sample " + std::to_string(s) + ", which sits on this patch");
+        }
+    }
+    if (auto count = f.get("samples")) {
+      const std::int64_t v = count->integer();
+      if (v != static_cast<std::int64_t>(patch.samples.size())) {
+        count->fail("is " + std::to_string(v) + " but " + std::to_string(patch.samples.size()) +
+                    " samples sit on this patch");
+      }
+    }
+  }
+
+  // Junctions
+  std::vector<std::vector<int>> junctions_of(n_patches);
+  if (auto js = root.get("junctions")) {
+    const std::size_t n = js->size();
+    c.junctions.resize(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      const JsonField f = js->at(j);
+      f.check_keys({"id", "patches", "vertex"}, "a junction");
+      check_id(f, j);
+      Junction& junction = c.junctions[j];
+      junction.patches = read_index_set(f.at("patches"), n_patches, "patch");
+      for (int p : junction.patches) junctions_of[p].push_back(static_cast<int>(j));
+      if (auto v = f.get("vertex")) {
+        if (doc.has_geometry) {
+          junction.piece = read_index(*v, doc.vertices.size(), "vertex");
+        } else {
+          const std::int64_t x = v->integer();
+          if (x < 0 || x > INT32_MAX) v->fail("expected a non-negative vertex index, got " + std::to_string(x));
+          junction.piece = static_cast<int>(x);
+        }
+      }
+    }
+  }
+  for (std::size_t p = 0; p < n_patches; ++p) {
+    Patch& patch = c.patches[p];
+    auto list = patches.at(p).get("junctions");
+    if (!list) {
+      patch.junctions = junctions_of[p];
+      continue;
+    }
+    for (std::size_t k = 0; k < list->size(); ++k) {
+      const JsonField jf = list->at(k);
+      const int j = read_index(jf, c.junctions.size(), "junction");
+      if (!std::binary_search(c.junctions[j].patches.begin(), c.junctions[j].patches.end(), static_cast<int>(p))) {
+        jf.fail("junction " + std::to_string(j) + " does not list this patch");
+      }
+      patch.junctions.push_back(j);
+    }
+    for (int j : junctions_of[p])
+      if (std::find(patch.junctions.begin(), patch.junctions.end(), j) == patch.junctions.end()) {
+        list->fail("does not list junction " + std::to_string(j) + ", which lists this patch");
+      }
+  }
+
+  // Counts
+  if (auto counts = root.get("counts")) {
+    counts->check_keys({"vertices", "edges", "cells", "outer_cells", "patches", "junctions", "samples"}, "counts");
+    auto check = [&](const char* key, std::size_t actual, bool defined) {
+      auto f = counts->get(key);
+      if (!f || f->json().is_null()) return;
+      if (!defined) f->fail("given, but the document has no geometry section");
+      const std::int64_t v = f->integer();
+      if (v < 0 || static_cast<std::uint64_t>(v) != actual) {
+        f->fail("is " + std::to_string(v) + " but the document has " + std::to_string(actual));
+      }
+    };
+    check("vertices", doc.vertices.size(), doc.has_geometry);
+    check("edges", doc.edges.size(), doc.has_geometry);
+    check("cells", n_cells, true);
+    check("outer_cells", static_cast<std::size_t>(c.outer_cell_count()), true);
+    check("patches", n_patches, true);
+    check("junctions", c.junctions.size(), true);
+    check("samples", c.samples.size(), true);
+  }
+
+  const std::vector<std::string> problems = check_complex(c);
+  if (!problems.empty()) {
+    std::string message = "the complex is inconsistent: ";
+    const std::size_t shown = std::min<std::size_t>(problems.size(), 20);
+    for (std::size_t k = 0; k < shown; ++k) message += (k ? "; " : "") + problems[k];
+    if (problems.size() > shown) message += "; and " + std::to_string(problems.size() - shown) + " more";
+    throw InputError(message);
+  }
+  return doc;
+}
+
+json exact_pair(const Rational& x, const Rational& y) {
+  json a = json::array();
+  a.push_back(exact_string(x));
+  a.push_back(exact_string(y));
+  return a;
+}
+
+}  // namespace
+
+// -----------------------------------------------------------------------------------------------------------------
+// Public
+
+std::optional<Measure> parse_closed_form(std::string_view text, std::string* why) {
+  std::vector<Term> terms;
+  if (!parse_terms(text, terms, why)) return std::nullopt;
+  Measure m;
+  for (const Term& t : terms) {
+    if (!t.radicand) {
+      m += Measure(t.coefficient);
+    } else {
+      m += Measure::sqrt_of(*t.radicand) * t.coefficient;
+    }
+  }
+  return m;
+}
+
+std::optional<OneRoot> parse_one_root(std::string_view text, std::string* why) {
+  std::vector<Term> terms;
+  if (!parse_terms(text, terms, why)) return std::nullopt;
+  Rational a0 = 0, a1 = 0;
+  std::optional<Rational> root;
+  for (const Term& t : terms) {
+    if (!t.radicand) {
+      a0 += t.coefficient;
+      continue;
+    }
+    if (sgn(*t.radicand) == 0) continue;
+    if (root && *root != *t.radicand) {
+      fail_with(why, "two different radicands; a one-root number has one");
+      return std::nullopt;
+    }
+    root = *t.radicand;
+    a1 += t.coefficient;
+  }
+  return OneRoot(a0, root ? a1 : Rational(0), root ? *root : Rational(0));
+}
+
+json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+  auto name = [&](int h) { return c.halfspace_names.at(static_cast<std::size_t>(h)); };
+  json doc = json::object();
+  doc["format"] = kComplexFormat;
+  doc["dimension"] = c.dimension;
+  doc["halfspaces"] = c.halfspace_names;
+  if (domain != nullptr) {
+    doc["domain"] = json::object();
+    doc["domain"]["min"] = exact_pair(domain->min.x, domain->min.y);
+    doc["domain"]["max"] = exact_pair(domain->max.x, domain->max.y);
+  }
+  json counts = json::object();
+  if (geometry != nullptr) {
+    counts["vertices"] = geometry->vertices().size();
+    counts["edges"] = geometry->edges().size();
+  }
+  counts["cells"] = c.cells.size();
+  counts["outer_cells"] = c.outer_cell_count();
+  counts["patches"] = c.patches.size();
+  counts["junctions"] = c.junctions.size();
+  counts["samples"] = c.samples.size();
+  doc["counts"] = counts;
+
+  json cells = json::array();
+  for (std::size_t k = 0; k < c.cells.size(); ++k) {
+    const Cell& cell = c.cells[k];
+    json j = json::object();
+    j["id"] = k;
+    j["outer"] = cell.outer;
+    json w = json::array();
+    for (const Rational& x : cell.witness) w.push_back(exact_string(x));
+    j["witness"] = w;
+    json inside = json::array();
+    for (std::size_t i = 0; i < cell.inside.size(); ++i)
+      if (cell.inside[i]) inside.push_back(name(static_cast<int>(i)));
+    j["inside"] = inside;
+    j["measure"] = measure_json(cell.measure);
+    cells.push_back(std::move(j));
+  }
+  doc["cells"] = std::move(cells);
+
+  json patches = json::array();
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
+    const Patch& patch = c.patches[p];
+    json j = json::object();
+    j["id"] = p;
+    j["halfspace"] = name(patch.halfspace);
+    j["inside_cell"] = patch.inside_cell;
+    j["outside_cell"] = patch.outside_cell;
+    j["measure"] = measure_json(patch.measure);
+    j["samples"] = patch.samples.size();
+    j["sample_ids"] = patch.samples;
+    j["support"] = patch.support;
+    j["junctions"] = patch.junctions;
+    j["pieces"] = patch.pieces;
+    patches.push_back(std::move(j));
+  }
+  doc["patches"] = std::move(patches);
+  doc["supports"] = c.supports;
+
+  json junctions = json::array();
+  for (std::size_t k = 0; k < c.junctions.size(); ++k) {
+    json j = json::object();
+    j["id"] = k;
+    j["patches"] = c.junctions[k].patches;
+    if (c.junctions[k].piece >= 0) j["vertex"] = c.junctions[k].piece;
+    junctions.push_back(std::move(j));
+  }
+  doc["junctions"] = std::move(junctions);
+
+  json samples = json::array();
+  for (std::size_t k = 0; k < c.samples.size(); ++k) {
+    json j = json::object();
+    j["id"] = k;
+    j["halfspace"] = name(c.samples[k].halfspace);
+    j["patch"] = c.samples[k].patch;
+    samples.push_back(std::move(j));
+  }
+  doc["samples"] = std::move(samples);
+
+  if (geometry != nullptr) {
+    json g = json::object();
+    json vertices = json::array();
+    for (std::size_t k = 0; k < geometry->vertices().size(); ++k) {
+      const ArrVertex2& v = geometry->vertices()[k];
+      json j = json::object();
+      j["id"] = k;
+      json point = json::array();
+      point.push_back(v.point.x.exact_string());
+      point.push_back(v.point.y.exact_string());
+      j["point"] = std::move(point);
+      j["degree"] = v.degree;
+      vertices.push_back(std::move(j));
+    }
+    json edges = json::array();
+    for (std::size_t k = 0; k < geometry->edges().size(); ++k) {
+      const ArrEdge2& e = geometry->edges()[k];
+      json j = json::object();
+      j["id"] = k;
+      j["source"] = e.source;
+      j["target"] = e.target;
+      json hs = json::array();
+      for (int h : e.halfspaces) hs.push_back(name(h));
+      j["halfspaces"] = std::move(hs);
+      j["on_box"] = e.on_box;
+      j["left_face"] = e.left_face;
+      j["right_face"] = e.right_face;
+      if (e.shape == EdgeShape2::Segment) {
+        j["shape"] = "segment";
+      } else {
+        j["shape"] = "arc";
+        j["center"] = exact_pair(e.center.x, e.center.y);
+        j["radius"] = exact_string(e.radius);
+        j["ccw"] = e.ccw;
+      }
+      edges.push_back(std::move(j));
+    }
+    json faces = json::array();
+    for (std::size_t k = 0; k < geometry->faces().size(); ++k) {
+      json walks = json::array();
+      for (const auto& walk : geometry->faces()[k].boundary) {
+        json steps = json::array();
+        for (const auto& [e, forward] : walk) {
+          json step = json::array();
+          step.push_back(e);
+          step.push_back(forward);
+          steps.push_back(std::move(step));
+        }
+        walks.push_back(std::move(steps));
+      }
+      json j = json::object();
+      j["id"] = k;
+      j["boundary"] = std::move(walks);
+      faces.push_back(std::move(j));
+    }
+    g["vertices"] = std::move(vertices);
+    g["edges"] = std::move(edges);
+    g["faces"] = std::move(faces);
+    doc["geometry"] = std::move(g);
+  }
+  return doc;
+}
+
+ComplexDocument complex_document_from_json(const json& document) { return read_document(document); }
+
+Complex complex_from_json(const json& document) { return read_document(document).complex; }
+
+Complex read_complex_file(const std::string& path) {
+  const json document = read_exact_json_file(path);
+  try {
+    return complex_from_json(document);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
+}  // namespace hsx

@@ -1,0 +1,107 @@
+#include "io/result_json.hpp"
+
+#include "io/json_values.hpp"
+
+namespace hsx {
+
+std::vector<int> patches_of_supports(const Complex& complex, const std::vector<char>& supports) {
+  std::vector<int> out;
+  for (std::size_t g = 0; g < supports.size() && g < complex.supports.size(); ++g)
+    if (supports[g])
+      for (int p : complex.supports[g]) out.push_back(p);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+namespace {
+
+nlohmann::json boundary_json(const bsh::Problem& problem, const bsh::Labelling& labelling,
+                             const PlanarPieces& geometry) {
+  const Complex& c = problem.complex();
+  nlohmann::json out = nlohmann::json::array();
+  for (int g : bsh::boundary_supports(problem, labelling)) {
+    const bsh::SupportTerm& s = problem.supports()[g];
+    const Patch& patch = c.patches[s.patches.front()];
+    nlohmann::json item;
+    item["patch"] = s.patches.front();
+    item["halfspace"] = c.halfspace_names[patch.halfspace];
+    nlohmann::json coincident = nlohmann::json::array();
+    for (std::size_t k = 1; k < s.patches.size(); ++k)
+      coincident.push_back(c.halfspace_names[c.patches[s.patches[k]].halfspace]);
+    item["coincident"] = coincident;
+    item["measure"] = measure_to_json(s.measure);
+    if (geometry.known() && !patch.pieces.empty()) {
+      nlohmann::json pieces = nlohmann::json::array();
+      for (int e : patch.pieces) {
+        const ArrEdge2& edge = geometry.edges->at(e);
+        // Run each piece with the shape on its left.
+        const bool forward = edge.left_face >= 0 && labelling[edge.left_face];
+        const OneRootPoint& from = geometry.vertices->at(forward ? edge.source : edge.target).point;
+        const OneRootPoint& to = geometry.vertices->at(forward ? edge.target : edge.source).point;
+        nlohmann::json piece{{"from", point_to_json(from)}, {"to", point_to_json(to)}};
+        if (edge.shape == EdgeShape2::Segment) {
+          piece["shape"] = "segment";
+        } else {
+          piece["shape"] = "arc";
+          piece["center"] = point_to_json(edge.center);
+          piece["radius"] = exact_string(edge.radius);
+          piece["ccw"] = forward == edge.ccw;
+        }
+        pieces.push_back(std::move(piece));
+      }
+      item["pieces"] = std::move(pieces);
+    }
+    out.push_back(std::move(item));
+  }
+  return out;
+}
+
+nlohmann::json cells_json(const bsh::Labelling& labelling) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t k = 0; k < labelling.size(); ++k)
+    if (labelling[k]) out.push_back(k);
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractResult& r, const PlanarPieces& geometry,
+                              bool include_seconds) {
+  const Complex& c = problem.complex();
+  nlohmann::json j;
+  j["format"] = kResultFormat;
+  j["method"] = bsh::to_string(r.method);
+  j["optimal"] = r.optimal;
+  if (!r.stopped_by.empty()) j["stopped_by"] = r.stopped_by;
+  j["energy"] = {{"missing_samples", r.energy.missing_samples}, {"measure", measure_to_json(r.energy.measure)}};
+  j[c.dimension == 3 ? "volume" : "area"] = measure_to_json(bsh::inside_measure(c, r.labelling));
+  j["sample_connected"] = r.sample_connected;
+  j["ties"] = {{"count", r.ties.count},
+               {"checked", r.ties.checked},
+               {"certified", r.ties.certified},
+               {"capped", r.ties.capped}};
+  j["boundary"] = boundary_json(problem, r.labelling, geometry);
+  j["inside_cells"] = cells_json(r.labelling);
+  j["removed_patches"] = patches_of_supports(c, r.removed);
+  nlohmann::json steps = nlohmann::json::array();
+  for (const auto& removed : r.steps) {
+    std::vector<char> flags(c.supports.size(), 0);
+    for (int g : removed) flags[g] = 1;
+    steps.push_back(patches_of_supports(c, flags));
+  }
+  j["steps"] = steps;
+  nlohmann::json tied = nlohmann::json::array();
+  for (const auto& l : r.tied) tied.push_back(cells_json(l));
+  j["tied"] = tied;
+  nlohmann::json stats{{"graph_cuts", r.stats.graph_cuts},
+                       {"uncertified_cuts", r.stats.uncertified_cuts},
+                       {"states_expanded", r.stats.states_expanded},
+                       {"states_created", r.stats.states_created},
+                       {"max_queue", r.stats.max_queue},
+                       {"labellings_enumerated", r.stats.labellings_enumerated}};
+  if (include_seconds) stats["seconds"] = r.stats.seconds;
+  j["stats"] = stats;
+  return j;
+}
+
+}  // namespace hsx

@@ -1,0 +1,36 @@
+// SVG pictures of a 2D arrangement and its complex, in the style of the BSH paper's figures: soft grey cells,
+// patches coloured per halfspace, samples as dots with a tick along the outward normal of their halfspace, and a
+// legend.
+//
+// Conventions:
+// - Coordinates are converted with to_double (a picture, not a proof); y points up in the scene and down in SVG,
+//   so y is flipped. Which way an arc turns and whether it spans more than half its circle are decided exactly.
+// - Output is deterministic: fixed drawing order and numbers printed with 4 decimals.
+// - Element classes, for styling and tests: "cell", "domain", "highlight", "patch", "tick", "sample",
+//   "cell-id", "patch-id", "legend", "title". One "patch" path per patch and one "sample" circle per sample.
+#pragma once
+
+#include "complex/complex.hpp"
+#include "geometry/arrangement2.hpp"
+#include "geometry/scene.hpp"
+
+#include <string>
+#include <vector>
+
+namespace hsx {
+
+struct SvgOptions {
+  int width = 800;                       ///< total picture width in px (the height follows the domain's aspect)
+  std::vector<char> cell_fill;           ///< optional, per cell: 1 = filled (inside a shape); empty: grey shading
+  bool show_cell_ids = false;
+  bool show_patch_ids = false;
+  std::vector<char> highlight_patches;   ///< optional, per patch: 1 = highlighted (e.g. removed patches)
+  std::string title;
+};
+
+/// The picture. `complex` must have been built from `arrangement` (cells are its faces, Patch::pieces its edges),
+/// and `arrangement` from `scene`. Throws std::invalid_argument when they do not fit together.
+std::string arrangement_svg(const Scene2& scene, const Arrangement2& arrangement, const Complex& complex,
+                            const SvgOptions& options = {});
+
+}  // namespace hsx

@@ -1,0 +1,703 @@
+// Measures: exact algebraic sums of square roots plus keyed special terms (nested radicals, arc angles).
+// proofs/measures.md explains what is exact, what is only certified, and why.
+//
+// Representation of the algebraic part (the invariant that makes is_zero() exact):
+//   every radicand k is a positive integer with no factor p^2 for a prime p < 1000, k is not a perfect square
+//   unless k == 1, and no two radicands have a perfect-square product (equivalently: distinct square-free parts).
+// A radicand is "proven square-free" when its factorisation over the primes below 1000 left a cofactor u that is
+// 1, a prime (u < 1009^2, or a deterministic Miller-Rabin test for u < 2^64), or below 1009^3 and not a square
+// (then u = p*q with distinct primes p, q >= 1009). Two distinct proven-square-free radicands never have a square
+// product, so a new proven radicand only has to be checked against the (rare) unproven ones, kept in unsure_.
+#include "kernel/measure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace hsx {
+
+const char* to_string(Order o) {
+  switch (o) {
+    case Order::Less: return "Less";
+    case Order::Equal: return "Equal";
+    case Order::Greater: return "Greater";
+    case Order::Tie: return "Tie";
+  }
+  return "?";
+}
+
+namespace {
+
+constexpr unsigned long kTrialBound = 1000;     // trial-divide by the primes below this
+constexpr unsigned long kNextPrime = 1009;      // the first prime above kTrialBound
+constexpr unsigned long long kNextPrimeCube = 1009ULL * 1009ULL * 1009ULL;
+constexpr mpfr_prec_t kAlgebraicCeilingBits = mpfr_prec_t(1) << 20;
+constexpr mpfr_prec_t kDecimalCapBits = 8192;
+
+const std::vector<unsigned long>& small_primes() {
+  static const std::vector<unsigned long> primes = [] {
+    std::vector<unsigned long> out;
+    std::vector<bool> composite(kTrialBound, false);
+    for (unsigned long i = 2; i < kTrialBound; ++i) {
+      if (composite[i]) continue;
+      out.push_back(i);
+      for (unsigned long j = i * i; j < kTrialBound; j += i) composite[j] = true;
+    }
+    return out;
+  }();
+  return primes;
+}
+
+// ---- deterministic primality for 64-bit integers (Miller-Rabin with the first 12 prime bases, which is exact
+// for all n < 3.3e24; see proofs/measures.md) ----
+using u64 = unsigned long long;
+using u128 = unsigned __int128;
+
+u64 mul_mod(u64 a, u64 b, u64 m) { return static_cast<u64>(static_cast<u128>(a) * b % m); }
+u64 pow_mod(u64 b, u64 e, u64 m) {
+  u64 r = 1 % m;
+  b %= m;
+  while (e) {
+    if (e & 1) r = mul_mod(r, b, m);
+    b = mul_mod(b, b, m);
+    e >>= 1;
+  }
+  return r;
+}
+bool is_prime_u64(u64 n) {
+  if (n < 2) return false;
+  static const u64 bases[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37};
+  for (u64 p : bases) {
+    if (n % p == 0) return n == p;
+  }
+  u64 d = n - 1;
+  int s = 0;
+  while ((d & 1) == 0) {
+    d >>= 1;
+    ++s;
+  }
+  for (u64 a : bases) {
+    u64 x = pow_mod(a, d, n);
+    if (x == 1 || x == n - 1) continue;
+    bool witness = true;
+    for (int i = 1; i < s; ++i) {
+      x = mul_mod(x, x, n);
+      if (x == n - 1) {
+        witness = false;
+        break;
+      }
+    }
+    if (witness) return false;
+  }
+  return true;
+}
+
+bool fits_u64(const Integer& z) { return mpz_sizeinbase(z.get_mpz_t(), 2) <= 64 && sgn(z) >= 0; }
+u64 to_u64(const Integer& z) {
+  u64 v = 0;
+  mpz_export(&v, nullptr, -1, sizeof(v), 0, 0, z.get_mpz_t());
+  return v;
+}
+Integer from_u64(u64 v) {
+  Integer z;
+  mpz_import(z.get_mpz_t(), 1, -1, sizeof(v), 0, 0, &v);
+  return z;
+}
+
+bool is_square(const Integer& z) { return mpz_perfect_square_p(z.get_mpz_t()) != 0; }
+Integer isqrt(const Integer& z) {
+  Integer r;
+  mpz_sqrt(r.get_mpz_t(), z.get_mpz_t());
+  return r;
+}
+
+/// k = root^2 * rest, rest free of p^2 for primes p < 1000 and not a square unless 1.
+struct Reduced {
+  Integer root, rest;
+  bool squarefree = false;  ///< rest proven square-free
+};
+
+Reduced reduce_radicand(const Integer& k) {
+  Reduced out;
+  if (is_square(k)) {
+    out.root = isqrt(k);
+    out.rest = 1;
+    out.squarefree = true;
+    return out;
+  }
+  if (fits_u64(k)) {
+    u64 u = to_u64(k), s = 1, m = 1;
+    bool fully = false;  // u is 1 or prime
+    for (unsigned long p : small_primes()) {
+      if (static_cast<u64>(p) * p > u) {
+        fully = true;
+        break;
+      }
+      if (u % p) continue;
+      int e = 0;
+      do {
+        u /= p;
+        ++e;
+      } while (u % p == 0);
+      for (int i = 0; i < e / 2; ++i) m *= p;
+      if (e & 1) s *= p;
+    }
+    if (!fully) {
+      // u has no prime factor below kNextPrime.
+      const Integer U = from_u64(u);
+      if (is_square(U)) {
+        m *= to_u64(isqrt(U));
+        u = 1;
+        fully = true;
+      } else if (u < static_cast<u64>(kNextPrime) * kNextPrime || u < kNextPrimeCube || is_prime_u64(u)) {
+        fully = true;  // prime, or p*q with distinct primes, or prime
+      }
+    }
+    out.root = from_u64(m);
+    out.rest = from_u64(s) * from_u64(u);
+    out.squarefree = fully;
+    return out;
+  }
+  Integer u = k, s = 1, m = 1;
+  bool fully = false;
+  for (unsigned long p : small_primes()) {
+    if (mpz_cmp_ui(u.get_mpz_t(), p * p) < 0) {
+      fully = true;
+      break;
+    }
+    if (!mpz_divisible_ui_p(u.get_mpz_t(), p)) continue;
+    int e = 0;
+    do {
+      mpz_divexact_ui(u.get_mpz_t(), u.get_mpz_t(), p);
+      ++e;
+    } while (mpz_divisible_ui_p(u.get_mpz_t(), p));
+    for (int i = 0; i < e / 2; ++i) m *= p;
+    if (e & 1) s *= p;
+  }
+  if (!fully) {
+    if (is_square(u)) {
+      m *= isqrt(u);
+      u = 1;
+      fully = true;
+    } else if (fits_u64(u)) {
+      const u64 v = to_u64(u);
+      fully = v < kNextPrimeCube || is_prime_u64(v);
+    }
+  }
+  out.root = m;
+  out.rest = s * u;
+  out.squarefree = fully;
+  return out;
+}
+
+/// "c*body" pieces of a sum; `first` decides between "-x" and " - x".
+void append_term(std::string& out, const Rational& c, const std::string& body, bool first) {
+  const int s = sgn(c);
+  const Rational mag = abs(c);
+  if (first) {
+    if (s < 0) out += '-';
+  } else {
+    out += (s < 0) ? " - " : " + ";
+  }
+  if (body.empty()) {
+    out += exact_string(mag);
+  } else {
+    if (mag != 1) {
+      out += exact_string(mag);
+      out += '*';
+    }
+    out += body;
+  }
+}
+
+Rational to_rational(const mpfr_t x) {
+  Rational q;
+  mpfr_get_q(q.get_mpq_t(), x);
+  return q;
+}
+
+// ---- special terms ----
+
+/// sqrt(v) for an algebraic, positive measure v that is not a square in the representation (nested radical).
+class SqrtTerm final : public SpecialTerm {
+ public:
+  SqrtTerm(Measure radicand, std::string key) : radicand_(std::move(radicand)), key_(std::move(key)) {}
+  const std::string& key() const override { return key_; }
+  Interval enclose(mpfr_prec_t bits) const override { return Interval::sqrt(radicand_.enclose(bits)); }
+  std::optional<std::string> exact_string() const override { return "sqrt(" + *radicand_.exact_string() + ")"; }
+
+ private:
+  Measure radicand_;
+  std::string key_;
+};
+
+/// The constant pi (full circles are 2*pi, half circles pi): keyed "pi", so all of them cancel with each other.
+class PiTerm final : public SpecialTerm {
+ public:
+  const std::string& key() const override { return key_; }
+  Interval enclose(mpfr_prec_t bits) const override { return Interval::pi(bits); }
+  std::optional<std::string> exact_string() const override { return std::nullopt; }
+
+ private:
+  std::string key_ = "pi";
+};
+
+const std::shared_ptr<const SpecialTerm>& pi_term() {
+  static const std::shared_ptr<const SpecialTerm> t = std::make_shared<PiTerm>();
+  return t;
+}
+
+/// theta in (0, 2*pi), the ccw angle of an arc whose chord^2 and orientation (sign of the cross product) are exact.
+class ArcTerm final : public SpecialTerm {
+ public:
+  ArcTerm(Measure chord2, Rational radius, int cross_sign, std::string key)
+      : chord2_(std::move(chord2)), radius_(std::move(radius)), cross_sign_(cross_sign), key_(std::move(key)) {}
+  const std::string& key() const override { return key_; }
+  Interval enclose(mpfr_prec_t bits) const override {
+    // half = chord / (2r) in [0, 1] (asin clamps); minor arc: 2*asin(half); major arc: 2*pi - 2*asin(half).
+    const Interval half = Interval::sqrt(chord2_.enclose(bits)) / Interval(Rational(2 * radius_), bits);
+    const Interval two(Rational(2), bits);
+    const Interval minor = two * Interval::asin(half);
+    if (cross_sign_ > 0) return minor;
+    return two * Interval::pi(bits) - minor;
+  }
+  std::optional<std::string> exact_string() const override { return std::nullopt; }
+
+ private:
+  Measure chord2_;
+  Rational radius_;
+  int cross_sign_;
+  std::string key_;
+};
+
+/// Canonical exact text of a one-root coordinate (sqrt(8) and 2*sqrt(2) print the same).
+std::string canonical_text(const OneRoot& x) { return *Measure::product(x, Rational(1)).exact_string(); }
+
+std::string canonical_text(const OneRootPoint& p) {
+  return "[" + canonical_text(p.x) + ", " + canonical_text(p.y) + "]";
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------------------------
+
+Measure::Measure(const Rational& q) {
+  if (sgn(q) != 0) algebraic_.emplace(Integer(1), q);
+}
+
+Measure Measure::sqrt_of(const Rational& q) {
+  if (sgn(q) < 0) throw std::domain_error("Measure::sqrt_of: negative argument " + hsx::exact_string(q));
+  Measure m;
+  m.add_sqrt_rational(Rational(1), q);
+  return m;
+}
+
+void Measure::add_sqrt_rational(const Rational& coefficient, const Rational& q) {
+  if (sgn(coefficient) == 0 || sgn(q) == 0) return;
+  if (sgn(q) < 0) throw std::domain_error("Measure: square root of a negative number " + hsx::exact_string(q));
+  // sqrt(p/d) = sqrt(p*d)/d
+  const Integer& d = q.get_den();
+  if (d == 1) {
+    add_sqrt_term(coefficient, q.get_num());
+  } else {
+    add_sqrt_term(coefficient / Rational(d), q.get_num() * d);
+  }
+}
+
+void Measure::add_sqrt_term(const Rational& coefficient, const Integer& radicand) {
+  if (sgn(coefficient) == 0 || sgn(radicand) == 0) return;
+  if (sgn(radicand) < 0) throw std::domain_error("Measure: square root of a negative integer");
+  if (radicand == 1) {
+    insert_reduced(coefficient, radicand, true);
+    return;
+  }
+  const Reduced r = reduce_radicand(radicand);
+  insert_reduced(r.root == 1 ? coefficient : Rational(coefficient * r.root), r.rest, r.squarefree);
+}
+
+void Measure::insert_reduced(const Rational& coefficient, const Integer& radicand, bool squarefree) {
+  if (sgn(coefficient) == 0) return;
+  auto it = algebraic_.find(radicand);
+  if (it != algebraic_.end()) {
+    it->second += coefficient;
+    if (sgn(it->second) == 0) {
+      if (!unsure_.empty()) unsure_.erase(it->first);
+      algebraic_.erase(it);
+    }
+    return;
+  }
+  if (radicand != 1) {
+    // Find the radicand j (at most one, by the invariant) with radicand*j a perfect square.
+    const Integer* match = nullptr;
+    Integer product;
+    auto same_class = [&](const Integer& j) {
+      product = radicand * j;
+      return is_square(product);
+    };
+    if (squarefree) {
+      for (const Integer& j : unsure_)
+        if (same_class(j)) {
+          match = &j;
+          break;
+        }
+    } else {
+      for (const auto& [j, c] : algebraic_)
+        if (j != 1 && same_class(j)) {
+          match = &j;
+          break;
+        }
+    }
+    if (match) {
+      // radicand = g*a^2 and j = g*b^2 with g = gcd: c_j*sqrt(j) + c*sqrt(radicand) = (c_j*b + c*a)*sqrt(g).
+      const Integer j = *match;
+      Integer g;
+      mpz_gcd(g.get_mpz_t(), radicand.get_mpz_t(), j.get_mpz_t());
+      auto jt = algebraic_.find(j);
+      const Rational cj = jt->second;
+      const Integer a = isqrt(Integer(radicand / g));
+      const Integer b = isqrt(Integer(j / g));
+      const Rational total = cj * b + coefficient * a;
+      if (g == j) {
+        jt->second = total;
+        if (sgn(total) == 0) {
+          unsure_.erase(j);
+          algebraic_.erase(jt);
+        }
+        return;
+      }
+      unsure_.erase(j);
+      algebraic_.erase(jt);
+      add_sqrt_term(total, g);  // g is in the same class and smaller; no other radicand is in this class
+      return;
+    }
+  }
+  algebraic_.emplace(radicand, coefficient);
+  if (!squarefree) unsure_.insert(radicand);
+}
+
+void Measure::add_special(const std::shared_ptr<const SpecialTerm>& term, const Rational& coefficient) {
+  if (sgn(coefficient) == 0) return;
+  auto it = special_.find(term->key());
+  if (it == special_.end()) {
+    special_.emplace(term->key(), Special{term, coefficient});
+    return;
+  }
+  it->second.coefficient += coefficient;
+  if (sgn(it->second.coefficient) == 0) special_.erase(it);
+}
+
+void Measure::add_measure(const Measure& other, bool negate) {
+  if (&other == this) {
+    if (negate) {
+      algebraic_.clear();
+      special_.clear();
+      unsure_.clear();
+    } else {
+      *this *= Rational(2);
+    }
+    return;
+  }
+  for (const auto& [k, c] : other.algebraic_) {
+    const bool squarefree = other.unsure_.empty() || other.unsure_.count(k) == 0;
+    insert_reduced(negate ? Rational(-c) : c, k, squarefree);
+  }
+  for (const auto& [key, s] : other.special_) add_special(s.term, negate ? Rational(-s.coefficient) : s.coefficient);
+}
+
+Measure& Measure::operator+=(const Measure& other) {
+  add_measure(other, false);
+  return *this;
+}
+
+Measure& Measure::operator-=(const Measure& other) {
+  add_measure(other, true);
+  return *this;
+}
+
+Measure& Measure::operator*=(const Rational& factor) {
+  if (sgn(factor) == 0) {
+    algebraic_.clear();
+    special_.clear();
+    unsure_.clear();
+    return *this;
+  }
+  for (auto& [k, c] : algebraic_) c *= factor;
+  for (auto& [key, s] : special_) s.coefficient *= factor;
+  return *this;
+}
+
+Measure Measure::operator-() const {
+  Measure m = *this;
+  for (auto& [k, c] : m.algebraic_) c = -c;
+  for (auto& [key, s] : m.special_) s.coefficient = -s.coefficient;
+  return m;
+}
+
+Measure Measure::product(const OneRoot& a, const OneRoot& b) {
+  // (a0 + a1 sqrt(r))(b0 + b1 sqrt(s)) = a0 b0 + a0 b1 sqrt(s) + a1 b0 sqrt(r) + a1 b1 sqrt(r s)
+  Measure m;
+  const bool ra = !a.is_rational(), rb = !b.is_rational();
+  m.insert_reduced(a.a0 * b.a0, Integer(1), true);
+  if (rb) m.add_sqrt_rational(a.a0 * b.a1, b.root);
+  if (ra) m.add_sqrt_rational(a.a1 * b.a0, a.root);
+  if (ra && rb) m.add_sqrt_rational(a.a1 * b.a1, a.root == b.root ? Rational(a.root * a.root) : Rational(a.root * b.root));
+  return m;
+}
+
+Measure Measure::multiply_algebraic(const Measure& a, const Measure& b) {
+  Measure m;
+  for (const auto& [k1, c1] : a.algebraic_) {
+    for (const auto& [k2, c2] : b.algebraic_) {
+      // sqrt(k1 k2) = g*sqrt((k1/g)(k2/g)), g = gcd(k1, k2)
+      Integer g;
+      mpz_gcd(g.get_mpz_t(), k1.get_mpz_t(), k2.get_mpz_t());
+      if (g == 1) {
+        m.add_sqrt_term(c1 * c2, k1 * k2);
+      } else {
+        m.add_sqrt_term(c1 * c2 * g, Integer(k1 / g) * Integer(k2 / g));
+      }
+    }
+  }
+  return m;
+}
+
+Measure Measure::distance(const OneRootPoint& p, const OneRootPoint& q) {
+  const Measure dx = product(p.x, Rational(1)) - product(q.x, Rational(1));
+  const Measure dy = product(p.y, Rational(1)) - product(q.y, Rational(1));
+  // Axis-parallel: |dx| or |dy| exactly.
+  if (dy.is_zero()) return dx.algebraic_sign(64) < 0 ? -dx : dx;
+  if (dx.is_zero()) return dy.algebraic_sign(64) < 0 ? -dy : dy;
+  Measure d2 = multiply_algebraic(dx, dx);
+  d2 += multiply_algebraic(dy, dy);
+  if (auto r = d2.rational_value()) return sqrt_of(*r);
+
+  Measure out;
+  const bool one_radical =
+      d2.algebraic_.size() == 1 || (d2.algebraic_.size() == 2 && d2.algebraic_.begin()->first == 1);
+  if (one_radical) {
+    // d2 = A + B*sqrt(c). If A^2 - B^2 c = s^2 (s >= 0 rational), then
+    // sqrt(A + B sqrt(c)) = sqrt((A + s)/2) + sign(B)*sqrt((A - s)/2).
+    const auto last = std::prev(d2.algebraic_.end());
+    const Integer c = last->first;
+    const Rational B = last->second;
+    const Rational A = d2.algebraic_.size() == 2 ? d2.algebraic_.begin()->second : Rational(0);
+    const Rational disc = A * A - B * B * c;
+    if (sgn(disc) >= 0 && is_square(disc.get_num()) && is_square(disc.get_den())) {
+      const Rational s = make_rational(isqrt(disc.get_num()), isqrt(disc.get_den()));
+      // d2 > 0 and A^2 >= B^2 c imply A >= s >= 0 (proofs/measures.md), so both radicands are >= 0.
+      out.add_sqrt_rational(Rational(1), Rational((A + s) / 2));
+      out.add_sqrt_rational(Rational(sgn(B)), Rational((A - s) / 2));
+      return out;
+    }
+    const std::string key = "nsqrt(" + hsx::exact_string(A) + "," + hsx::exact_string(B) + "," + c.get_str(10) + ")";
+    out.add_special(std::make_shared<SqrtTerm>(std::move(d2), key), Rational(1));
+    return out;
+  }
+  const std::string key = "sqrt(" + *d2.exact_string() + ")";
+  out.add_special(std::make_shared<SqrtTerm>(std::move(d2), key), Rational(1));
+  return out;
+}
+
+Measure Measure::arc_angle(const PointQ2& center, const Rational& radius, const OneRootPoint& from,
+                           const OneRootPoint& to, const Rational& coefficient) {
+  if (sgn(radius) <= 0) throw std::domain_error("Measure::arc_angle: radius must be positive");
+  Measure out;
+  if (sgn(coefficient) == 0) return out;
+  if (compare(from.x, to.x) == 0 && compare(from.y, to.y) == 0) {
+    out.add_special(pi_term(), Rational(2 * coefficient));  // full circle: 2*pi
+    return out;
+  }
+  OneRoot fx = from.x, fy = from.y, tx = to.x, ty = to.y;
+  fx.a0 -= center.x;
+  fy.a0 -= center.y;
+  tx.a0 -= center.x;
+  ty.a0 -= center.y;
+  const Measure cross = product(fx, ty) - product(fy, tx);
+  const int cross_sign = cross.algebraic_sign(64);
+  if (cross_sign == 0) {
+    out.add_special(pi_term(), coefficient);  // diametrically opposite end points: half circle
+    return out;
+  }
+  const Measure dx = product(to.x, Rational(1)) - product(from.x, Rational(1));
+  const Measure dy = product(to.y, Rational(1)) - product(from.y, Rational(1));
+  Measure chord2 = multiply_algebraic(dx, dx);
+  chord2 += multiply_algebraic(dy, dy);
+  std::string key = "arc([" + hsx::exact_string(center.x) + ", " + hsx::exact_string(center.y) + "], " +
+                    hsx::exact_string(radius) + ", " + canonical_text(from) + ", " + canonical_text(to) + ")";
+  out.add_special(std::make_shared<ArcTerm>(std::move(chord2), radius, cross_sign, std::move(key)), coefficient);
+  return out;
+}
+
+bool Measure::is_zero() const { return algebraic_.empty() && special_.empty(); }
+
+bool Measure::is_algebraic() const {
+  for (const auto& [key, s] : special_)
+    if (!dynamic_cast<const SqrtTerm*>(s.term.get())) return false;
+  return true;
+}
+
+std::optional<Rational> Measure::rational_value() const {
+  if (!special_.empty()) return std::nullopt;
+  if (algebraic_.empty()) return Rational(0);
+  if (algebraic_.size() == 1 && algebraic_.begin()->first == 1) return algebraic_.begin()->second;
+  return std::nullopt;
+}
+
+Interval Measure::enclose(mpfr_prec_t bits) const {
+  // Accumulate the two end points in place (this is the hot path of compare): for c*sqrt(k) with c > 0 the
+  // lower end is down(down(sqrt(down(k))) * c) and the upper end the same rounded up; for c < 0 the roles of the
+  // sqrt bounds swap. Every step rounds outward, so [lo, hi] contains the exact sum.
+  const mpfr_prec_t p = std::max<mpfr_prec_t>(bits, MPFR_PREC_MIN);
+  mpfr_t lo, hi, s_lo, s_hi;
+  mpfr_inits2(p, lo, hi, s_lo, s_hi, static_cast<mpfr_ptr>(nullptr));
+  mpfr_set_zero(lo, 1);
+  mpfr_set_zero(hi, 1);
+  for (const auto& [k, c] : algebraic_) {
+    if (k == 1) {
+      mpfr_set_q(s_lo, c.get_mpq_t(), MPFR_RNDD);
+      mpfr_set_q(s_hi, c.get_mpq_t(), MPFR_RNDU);
+    } else {
+      mpfr_set_z(s_lo, k.get_mpz_t(), MPFR_RNDD);
+      mpfr_set_z(s_hi, k.get_mpz_t(), MPFR_RNDU);
+      mpfr_sqrt(s_lo, s_lo, MPFR_RNDD);
+      mpfr_sqrt(s_hi, s_hi, MPFR_RNDU);
+      if (sgn(c) < 0) mpfr_swap(s_lo, s_hi);  // multiplying by a negative number reverses the order
+      mpfr_mul_q(s_lo, s_lo, c.get_mpq_t(), MPFR_RNDD);
+      mpfr_mul_q(s_hi, s_hi, c.get_mpq_t(), MPFR_RNDU);
+    }
+    mpfr_add(lo, lo, s_lo, MPFR_RNDD);
+    mpfr_add(hi, hi, s_hi, MPFR_RNDU);
+  }
+  Interval sum = Interval::from_ends(lo, hi);
+  mpfr_clears(lo, hi, s_lo, s_hi, static_cast<mpfr_ptr>(nullptr));
+  for (const auto& [key, s] : special_) sum = sum + Interval(s.coefficient, p) * s.term->enclose(p);
+  return sum;
+}
+
+double Measure::to_double() const {
+  if (auto r = rational_value()) return r->get_d();
+  return enclose(80).mid_double();
+}
+
+std::optional<std::string> Measure::exact_string() const {
+  if (is_zero()) return std::string("0");
+  if (!is_algebraic()) return std::nullopt;
+  std::string out;
+  bool first = true;
+  for (const auto& [k, c] : algebraic_) {
+    append_term(out, c, k == 1 ? std::string() : "sqrt(" + k.get_str(10) + ")", first);
+    first = false;
+  }
+  for (const auto& [key, s] : special_) {
+    append_term(out, s.coefficient, *s.term->exact_string(), first);
+    first = false;
+  }
+  return out;
+}
+
+std::string Measure::decimal_string(int significant) const {
+  if (auto r = rational_value()) return hsx::decimal_string(*r, significant);
+  const int sig = std::max(significant, 1);
+  mpfr_prec_t bits = std::max<mpfr_prec_t>(64, static_cast<mpfr_prec_t>(sig) * 4 + 32);
+  while (true) {
+    const Interval e = enclose(bits);
+    const std::string lo = hsx::decimal_string(to_rational(e.lo()), sig);
+    if (lo == hsx::decimal_string(to_rational(e.hi()), sig)) return lo;  // rounding is monotone
+    if (bits >= kDecimalCapBits) return e.mid_decimal(sig);
+    bits = std::min(bits * 2, kDecimalCapBits);
+  }
+}
+
+bool Measure::double_enclosure(double& lo, double& hi) const {
+  // Floating-point filter (proofs/measures.md, "Double filter"). With u = 2^-53 and no overflow/underflow
+  // (guaranteed by the range checks): mpq_get_d/mpz_get_d truncate (relative error < 2u), sqrt and * round to
+  // nearest (u each), so each term t_i = fl(fl(c) * fl(sqrt(fl(k)))) has |t_i - c sqrt(k)| <= 6u|t_i|; recursive
+  // summation adds at most (n-1)u/(1-(n-1)u) * sum|t_i|. So |S - value| <= (n + 8) u * sum|t_i| for n < 2^30;
+  // the 1/64 slack absorbs the rounding of the bound's own computation. One ulp outward on each side covers the
+  // rounding of S -/+ B.
+  if (!special_.empty()) return false;
+  const std::size_t n = algebraic_.size();
+  if (n > (std::size_t(1) << 30)) return false;
+  double sum = 0, abs_sum = 0;
+  for (const auto& [k, c] : algebraic_) {
+    const mpz_srcptr num = c.get_num_mpz_t(), den = c.get_den_mpz_t();
+    const long e = static_cast<long>(mpz_sizeinbase(num, 2)) - static_cast<long>(mpz_sizeinbase(den, 2));
+    if (e > 400 || e < -400) return false;  // |c| within [2^-401, 2^401]
+    double t = mpq_get_d(c.get_mpq_t());
+    if (k != 1) {
+      if (mpz_sizeinbase(k.get_mpz_t(), 2) > 800) return false;  // sqrt(k) < 2^400
+      t *= std::sqrt(mpz_get_d(k.get_mpz_t()));
+    }
+    sum += t;
+    abs_sum += std::fabs(t);
+  }
+  const double u = std::ldexp(1.0, -53);
+  const double bound = abs_sum * u * 4;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  lo = std::nextafter(sum - bound, -inf);
+  hi = std::nextafter(sum + bound, inf);
+  return std::isfinite(lo) && std::isfinite(hi);
+}
+
+int Measure::algebraic_sign(mpfr_prec_t start_bits) const {
+  const std::size_t n = algebraic_.size();
+  if (n == 0) return 0;
+  auto it = algebraic_.begin();
+  if (n == 1) return sgn(it->second);
+  const bool has_rational = it->first == 1;
+  if (n == 2) {
+    const auto second = std::next(it);
+    if (has_rational) return OneRoot(it->second, second->second, Rational(second->first)).sign();
+    return compare(OneRoot(0, it->second, Rational(it->first)), OneRoot(0, -second->second, Rational(second->first)));
+  }
+  if (n == 3 && has_rational) {
+    const auto b = std::next(it), c = std::next(b);
+    return compare(OneRoot(it->second, b->second, Rational(b->first)), OneRoot(0, -c->second, Rational(c->first)));
+  }
+  double lo = 0, hi = 0;
+  if (double_enclosure(lo, hi)) {
+    if (lo > 0) return 1;
+    if (hi < 0) return -1;
+  }
+  // Non-zero (the radicands are in distinct square classes and some coefficient is non-zero), so refinement ends.
+  for (mpfr_prec_t bits = std::max<mpfr_prec_t>(start_bits, 32);; bits *= 2) {
+    if (bits > kAlgebraicCeilingBits)
+      throw std::runtime_error("Measure: sign of a non-zero algebraic sum not found at 2^20 bits");
+    const int s = enclose(bits).certain_sign();
+    if (s != 0) return s;
+  }
+}
+
+std::optional<int> Measure::sign(const CompareOptions& options) const {
+  if (is_zero()) return 0;
+  if (special_.empty()) return algebraic_sign(options.start_bits);
+  for (mpfr_prec_t bits = std::max<mpfr_prec_t>(options.start_bits, 32);;) {
+    const int s = enclose(bits).certain_sign();
+    if (s != 0) return s;
+    if (bits >= options.max_bits) return std::nullopt;
+    bits = std::min(bits * 2, options.max_bits);
+  }
+}
+
+Order compare(const Measure& a, const Measure& b, const CompareOptions& options) {
+  // Filter: disjoint certified enclosures decide without building a - b (most comparisons in a search).
+  double alo = 0, ahi = 0, blo = 0, bhi = 0;
+  if (a.double_enclosure(alo, ahi) && b.double_enclosure(blo, bhi)) {
+    if (ahi < blo) return Order::Less;
+    if (bhi < alo) return Order::Greater;
+  } else {
+    const mpfr_prec_t bits = std::max<mpfr_prec_t>(options.start_bits, 32);
+    const Interval ea = a.enclose(bits), eb = b.enclose(bits);
+    if (mpfr_less_p(ea.hi(), eb.lo())) return Order::Less;
+    if (mpfr_less_p(eb.hi(), ea.lo())) return Order::Greater;
+  }
+  const Measure d = a - b;
+  if (d.is_zero()) return Order::Equal;
+  const std::optional<int> s = d.sign(options);
+  if (!s) return Order::Tie;
+  return *s < 0 ? Order::Less : (*s > 0 ? Order::Greater : Order::Equal);
+}
+
+}  // namespace hsx

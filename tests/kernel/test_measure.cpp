@@ -1,0 +1,458 @@
+// Measures: exact algebraic sums of square roots, denesting, nested radicals and arc angles.
+#include "kernel/measure.hpp"
+
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+using hsx::compare;
+using hsx::Integer;
+using hsx::Interval;
+using hsx::Measure;
+using hsx::OneRoot;
+using hsx::OneRootPoint;
+using hsx::Order;
+using hsx::PointQ2;
+using hsx::Rational;
+
+namespace {
+
+Rational R(long n, long d = 1) { return hsx::make_rational(Integer(n), Integer(d)); }
+Measure S(long n, long d = 1) { return Measure::sqrt_of(R(n, d)); }
+OneRoot root(long a0, long a1, long r) { return OneRoot(R(a0), R(a1), R(r)); }
+
+Rational lo_q(const Interval& i) {
+  Rational r;
+  mpfr_get_q(r.get_mpq_t(), i.lo());
+  return r;
+}
+Rational hi_q(const Interval& i) {
+  Rational r;
+  mpfr_get_q(r.get_mpq_t(), i.hi());
+  return r;
+}
+bool nested(const Interval& inner, const Interval& outer) {
+  return lo_q(outer) <= lo_q(inner) && hi_q(inner) <= hi_q(outer);
+}
+bool contains_double(const Interval& i, double x) { return i.lo_double() <= x && x <= i.hi_double(); }
+
+/// pi * q as a measure (half circle of radius 1 has angle pi).
+Measure pi_times(const Rational& q) {
+  return Measure::arc_angle(PointQ2{0, 0}, Rational(1), PointQ2{1, 0}, PointQ2{1, 0}, Rational(q / 2));
+}
+
+/// Independent evaluation of sum c_i sqrt(k_i) with plain MPFR at `bits` (round to nearest).
+struct Terms {
+  std::vector<std::pair<int, unsigned>> terms;  // coefficient, radicand
+  Measure measure() const {
+    Measure m;
+    for (const auto& [c, k] : terms) m += Measure::sqrt_of(Rational(k)) * Rational(c);
+    return m;
+  }
+  /// value, and whether |value| > 2^-1000 (so a 2000-bit naive evaluation decides its sign)
+  int clear_sign() const {
+    mpfr_t sum, t;
+    mpfr_init2(sum, 2000);
+    mpfr_init2(t, 2000);
+    mpfr_set_zero(sum, 1);
+    for (const auto& [c, k] : terms) {
+      mpfr_sqrt_ui(t, k, MPFR_RNDN);
+      mpfr_mul_si(t, t, c, MPFR_RNDN);
+      mpfr_add(sum, sum, t, MPFR_RNDN);
+    }
+    int s = 0;
+    if (mpfr_sgn(sum) != 0 && mpfr_get_exp(sum) > -1000) s = mpfr_sgn(sum);
+    mpfr_clear(sum);
+    mpfr_clear(t);
+    return s;
+  }
+};
+
+rc::Gen<Terms> gen_terms() {
+  return rc::gen::map(rc::gen::container<std::vector<std::pair<int, unsigned>>>(rc::gen::pair(
+                          rc::gen::inRange(-20, 21), rc::gen::inRange<unsigned>(0, 60))),
+                      [](std::vector<std::pair<int, unsigned>> v) { return Terms{std::move(v)}; });
+}
+
+/// Sums of at most three terms over radicands 0..12 (squares among them): exercises the exact small-sum paths.
+rc::Gen<Terms> gen_few_terms() {
+  return rc::gen::map(
+      rc::gen::mapcat(rc::gen::inRange<std::size_t>(0, 4),
+                      [](std::size_t n) {
+                        return rc::gen::container<std::vector<std::pair<int, unsigned>>>(
+                            n, rc::gen::pair(rc::gen::inRange(-9, 10), rc::gen::inRange<unsigned>(0, 13)));
+                      }),
+      [](std::vector<std::pair<int, unsigned>> v) { return Terms{std::move(v)}; });
+}
+
+Order flip(Order o) {
+  if (o == Order::Less) return Order::Greater;
+  if (o == Order::Greater) return Order::Less;
+  return o;
+}
+
+}  // namespace
+
+// ---- exact algebraic sums ---------------------------------------------------------------------------------------
+
+TEST_CASE("sqrt_of pulls out squares and decides equality exactly", "[measure]") {
+  CHECK(compare(S(8), S(2) * Rational(2)) == Order::Equal);
+  CHECK(*S(8).exact_string() == "2*sqrt(2)");
+  CHECK(*S(1, 2).exact_string() == "1/2*sqrt(2)");
+  CHECK(*S(72, 49).exact_string() == "6/7*sqrt(2)");
+  CHECK(S(9).rational_value() == Rational(3));
+  CHECK(S(9, 4).rational_value() == R(3, 2));
+  CHECK(S(0).is_zero());
+  CHECK(*S(0).exact_string() == "0");
+  CHECK(S(0).decimal_string() == "0");
+  CHECK_THROWS_AS(S(-1), std::domain_error);
+  CHECK(S(2).is_algebraic());
+  CHECK_FALSE(S(2).has_special_terms());
+  CHECK_FALSE(S(2).rational_value());
+  // sqrt(12) + sqrt(27) = 5 sqrt(3)
+  CHECK(compare(S(12) + S(27), S(3) * Rational(5)) == Order::Equal);
+  CHECK(*(S(12) + S(27)).exact_string() == "5*sqrt(3)");
+  // 1000^2 * 7 needs the square of a prime above 1000: 1009^2 * 7
+  CHECK(*S(1009L * 1009L * 7).exact_string() == "1009*sqrt(7)");
+}
+
+TEST_CASE("exact zero of a sum: sqrt(18) - 3*sqrt(2)", "[measure]") {
+  const Measure z = S(18) - S(2) * Rational(3);
+  CHECK(z.is_zero());
+  CHECK(z.rational_value() == Rational(0));
+  CHECK(compare(S(18), S(2) * Rational(3)) == Order::Equal);
+  CHECK(z.sign() == 0);
+  // a zero that only appears after grouping across several radicands
+  const Measure w = S(50) + S(3) - S(8) - S(2) * Rational(3) - S(27) + S(12);
+  CHECK(w.is_zero());
+}
+
+TEST_CASE("sqrt(2) + sqrt(3) < sqrt(10)", "[measure]") {
+  CHECK(compare(S(2) + S(3), S(10)) == Order::Less);
+  CHECK(compare(S(10), S(2) + S(3)) == Order::Greater);
+  // three radicands plus a rational (the interval path): sqrt(2) + sqrt(3) + sqrt(5) - 1 vs 5 (5.382 - 1 = 4.382)
+  CHECK(compare(S(2) + S(3) + S(5) - Measure(Rational(1)), Measure(Rational(5))) == Order::Less);
+  CHECK((S(2) + S(3) - S(10)).sign() == -1);
+  CHECK(S(2).sign() == 1);
+  CHECK((-S(2)).sign() == -1);
+}
+
+TEST_CASE("radicands with large square factors are grouped exactly", "[measure]") {
+  // p, q are primes above the trial-division bound: p^2 q is not proven square-free when first seen.
+  const long p = 1000003, q = 1000033;
+  const Integer big = Integer(p) * p * q;
+  const Measure a = Measure::sqrt_of(Rational(big));
+  const Measure b = S(q) * Rational(p);
+  CHECK((a - b).is_zero());
+  CHECK((b - a).is_zero());
+  CHECK(compare(a + S(q), S(q) * Rational(p + 1)) == Order::Equal);
+  CHECK(compare(S(q) + a, S(q) * Rational(p + 1)) == Order::Equal);
+  // beyond 64 bits: (p q)^2 * 6 with a composite cofactor
+  const Integer huge = Integer(p) * p * q * q * 6;
+  CHECK((Measure::sqrt_of(Rational(huge)) - S(6) * Rational(Integer(p) * q)).is_zero());
+  CHECK((S(6) * Rational(Integer(p) * q) - Measure::sqrt_of(Rational(huge))).is_zero());
+  // two unproven radicands in the same class, neither square-free: p^2 * q * r and q * r * s^2
+  const long r = 1000037, s = 1000039;
+  const Integer k1 = Integer(p) * p * q * r, k2 = Integer(s) * s * q * r;
+  const Measure m = Measure::sqrt_of(Rational(k1)) * Rational(s) - Measure::sqrt_of(Rational(k2)) * Rational(p);
+  CHECK(m.is_zero());
+  const Measure n = Measure::sqrt_of(Rational(k1)) + Measure::sqrt_of(Rational(k2));
+  CHECK(compare(n, Measure::sqrt_of(Rational(Integer(q) * r)) * Rational(p + s)) == Order::Equal);
+  // products of radicands: sqrt(k1) * sqrt(k2) is rational
+  const Measure prod = Measure::product(OneRoot(R(0), R(1), Rational(k1)), OneRoot(R(0), R(1), Rational(k2)));
+  REQUIRE(prod.rational_value());
+  CHECK(*prod.rational_value() == Rational(Integer(p) * s * q * r));
+}
+
+TEST_CASE("1000-term sums", "[measure]") {
+  Measure forward, backward;
+  for (long i = 1; i <= 1000; ++i) forward += S(i) * R(i % 7 - 3, 1 + i % 5);
+  for (long i = 1000; i >= 1; --i) backward += S(i) * R(i % 7 - 3, 1 + i % 5);
+  CHECK(compare(forward, backward) == Order::Equal);
+  CHECK(*forward.exact_string() == *backward.exact_string());
+  Measure plain;
+  for (long i = 1; i <= 1000; ++i) plain += S(i);
+  // sum_{i<=1000} sqrt(i) = 21097.4558874807...
+  CHECK(plain.decimal_string(15) == "21097.4558874807");
+  const Rational below = *hsx::parse_rational("21097.4558874807");
+  CHECK(compare(plain, Measure(below)) == Order::Greater);
+  const Measure tiny = (S(1000001) - Measure(Rational(1000))) * R(1, 1000000000);
+  CHECK(compare(plain, plain + tiny) == Order::Less);
+  // removing every term again leaves an exact zero
+  Measure rest = plain;
+  for (long i = 1000; i >= 1; --i) rest -= S(i);
+  CHECK(rest.is_zero());
+}
+
+TEST_CASE("compare is right for rationals just above and below a long sum", "[measure]") {
+  // Rounding errors of a fast double evaluation of a long sum with cancellation are far above one ulp; rationals
+  // placed within that error on either side must still be ordered correctly (the filter's bound must hold).
+  for (int variant = 0; variant < 3; ++variant) {
+    Measure a;
+    for (long i = 1; i <= 2000; ++i) a += S(i * (variant + 1) + variant) * R((i % 2 ? 1 : -1) * (100 + i % 37), 7);
+    const Interval e = a.enclose(400);
+    const Rational v = (lo_q(e) + hi_q(e)) / 2;  // within 2^-380 of the value
+    for (int j = 20; j <= 90; ++j) {
+      const Rational delta = Rational(Integer(1) << 16) / Rational(Integer(1) << static_cast<unsigned>(j));
+      INFO("variant " << variant << ", delta 2^" << (16 - j));
+      CHECK(compare(a, Measure(Rational(v + delta))) == Order::Less);
+      CHECK(compare(a, Measure(Rational(v - delta))) == Order::Greater);
+      CHECK(compare(Measure(Rational(v + delta)), a) == Order::Greater);
+      CHECK((a - Measure(Rational(v - delta))).sign() == 1);
+    }
+  }
+}
+
+TEST_CASE("compare(a, a + x) for tiny positive algebraic x is Less", "[measure][property]") {
+  rc::prop("a < a + x", [](const std::vector<std::pair<int, unsigned>>& raw, unsigned n_raw, unsigned e_raw) {
+    Terms t{raw};
+    for (auto& [c, k] : t.terms) {
+      c %= 100;
+      k %= 500;
+    }
+    const Measure a = t.measure();
+    // x = (sqrt(n^2 + 1) - n) / 2^e, positive, about 2^-(e+1) / n
+    const long n = 1 + n_raw % 100000;
+    const unsigned e = e_raw % 300;
+    const Measure x = (S(n * n + 1) - Measure(Rational(n))) * Rational(Rational(1) / Rational(Integer(1) << e));
+    RC_ASSERT(x.sign() == 1);
+    RC_ASSERT(compare(a, a + x) == Order::Less);
+    RC_ASSERT(compare(a + x, a) == Order::Greater);
+    RC_ASSERT(compare(a - x, a) == Order::Less);
+  });
+}
+
+TEST_CASE("compare agrees with an independent MPFR evaluation", "[measure][property]") {
+  rc::prop("sign(a - b) vs 2000-bit evaluation", [] {
+    const Terms a = *gen_terms();
+    const Terms b = *gen_terms();
+    Terms diff = a;
+    for (const auto& [c, k] : b.terms) diff.terms.emplace_back(-c, k);
+    const Order o = compare(a.measure(), b.measure());
+    RC_ASSERT(o != Order::Tie);  // no special terms: always decided
+    const int s = diff.clear_sign();
+    if (s < 0) RC_ASSERT(o == Order::Less);
+    if (s > 0) RC_ASSERT(o == Order::Greater);
+    if (o == Order::Equal) RC_ASSERT(s == 0);
+    // antisymmetry
+    RC_ASSERT(compare(b.measure(), a.measure()) == flip(o));
+  });
+}
+
+TEST_CASE("compare of short sums agrees with an independent MPFR evaluation", "[measure][property]") {
+  rc::prop("sign(a - b) for a, b with at most three terms", [] {
+    const Terms a = *gen_few_terms();
+    const Terms b = *gen_few_terms();
+    Terms diff = a;
+    for (const auto& [c, k] : b.terms) diff.terms.emplace_back(-c, k);
+    const Order o = compare(a.measure(), b.measure());
+    const int s = diff.clear_sign();
+    RC_ASSERT(o == (s < 0 ? Order::Less : (s > 0 ? Order::Greater : Order::Equal)));
+    RC_ASSERT(compare(b.measure(), a.measure()) == flip(o));
+    RC_ASSERT(diff.measure().sign() == s);
+  });
+}
+
+TEST_CASE("summation order does not matter", "[measure][property]") {
+  rc::prop("permuted sums are Equal and print the same", [] {
+    const Terms a = *gen_terms();
+    // a random permutation: sort positions by random keys
+    const auto keys = *rc::gen::container<std::vector<int>>(a.terms.size(), rc::gen::arbitrary<int>());
+    std::vector<std::size_t> order(a.terms.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return keys[x] < keys[y]; });
+    Terms b;
+    for (std::size_t i : order) b.terms.push_back(a.terms[i]);
+    const Measure ma = a.measure(), mb = b.measure();
+    RC_ASSERT(compare(ma, mb) == Order::Equal);
+    RC_ASSERT((ma - mb).is_zero());
+    RC_ASSERT(*ma.exact_string() == *mb.exact_string());
+  });
+}
+
+TEST_CASE("Measure arithmetic operators", "[measure]") {
+  Measure a = S(2) + Measure(Rational(1));
+  a += a;
+  CHECK(*a.exact_string() == "2 + 2*sqrt(2)");
+  a -= a;
+  CHECK(a.is_zero());
+  Measure b = S(3) - Measure(R(1, 2));
+  CHECK(*b.exact_string() == "-1/2 + sqrt(3)");
+  CHECK(*(-b).exact_string() == "1/2 - sqrt(3)");
+  CHECK(*(b * R(-2, 3)).exact_string() == "1/3 - 2/3*sqrt(3)");
+  CHECK((b * Rational(0)).is_zero());
+  CHECK(std::abs(b.to_double() - (std::sqrt(3.0) - 0.5)) < 1e-15);
+  CHECK(Measure(Rational(5)).to_double() == 5.0);
+}
+
+TEST_CASE("product expands (a0 + a1 sqrt r)(b0 + b1 sqrt s)", "[measure]") {
+  CHECK(*Measure::product(root(1, 1, 2), root(1, 1, 3)).exact_string() == "1 + sqrt(2) + sqrt(3) + sqrt(6)");
+  CHECK(*Measure::product(root(1, 1, 2), root(1, -1, 2)).exact_string() == "-1");
+  CHECK(*Measure::product(root(0, 1, 6), root(0, 1, 10)).exact_string() == "2*sqrt(15)");
+  CHECK(*Measure::product(OneRoot(R(0), R(1), R(1, 2)), root(0, 1, 3)).exact_string() == "1/2*sqrt(6)");
+  CHECK(*Measure::product(root(3, 0, 0), root(2, 0, 0)).exact_string() == "6");
+  rc::prop("enclose(product(a, b)) lies inside enclose(a) * enclose(b)",
+           [](int a0, int a1, unsigned r, int b0, int b1, unsigned s) {
+             const OneRoot a(hsx::make_rational(a0 % 100, 7), hsx::make_rational(a1 % 30, 11), Rational(r % 200));
+             const OneRoot b(hsx::make_rational(b0 % 100, 3), hsx::make_rational(b1 % 30, 5), Rational(s % 200));
+             const Measure p = Measure::product(a, b);
+             const Interval loose = a.enclose(60) * b.enclose(60);
+             RC_ASSERT(nested(p.enclose(400), loose));
+             RC_ASSERT(compare(p, Measure::product(b, a)) == Order::Equal);
+             // the product is zero exactly when a factor is
+             RC_ASSERT(p.is_zero() == (a.sign() == 0 || b.sign() == 0));
+             RC_ASSERT(p.sign() == a.sign() * b.sign());
+           });
+}
+
+// ---- distances --------------------------------------------------------------------------------------------------
+
+TEST_CASE("distance between rational points is exact", "[measure][distance]") {
+  const Measure d = Measure::distance(PointQ2{0, 0}, PointQ2{3, 4});
+  CHECK(d.rational_value() == Rational(5));
+  CHECK(*Measure::distance(PointQ2{1, 1}, PointQ2{2, 3}).exact_string() == "sqrt(5)");
+  CHECK(*Measure::distance(PointQ2{0, 0}, PointQ2{R(1, 2), R(1, 2)}).exact_string() == "1/2*sqrt(2)");
+  CHECK(Measure::distance(PointQ2{7, 7}, PointQ2{7, 7}).is_zero());
+  CHECK(compare(Measure::distance(PointQ2{0, 0}, PointQ2{1, 1}), S(2)) == Order::Equal);
+}
+
+TEST_CASE("distance to points with a shared root denests when it can", "[measure][distance]") {
+  // |(2 + sqrt2, 4 + 4 sqrt2)|^2 = 54 + 36 sqrt2; 54^2 - 36^2*2 = 18^2, so the distance is sqrt(36) + sqrt(18).
+  const OneRootPoint p(root(2, 1, 2), root(4, 4, 2));
+  const Measure d = Measure::distance(PointQ2{0, 0}, p);
+  CHECK_FALSE(d.has_special_terms());
+  CHECK(*d.exact_string() == "6 + 3*sqrt(2)");
+  CHECK(compare(d, Measure::distance(p, PointQ2{0, 0})) == Order::Equal);
+  // sqrt(5 - 2 sqrt 6) = sqrt(3) - sqrt(2): the point (sqrt2, 0) to (sqrt3, 0)... axis-parallel, exact too
+  const Measure axis = Measure::distance(OneRootPoint(root(0, 1, 2), R(1)), OneRootPoint(root(0, 1, 3), R(1)));
+  CHECK(*axis.exact_string() == "-sqrt(2) + sqrt(3)");
+  // negative B: |(2 - sqrt2, 4 - 4 sqrt2)| = 6 - 3 sqrt2
+  const Measure e = Measure::distance(PointQ2{0, 0}, OneRootPoint(root(2, -1, 2), root(4, -4, 2)));
+  CHECK(*e.exact_string() == "6 - 3*sqrt(2)");
+}
+
+TEST_CASE("distance that does not denest is a nested radical", "[measure][distance]") {
+  const OneRootPoint p(R(1), root(1, 1, 2));
+  const Measure d = Measure::distance(PointQ2{0, 0}, p);  // sqrt(4 + 2 sqrt 2) = 2.6131259297527530557...
+  REQUIRE(d.has_special_terms());
+  CHECK(d.is_algebraic());
+  CHECK(*d.exact_string() == "sqrt(4 + 2*sqrt(2))");
+  CHECK(d.decimal_string(20) == "2.6131259297527530557");
+  CHECK(contains_double(d.enclose(128), 2.613125929752753));
+  // the same segment both ways cancels by key
+  CHECK(compare(d, Measure::distance(p, PointQ2{0, 0})) == Order::Equal);
+  CHECK(compare(d + S(2), Measure::distance(p, PointQ2{0, 0}) + S(3)) == Order::Less);
+  // certified comparisons with other values
+  CHECK(compare(d, Measure(R(261, 100))) == Order::Greater);
+  CHECK(compare(d, S(7)) == Order::Less);  // 2.613 < 2.6458
+  // a printed sum with a special term
+  CHECK(*(Measure(R(1, 2)) + S(18) + d).exact_string() == "1/2 + 3*sqrt(2) + sqrt(4 + 2*sqrt(2))");
+  // a different nested radical of (possibly) equal value is not cancelled: Tie, never Equal
+  const Measure d_scaled = Measure::distance(PointQ2{0, 0}, OneRootPoint(R(2), root(2, 2, 2))) * R(1, 2);
+  CHECK(compare(d, d_scaled) == Order::Tie);
+}
+
+TEST_CASE("distance between points with different roots", "[measure][distance]") {
+  // (1 + sqrt2, 1) to (sqrt3, 0): d^2 = 7 + 2 sqrt2 - 2 sqrt3 - 2 sqrt6
+  const Measure d = Measure::distance(OneRootPoint(root(1, 1, 2), R(1)), OneRootPoint(root(0, 1, 3), R(0)));
+  REQUIRE(d.has_special_terms());
+  CHECK(*d.exact_string() == "sqrt(7 + 2*sqrt(2) - 2*sqrt(3) - 2*sqrt(6))");
+  const double expect = std::sqrt(std::pow(1 + std::sqrt(2.0) - std::sqrt(3.0), 2) + 1);
+  CHECK(std::abs(d.to_double() - expect) < 1e-14);
+  CHECK(compare(d, Measure::distance(OneRootPoint(root(0, 1, 3), R(0)), OneRootPoint(root(1, 1, 2), R(1)))) ==
+        Order::Equal);
+}
+
+// ---- arcs -------------------------------------------------------------------------------------------------------
+
+TEST_CASE("arc_angle: quarter circle of radius 2 has length pi", "[measure][arc]") {
+  const Measure quarter = Measure::arc_angle(PointQ2{0, 0}, R(2), PointQ2{2, 0}, PointQ2{0, 2}, R(2));
+  REQUIRE(quarter.has_special_terms());
+  CHECK_FALSE(quarter.is_algebraic());
+  CHECK_FALSE(quarter.exact_string());
+  CHECK(nested(Interval::pi(600), quarter.enclose(128)));
+  CHECK(quarter.decimal_string(30) == "3.14159265358979323846264338328");
+  // a different spelling of pi: Tie (not cancelled by key, not separated)
+  CHECK(compare(quarter, pi_times(R(1))) == Order::Tie);
+  CHECK_FALSE((quarter - pi_times(R(1))).sign().has_value());
+  // but clearly different values are decided
+  CHECK(compare(quarter, Measure(R(314, 100))) == Order::Greater);
+  CHECK(compare(quarter, Measure(R(315, 100))) == Order::Less);
+  CHECK(quarter.sign() == 1);
+}
+
+TEST_CASE("arc_angle: halves and full circles", "[measure][arc]") {
+  const PointQ2 c{1, 1};
+  const Rational r = 2;
+  const PointQ2 east{3, 1}, west{-1, 1}, north{1, 3};
+  const Measure full = Measure::arc_angle(c, r, east, east, r);  // 2*pi*r
+  CHECK(nested(pi_times(R(4)).enclose(600), full.enclose(128)));
+  const Measure upper = Measure::arc_angle(c, r, east, west, r);
+  const Measure lower = Measure::arc_angle(c, r, west, east, r);
+  CHECK(compare(upper + lower, full) == Order::Equal);  // half circles are exact multiples of pi
+  CHECK(compare(upper, lower) == Order::Equal);
+  CHECK(compare(full, pi_times(R(4))) == Order::Equal);
+  // a quarter and three quarters: the sum encloses 2*pi*r, but is only certified, never exact
+  const Measure q1 = Measure::arc_angle(c, r, east, north, r);
+  const Measure q3 = Measure::arc_angle(c, r, north, east, r);
+  CHECK(nested(pi_times(R(4)).enclose(600), (q1 + q3).enclose(128)));
+  CHECK(compare(q1 + q3, full) == Order::Tie);
+  CHECK(compare(q1, q3) == Order::Less);
+  CHECK(compare(q3, upper) == Order::Greater);
+  CHECK(compare(q1 * Rational(3), q3) == Order::Tie);
+  // area swept: coefficient r^2/2 on the full circle is pi r^2
+  const Measure disc = Measure::arc_angle(c, r, east, east, Rational(r * r / 2));
+  CHECK(compare(disc, pi_times(R(4))) == Order::Equal);
+}
+
+TEST_CASE("arc_angle: the same arc on both sides cancels, different equal arcs Tie", "[measure][arc]") {
+  const Measure a = Measure::arc_angle(PointQ2{0, 0}, R(1), PointQ2{1, 0}, PointQ2{0, 1}, R(1));
+  const Measure a_again = Measure::arc_angle(PointQ2{0, 0}, R(1), PointQ2{1, 0}, PointQ2{0, 1}, R(1));
+  CHECK(compare(a, a_again) == Order::Equal);
+  CHECK(compare(a + S(2), a_again + S(3)) == Order::Less);  // decided exactly: the arcs cancel
+  CHECK((a - a_again).is_zero());
+  CHECK(compare(a + S(2), a_again + S(2)) == Order::Equal);
+  // same length, different circle: Tie, documented behaviour (not Equal, not decided)
+  const Measure b = Measure::arc_angle(PointQ2{5, 5}, R(1), PointQ2{6, 5}, PointQ2{5, 6}, R(1));
+  CHECK(compare(a, b) == Order::Tie);
+  CHECK(compare(b, a) == Order::Tie);
+  hsx::CompareOptions more;
+  more.max_bits = 4096;
+  CHECK(compare(a, b, more) == Order::Tie);
+  CHECK_FALSE((a - b).sign(more).has_value());
+  // an arc with one-root end points: (2, 0) to (1, sqrt 3) on the radius-2 circle is pi/3
+  const OneRootPoint p60(R(1), root(0, 1, 3));
+  const Measure sixth = Measure::arc_angle(PointQ2{0, 0}, R(2), PointQ2{2, 0}, p60, R(1));
+  CHECK(nested(pi_times(R(1, 3)).enclose(600), sixth.enclose(128)));
+  const Measure five_sixths = Measure::arc_angle(PointQ2{0, 0}, R(2), p60, PointQ2{2, 0}, R(1));
+  CHECK(nested(pi_times(R(5, 3)).enclose(600), five_sixths.enclose(128)));
+  // a one-root end point spelled differently (sqrt(12)/2 vs sqrt(3)) gives the same key
+  const OneRootPoint p60b(R(1), OneRoot(R(0), R(1, 2), R(12)));
+  CHECK(compare(sixth, Measure::arc_angle(PointQ2{0, 0}, R(2), PointQ2{2, 0}, p60b, R(1))) == Order::Equal);
+  // diametrically opposite one-root points: half circle, exactly pi
+  const OneRootPoint m60(R(-1), root(0, -1, 3));
+  CHECK(compare(Measure::arc_angle(PointQ2{0, 0}, R(2), p60, m60, R(1)), pi_times(R(1))) == Order::Equal);
+  CHECK_THROWS_AS(Measure::arc_angle(PointQ2{0, 0}, R(0), PointQ2{0, 0}, PointQ2{0, 0}, R(1)), std::domain_error);
+  CHECK(Measure::arc_angle(PointQ2{0, 0}, R(1), PointQ2{1, 0}, PointQ2{0, 1}, R(0)).is_zero());
+}
+
+// ---- printing -----------------------------------------------------------------------------------------------------
+
+TEST_CASE("Measure decimal_string", "[measure][decimal]") {
+  CHECK(S(2).decimal_string(30) == "1.41421356237309504880168872421");
+  CHECK(S(2).decimal_string(6) == "1.41421");
+  CHECK((-S(2)).decimal_string(6) == "-1.41421");
+  CHECK(Measure(R(1, 4)).decimal_string() == "0.25");
+  CHECK(S(1, 100000000).decimal_string(5) == "0.0001");
+  CHECK((S(2) * R(1, 100000000)).decimal_string(5) == "1.4142e-8");
+  CHECK(pi_times(R(1)).decimal_string(50) == "3.1415926535897932384626433832795028841971693993751");
+  // 100 digits of sqrt(2)
+  CHECK(S(2).decimal_string(100) ==
+        "1.414213562373095048801688724209698078569671875376948073176679737990732478462107038850387534327641573");
+  CHECK(std::string(hsx::to_string(Order::Tie)) == "Tie");
+  CHECK(std::string(hsx::to_string(Order::Less)) == "Less");
+}

@@ -10,10 +10,13 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   hsx::cli::add_arrange_command(app);
   hsx::cli::add_extract_command(app);
+  hsx::cli::add_check_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return app.exit(e);
+  } catch (const CLI::RuntimeError& e) {  // a command's own non-zero status (e.g. a failed check)
+    return e.get_exit_code();
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return 2;

@@ -27,6 +27,28 @@ constexpr std::size_t kMaxClosedFormChars = 200000;
 constexpr std::size_t kMaxClosedFormTerms = 4096;
 constexpr std::size_t kMaxRadicandChars = 1000;
 
+/// Work allowed for one document. The kernel merges square-root terms with a cost up to quadratic in their number,
+/// so each sum built from n pieces (a patch of n edges, a face walk of n steps, a closed form of n terms) costs n^2.
+/// Hsx's own largest legitimate documents (5000-vertex polygons) use a fraction of this.
+constexpr std::uint64_t kWorkBudget = std::uint64_t(1) << 27;
+/// Dense per-cell side vectors and the per-patch checks cost cells x halfspaces and patches x halfspaces.
+constexpr std::uint64_t kMaxTableEntries = std::uint64_t(1) << 28;
+
+class Budget {
+ public:
+  void spend(std::uint64_t n, const JsonField& where) {
+    const std::uint64_t cost = n > (std::uint64_t(1) << 31) ? kWorkBudget + 1 : n * n;
+    used_ += cost;
+    if (used_ > kWorkBudget) {
+      where.fail("the document is too large to check: its sums of terms exceed the work limit (" +
+                 std::to_string(kWorkBudget) + " term pairs)");
+    }
+  }
+
+ private:
+  std::uint64_t used_ = 0;
+};
+
 struct Term {
   Rational coefficient;
   std::optional<Rational> radicand;  ///< nullopt: a rational term
@@ -140,6 +162,18 @@ bool parse_terms(std::string_view text, std::vector<Term>& terms, std::string* w
     first = false;
   }
   return true;
+}
+
+Measure sum_of(const std::vector<Term>& terms) {
+  Measure m;
+  for (const Term& t : terms) {
+    if (!t.radicand) {
+      m += Measure(t.coefficient);
+    } else {
+      m += Measure::sqrt_of(*t.radicand) * t.coefficient;
+    }
+  }
+  return m;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -266,10 +300,13 @@ MeasureFields measure_fields(const JsonField& f) {
 
 /// The exact value of an "exact" field: a number, or a closed-form string; nullopt (with *why) when the string
 /// is not in the accepted grammar.
-std::optional<Measure> exact_value(const JsonField& f, std::string* why) {
+std::optional<Measure> exact_value(const JsonField& f, std::string* why, Budget& budget) {
   const json& v = f.json();
-  if (v.is_string()) return parse_closed_form(v.get<std::string>(), why);
-  return Measure(f.rational());
+  if (!v.is_string()) return Measure(f.rational());
+  std::vector<Term> terms;
+  if (!parse_terms(v.get<std::string>(), terms, why)) return std::nullopt;
+  budget.spend(terms.size(), f);
+  return sum_of(terms);
 }
 
 std::string show(const Measure& m) {
@@ -278,11 +315,11 @@ std::string show(const Measure& m) {
 }
 
 /// A measure read without geometry.
-Measure measure_from_fields(const JsonField& f) {
+Measure measure_from_fields(const JsonField& f, Budget& budget) {
   const MeasureFields m = measure_fields(f);
   if (m.exact) {
     std::string why;
-    auto value = exact_value(*m.exact, &why);
+    auto value = exact_value(*m.exact, &why, budget);
     if (!value) m.exact->fail("not an accepted closed form (" + why + "); give a \"decimal\" instead, or a geometry section");
     if (m.decimal && !decimal_agrees(*value, read_decimal(*m.decimal))) {
       m.decimal->fail("does not agree with the exact value " + show(*value));
@@ -294,11 +331,11 @@ Measure measure_from_fields(const JsonField& f) {
 }
 
 /// Checks given measure fields against a value recomputed from the geometry.
-void check_measure(const JsonField& f, const Measure& recomputed, const std::string& what) {
+void check_measure(const JsonField& f, const Measure& recomputed, const std::string& what, Budget& budget) {
   const MeasureFields m = measure_fields(f);
   if (m.exact) {
     std::string why;
-    const auto given = exact_value(*m.exact, &why);
+    const auto given = exact_value(*m.exact, &why, budget);
     bool ok;
     if (given) {
       ok = compare(*given, recomputed) == Order::Equal;
@@ -397,7 +434,8 @@ bool on_circle(const OneRootPoint& p, const PointQ2& c, const Rational& r) {
 // ---------------------------------------------------------------------------------------------------------------
 // Geometry section
 
-void read_geometry(const JsonField& g, const Names& names, std::size_t cell_count, ComplexDocument& doc) {
+void read_geometry(const JsonField& g, const Names& names, std::size_t cell_count, ComplexDocument& doc,
+                   Budget& budget) {
   g.check_keys({"vertices", "edges", "faces"}, "a geometry section");
   // Vertices
   const JsonField jv = g.at("vertices");
@@ -485,6 +523,9 @@ void read_geometry(const JsonField& g, const Names& names, std::size_t cell_coun
     const JsonField walks = f.at("boundary");
     if (walks.size() == 0) walks.fail("a face needs at least one boundary walk");
     auto& boundary = doc.faces[k].boundary;
+    std::uint64_t steps_total = 0;
+    for (std::size_t w = 0; w < walks.size(); ++w) steps_total += walks.at(w).size();
+    budget.spend(steps_total, walks);
     for (std::size_t w = 0; w < walks.size(); ++w) {
       const JsonField walk = walks.at(w);
       if (walk.size() == 0) walk.fail("an empty boundary walk");
@@ -524,6 +565,7 @@ ComplexDocument read_document(const json& document) {
                   "an hsx-complex/1 document");
   ComplexDocument doc;
   Complex& c = doc.complex;
+  Budget budget;
   {
     const JsonField f = root.at("format");
     if (f.string() != kComplexFormat) {
@@ -560,9 +602,16 @@ ComplexDocument read_document(const json& document) {
 
   const JsonField cells = root.at("cells");
   const std::size_t n_cells = cells.size();
+  const JsonField patches = root.at("patches");
+  const std::size_t n_patches = patches.size();
+  if (std::uint64_t(n_cells) * n_half > kMaxTableEntries || std::uint64_t(n_patches) * n_half > kMaxTableEntries) {
+    root.fail("too large: " + std::to_string(n_cells) + " cells and " + std::to_string(n_patches) + " patches over " +
+              std::to_string(n_half) + " halfspaces exceed the limit of " + std::to_string(kMaxTableEntries) +
+              " (cells or patches) x halfspaces");
+  }
   if (auto g = root.get("geometry")) {
     if (c.dimension != 2) g->fail("a geometry section is only defined for dimension 2");
-    read_geometry(*g, names, n_cells, doc);
+    read_geometry(*g, names, n_cells, doc, budget);
     doc.has_geometry = true;
   }
 
@@ -589,19 +638,17 @@ ComplexDocument read_document(const json& document) {
     }
     if (doc.has_geometry) {
       cell.measure = doc.faces[k].area;
-      if (auto m = f.get("measure")) check_measure(*m, cell.measure, "area");
+      if (auto m = f.get("measure")) check_measure(*m, cell.measure, "area", budget);
       ArrFace2& face = doc.faces[k];
       face.outer = cell.outer;
       face.inside = cell.inside;
       if (cell.witness.size() == 2) face.interior = PointQ2{cell.witness[0], cell.witness[1]};
     } else {
-      cell.measure = measure_from_fields(f.at("measure"));
+      cell.measure = measure_from_fields(f.at("measure"), budget);
     }
   }
 
   // Patches: fields that stand alone
-  const JsonField patches = root.at("patches");
-  const std::size_t n_patches = patches.size();
   c.patches.resize(n_patches);
   for (std::size_t p = 0; p < n_patches; ++p) {
     const JsonField f = patches.at(p);
@@ -636,6 +683,13 @@ ComplexDocument read_document(const json& document) {
     }
     if (doc.has_geometry) {
       if (patch.pieces.empty()) f.fail("needs \"pieces\" (its edges) when the document has a geometry section");
+      budget.spend(patch.pieces.size(), f.at("pieces"));
+      {
+        std::vector<int> sorted = patch.pieces;
+        std::sort(sorted.begin(), sorted.end());
+        const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+        if (twice != sorted.end()) f.at("pieces").fail("lists edge " + std::to_string(*twice) + " twice");
+      }
       Measure length;
       for (std::size_t k = 0; k < patch.pieces.size(); ++k) {
         const JsonField where = f.at("pieces").at(k);
@@ -658,9 +712,9 @@ ComplexDocument read_document(const json& document) {
         length += e.length;
       }
       patch.measure = length;
-      if (auto m = f.get("measure")) check_measure(*m, patch.measure, "length");
+      if (auto m = f.get("measure")) check_measure(*m, patch.measure, "length", budget);
     } else {
-      patch.measure = measure_from_fields(f.at("measure"));
+      patch.measure = measure_from_fields(f.at("measure"), budget);
     }
   }
 
@@ -673,11 +727,21 @@ ComplexDocument read_document(const json& document) {
       const JsonField group = s->at(g);
       c.supports[g] = read_index_set(group, n_patches, "patch");
       if (c.supports[g].empty()) group.fail("an empty support group");
+      std::set<int> group_halfspaces;
+      const Patch& first = c.patches[c.supports[g].front()];
       for (int p : c.supports[g]) {
         if (group_of[p] >= 0) {
           group.fail("patch " + std::to_string(p) + " is already in support group " + std::to_string(group_of[p]));
         }
         group_of[p] = static_cast<int>(g);
+        const Patch& patch = c.patches[p];
+        if (!group_halfspaces.insert(patch.halfspace).second) {
+          group.fail("two of its patches lie on halfspace " + name_of(c.halfspace_names, patch.halfspace));
+        }
+        if (std::minmax(patch.inside_cell, patch.outside_cell) != std::minmax(first.inside_cell, first.outside_cell)) {
+          group.fail("patches " + std::to_string(c.supports[g].front()) + " and " + std::to_string(p) +
+                     " separate different cells, so they cannot coincide");
+        }
       }
     }
     for (std::size_t p = 0; p < n_patches; ++p) {
@@ -771,6 +835,7 @@ ComplexDocument read_document(const json& document) {
   for (std::size_t p = 0; p < n_patches; ++p) {
     Patch& patch = c.patches[p];
     auto list = patches.at(p).get("junctions");
+    budget.spend(std::max<std::size_t>(junctions_of[p].size(), list ? list->size() : 0), patches.at(p));
     if (!list) {
       patch.junctions = junctions_of[p];
       continue;
@@ -836,15 +901,7 @@ json exact_pair(const Rational& x, const Rational& y) {
 std::optional<Measure> parse_closed_form(std::string_view text, std::string* why) {
   std::vector<Term> terms;
   if (!parse_terms(text, terms, why)) return std::nullopt;
-  Measure m;
-  for (const Term& t : terms) {
-    if (!t.radicand) {
-      m += Measure(t.coefficient);
-    } else {
-      m += Measure::sqrt_of(*t.radicand) * t.coefficient;
-    }
-  }
-  return m;
+  return sum_of(terms);
 }
 
 std::optional<OneRoot> parse_one_root(std::string_view text, std::string* why) {

@@ -50,22 +50,31 @@ const std::vector<unsigned long>& small_primes() {
   return primes;
 }
 
-// ---- deterministic primality for 64-bit integers (Miller-Rabin with the first 12 prime bases, which is exact
-// for all n < 3.3e24; see proofs/measures.md) ----
+// ---- deterministic primality for 64-bit integers: Miller-Rabin with the first 12 prime bases, which is exact
+// for all n < 3.3e24 (Sorenson & Webster 2015; see proofs/measures.md). Montgomery arithmetic avoids 128-bit
+// divisions. ----
 using u64 = unsigned long long;
 using u128 = unsigned __int128;
 
-u64 mul_mod(u64 a, u64 b, u64 m) { return static_cast<u64>(static_cast<u128>(a) * b % m); }
-u64 pow_mod(u64 b, u64 e, u64 m) {
-  u64 r = 1 % m;
-  b %= m;
-  while (e) {
-    if (e & 1) r = mul_mod(r, b, m);
-    b = mul_mod(b, b, m);
-    e >>= 1;
+struct Montgomery {
+  u64 n, n_inv, r2;  // n odd; n * n_inv == 1 mod 2^64; r2 = 2^128 mod n
+  explicit Montgomery(u64 n_) : n(n_) {
+    n_inv = n;  // Newton iteration doubles the number of correct low bits: 3 -> 6 -> ... -> 96
+    for (int i = 0; i < 5; ++i) n_inv *= 2 - n * n_inv;
+    const u64 r = (0 - n) % n;  // 2^64 mod n
+    r2 = static_cast<u64>(static_cast<u128>(r) * r % n);
   }
-  return r;
-}
+  /// T * 2^-64 mod n for T < n * 2^64: T - m n is divisible by 2^64 and lies in (-n 2^64, n 2^64).
+  u64 reduce(u128 T) const {
+    const u64 m = static_cast<u64>(T) * n_inv;
+    const u128 mn = static_cast<u128>(m) * n;
+    const u64 th = static_cast<u64>(T >> 64), mh = static_cast<u64>(mn >> 64);
+    return th >= mh ? th - mh : th - mh + n;
+  }
+  u64 mul(u64 a, u64 b) const { return reduce(static_cast<u128>(a) * b); }
+  u64 to(u64 a) const { return mul(a % n, r2); }
+};
+
 bool is_prime_u64(u64 n) {
   if (n < 2) return false;
   static const u64 bases[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37};
@@ -78,13 +87,20 @@ bool is_prime_u64(u64 n) {
     d >>= 1;
     ++s;
   }
+  const Montgomery M(n);
+  const u64 one = M.to(1), minus_one = M.to(n - 1);
   for (u64 a : bases) {
-    u64 x = pow_mod(a, d, n);
-    if (x == 1 || x == n - 1) continue;
+    // x = a^d mod n (Montgomery form)
+    u64 x = one, b = M.to(a);
+    for (u64 e = d; e; e >>= 1) {
+      if (e & 1) x = M.mul(x, b);
+      b = M.mul(b, b);
+    }
+    if (x == one || x == minus_one) continue;
     bool witness = true;
     for (int i = 1; i < s; ++i) {
-      x = mul_mod(x, x, n);
-      if (x == n - 1) {
+      x = M.mul(x, x);
+      if (x == minus_one) {
         witness = false;
         break;
       }
@@ -92,6 +108,24 @@ bool is_prime_u64(u64 n) {
     if (witness) return false;
   }
   return true;
+}
+
+/// Odd small primes with their inverses mod 2^64: p | n  iff  n * inv <= (2^64 - 1) / p.
+struct OddPrime {
+  u64 p, inv, limit;
+};
+const std::vector<OddPrime>& odd_primes() {
+  static const std::vector<OddPrime> table = [] {
+    std::vector<OddPrime> out;
+    for (unsigned long p : small_primes()) {
+      if (p == 2) continue;
+      u64 inv = p;
+      for (int i = 0; i < 5; ++i) inv *= 2 - p * inv;
+      out.push_back({p, inv, ~u64(0) / p});
+    }
+    return out;
+  }();
+  return table;
 }
 
 bool fits_u64(const Integer& z) { return mpz_sizeinbase(z.get_mpz_t(), 2) <= 64 && sgn(z) >= 0; }
@@ -130,24 +164,34 @@ Reduced reduce_radicand(const Integer& k) {
   if (fits_u64(k)) {
     u64 u = to_u64(k), s = 1, m = 1;
     bool fully = false;  // u is 1 or prime
-    for (unsigned long p : small_primes()) {
-      if (static_cast<u64>(p) * p > u) {
+    {
+      int e = 0;
+      while ((u & 1) == 0) {
+        u >>= 1;
+        ++e;
+      }
+      for (int i = 0; i < e / 2; ++i) m *= 2;
+      if (e & 1) s *= 2;
+    }
+    for (const OddPrime& q : odd_primes()) {
+      const u64 p = q.p;
+      if (p * p > u) {
         fully = true;
         break;
       }
-      if (u % p) continue;
+      if (u * q.inv > q.limit) continue;  // p does not divide u
       int e = 0;
       do {
-        u /= p;
+        u = u * q.inv;  // exact division: u / p
         ++e;
-      } while (u % p == 0);
+      } while (u * q.inv <= q.limit);
       for (int i = 0; i < e / 2; ++i) m *= p;
       if (e & 1) s *= p;
     }
     if (!fully) {
       // u has no prime factor below kNextPrime.
       const Integer U = from_u64(u);
-      if (is_square(U)) {
+      if (false) {
         m *= to_u64(isqrt(U));
         u = 1;
         fully = true;
@@ -464,6 +508,10 @@ Measure Measure::multiply_algebraic(const Measure& a, const Measure& b) {
 }
 
 Measure Measure::distance(const OneRootPoint& p, const OneRootPoint& q) {
+  if (p.is_rational() && q.is_rational()) {
+    const Rational dx = p.x.a0 - q.x.a0, dy = p.y.a0 - q.y.a0;
+    return sqrt_of(Rational(dx * dx + dy * dy));
+  }
   const Measure dx = product(p.x, Rational(1)) - product(q.x, Rational(1));
   const Measure dy = product(p.y, Rational(1)) - product(q.y, Rational(1));
   // Axis-parallel: |dx| or |dy| exactly.
@@ -634,7 +682,7 @@ bool Measure::double_enclosure(double& lo, double& hi) const {
     abs_sum += std::fabs(t);
   }
   const double u = std::ldexp(1.0, -53);
-  const double bound = abs_sum * u * 4;
+  const double bound = abs_sum * (static_cast<double>(n) + 8.0) * u * (1.0 + 1.0 / 64);
   constexpr double inf = std::numeric_limits<double>::infinity();
   lo = std::nextafter(sum - bound, -inf);
   hi = std::nextafter(sum + bound, inf);

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 using namespace hsx;
 using nlohmann::json;
 
@@ -501,7 +503,11 @@ TEST_CASE("10,000 halfspaces read quickly", "[scene_json][limits]") {
 }
 
 TEST_CASE("scene files: errors carry the path", "[scene_json]") {
-  std::string path = std::string(std::tmpnam(nullptr)) + "-hsx-scene.json";
+  char name[] = "/tmp/hsx-scene-test-XXXXXX";
+  int fd = mkstemp(name);
+  REQUIRE(fd >= 0);
+  close(fd);
+  const std::string path = name;
   {
     std::ofstream out(path);
     out << kSpecExample;

@@ -168,6 +168,42 @@ TEST_CASE("radicands with large square factors are grouped exactly", "[measure]"
   CHECK(*prod.rational_value() == Rational(Integer(p) * s * q * r));
 }
 
+TEST_CASE("square factors of large primes are found whatever the order", "[measure][property]") {
+  // Primes above the trial-division bound (1093 and 3511 are Wieferich primes: their squares fool base-2 tests).
+  static const long big_primes[] = {1009, 1013, 1093, 3511, 65537, 1000003, 1000033, 998244353, 1000000007,
+                                    2147483647, 4294967291L};
+  static const std::vector<long> small = {1, 2, 3, 6, 10, 997};
+  rc::prop("sqrt(m^2 r) - m sqrt(r) == 0 in any order, mixed with other terms", [] {
+    const auto picks = *rc::gen::container<std::vector<std::pair<int, int>>>(
+        rc::gen::pair(rc::gen::inRange(0, 11), rc::gen::inRange(1, 4)));
+    Integer m = 1, r = *rc::gen::elementOf(small);
+    for (const auto& [i, e] : picks) {
+      const Integer p(big_primes[i]);
+      for (int j = 0; j < e / 2; ++j) m *= p;
+      if (e % 2) r *= p;
+    }
+    // r must be square-free for m*sqrt(r) to be the expected normal form: drop repeated primes from r
+    for (long p : big_primes) {
+      const Integer pp = Integer(p) * p;
+      while (mpz_divisible_p(r.get_mpz_t(), pp.get_mpz_t())) {
+        r /= pp;
+        m *= p;
+      }
+    }
+    const Integer k = m * m * r;
+    const Measure whole = Measure::sqrt_of(Rational(k));
+    const Measure parts = Measure::sqrt_of(Rational(r)) * Rational(m);
+    const Measure noise = S(2) * R(3) + S(1013 * 7) - S(5);
+    RC_ASSERT((whole - parts).is_zero());
+    RC_ASSERT((parts - whole).is_zero());
+    RC_ASSERT(((noise + whole) - (parts + noise)).is_zero());
+    RC_ASSERT(((whole + noise) - (noise + parts)).is_zero());
+    RC_ASSERT(compare(whole + noise, noise + parts) == Order::Equal);
+    // and the square-free form is what gets printed once both spellings were seen, in either order
+    RC_ASSERT(*(whole + parts).exact_string() == *(parts * Rational(2)).exact_string());
+  });
+}
+
 TEST_CASE("1000-term sums", "[measure]") {
   Measure forward, backward;
   for (long i = 1; i <= 1000; ++i) forward += S(i) * R(i % 7 - 3, 1 + i % 5);

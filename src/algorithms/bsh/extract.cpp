@@ -44,6 +44,7 @@ class SearchContext {
   const ExtractOptions& options() const { return options_; }
   SearchStats& stats() { return stats_; }
   std::string stopped_by;
+  std::vector<Labelling> expanded;  // with record_states
   bool unseparated = false;  ///< a best-first pick had a competitor whose energy did not separate from it
 
   CutResult cut(const std::vector<int>& removed, const std::vector<signed char>& forced) {
@@ -146,6 +147,7 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
           ctx.unseparated = true;
     ++ctx.stats().states_expanded;
     const Labelling labelling = out.archive[current].cut.labelling;
+    if (ctx.options().record_states) ctx.expanded.push_back(labelling);
     const SampleConnectivity connectivity = sample_connectivity(problem, labelling);
     if (connectivity.sample_connected()) {
       ctx.offer_feasible(out.archive[current].cut);
@@ -317,6 +319,7 @@ ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
   }
   result.stats = ctx.stats();
   result.stats.seconds = ctx.seconds();
+  result.expanded = std::move(ctx.expanded);
   return result;
 }
 

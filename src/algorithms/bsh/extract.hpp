@@ -37,6 +37,7 @@ struct ExtractOptions {
   int max_ties = 16;
   long brute_force_limit = 1L << 22;  ///< labellings the oracle may enumerate before refusing
   CompareOptions compare;
+  bool record_states = false;   ///< keep the labelling of every expanded state (ExtractResult::expanded)
   /// Called about twice a second during long searches (the CLI prints it on stderr); may be empty.
   std::function<void(const SearchProgress&)> progress;
 };
@@ -70,6 +71,7 @@ struct ExtractResult {
   Ties ties;
   std::vector<Labelling> tied;   ///< the other optimal labellings when ties.count > 1
   std::string stopped_by;        ///< "" (finished), "max-states", "time-limit"
+  std::vector<Labelling> expanded;  ///< with ExtractOptions::record_states: every expanded state's boundary
   SearchStats stats;
 };
 

@@ -9,5 +9,6 @@ namespace hsx::cli {
 void add_arrange_command(CLI::App& app);
 void add_extract_command(CLI::App& app);
 void add_check_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 
 }  // namespace hsx::cli

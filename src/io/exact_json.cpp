@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <utility>
 #include <vector>
@@ -349,18 +350,26 @@ json parse_exact_json(std::string_view text, const JsonLimits& limits) {
 }
 
 json read_exact_json_file(const std::string& path, const JsonLimits& limits) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file (" + std::strerror(errno) + ")");
-  in.seekg(0, std::ios::end);
-  std::streamoff size = in.tellg();
-  if (size < 0) throw InputError(path + ": cannot read file");
-  if (static_cast<unsigned long long>(size) > limits.max_bytes) {
-    throw InputError(path + ": file is " + std::to_string(size) + " bytes; the limit is " +
-                     std::to_string(limits.max_bytes));
+  // Read in blocks, at most max_bytes + 1 bytes, so that pipes work and a huge file is refused without reading it.
+  auto too_large = [&](const std::string& size) {
+    return InputError(path + ": file is " + size + " bytes; the limit is " + std::to_string(limits.max_bytes));
+  };
+  const auto file_size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
+  if (!ec && file_size > limits.max_bytes) throw too_large(std::to_string(file_size));
+  std::string text;
+  constexpr std::size_t kBlock = std::size_t{1} << 20;
+  while (in) {
+    const std::size_t old = text.size();
+    text.resize(old + kBlock);
+    in.read(&text[old], static_cast<std::streamsize>(kBlock));
+    text.resize(old + static_cast<std::size_t>(in.gcount()));
+    if (text.size() > limits.max_bytes) throw too_large("more than " + std::to_string(limits.max_bytes));
   }
-  in.seekg(0, std::ios::beg);
-  std::string text(static_cast<std::size_t>(size), '\0');
-  if (size > 0 && !in.read(text.data(), size)) throw InputError(path + ": cannot read file");
+  if (in.bad()) throw InputError(path + ": cannot read file");
   try {
     return parse_exact_json(text, limits);
   } catch (const InputError& e) {

@@ -191,7 +191,7 @@ Reduced reduce_radicand(const Integer& k) {
     if (!fully) {
       // u has no prime factor below kNextPrime.
       const Integer U = from_u64(u);
-      if (false) {
+      if (is_square(U)) {
         m *= to_u64(isqrt(U));
         u = 1;
         fully = true;

@@ -114,146 +114,170 @@ std::vector<int> identity(std::size_t n) {
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------------------
-// Properties
+// Properties: checks of one scene (the permutation and the translation are drawn inside), run on random scenes
+
+namespace {
+
+/// check_complex is empty; patches separate cells that differ exactly in their support group; cells agree with
+/// direct evaluation; every interior edge is in a patch; samples sit on their patch.
+void check_structure(const Scene2& scene, const Arranged2& a) {
+  const Complex& c = a.complex;
+  const Arrangement2& arr = a.arrangement;
+  const auto problems = check_complex(c);
+  for (const auto& p : problems) RC_LOG() << p << "\n";
+  RC_ASSERT(problems.empty());
+  const int n = c.halfspace_count();
+  RC_ASSERT(n == static_cast<int>(scene.halfspaces.size()));
+  RC_ASSERT(c.cells.size() == arr.faces().size());
+  // Cells: witness strictly inside, sides by direct evaluation.
+  for (const Cell& cell : c.cells) {
+    RC_ASSERT(cell.witness.size() == 2u);
+    const PointQ2 w{cell.witness[0], cell.witness[1]};
+    for (int i = 0; i < n; ++i) {
+      const int side = scene.halfspaces[i].side(w);
+      RC_ASSERT(side != 0);
+      RC_ASSERT(static_cast<int>(cell.inside[i]) == (side > 0 ? 1 : 0));
+    }
+  }
+  std::set<int> covered_edges;
+  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p) {
+    const Patch& pa = c.patches[p];
+    const Cell& in = c.cells.at(pa.inside_cell);
+    const Cell& out = c.cells.at(pa.outside_cell);
+    RC_ASSERT(in.inside[pa.halfspace] == 1);
+    RC_ASSERT(out.inside[pa.halfspace] == 0);
+    std::vector<int> group;
+    for (int q : c.supports.at(pa.support)) group.push_back(c.patches[q].halfspace);
+    std::sort(group.begin(), group.end());
+    RC_ASSERT(std::adjacent_find(group.begin(), group.end()) == group.end());
+    for (int i = 0; i < n; ++i) {
+      const bool in_group = std::binary_search(group.begin(), group.end(), i);
+      RC_ASSERT((in.inside[i] != out.inside[i]) == in_group);
+    }
+    // The pieces are interior edges carrying exactly the group's halfspaces, between the patch's two cells.
+    RC_ASSERT(!pa.pieces.empty());
+    for (int e : pa.pieces) {
+      const ArrEdge2& edge = arr.edges().at(e);
+      RC_ASSERT(!edge.on_box);
+      RC_ASSERT(edge.halfspaces == group);
+      RC_ASSERT(std::minmax(edge.left_face, edge.right_face) == std::minmax(pa.inside_cell, pa.outside_cell));
+      covered_edges.insert(e);
+    }
+    RC_ASSERT(pa.junctions.size() == 0u || pa.junctions.size() == 2u);
+    RC_ASSERT(pa.measure.sign() == std::optional<int>(1));
+  }
+  // Every interior edge is in some patch.
+  for (int e = 0; e < static_cast<int>(arr.edges().size()); ++e)
+    RC_ASSERT(arr.edges()[e].on_box == (covered_edges.count(e) == 0));
+  // Samples: on a patch of their halfspace whose pieces hold the sample's edge.
+  RC_ASSERT(c.samples.size() == scene.samples.size());
+  for (std::size_t s = 0; s < scene.samples.size(); ++s) {
+    const Patch& pa = c.patches.at(c.samples[s].patch);
+    RC_ASSERT(pa.halfspace == scene.samples[s].halfspace);
+    const int e = arr.sample_edges().at(s);
+    RC_ASSERT(std::find(pa.pieces.begin(), pa.pieces.end(), e) != pa.pieces.end());
+  }
+}
+
+/// Same cells, patches and sample sites up to renaming, measures exactly equal.
+void check_permutation(const Scene2& scene) {
+  const std::size_t n = scene.halfspaces.size();
+  std::vector<int> order = identity(n);  // Fisher-Yates with generated draws
+  for (std::size_t k = n; k > 1; --k) std::swap(order[k - 1], order[*rc::gen::resize(rc::kNominalSize, rc::gen::inRange<std::size_t>(0, k))]);
+  const Scene2 other = permuted(scene, order);
+  const Arranged2 a = arrange(scene), b = arrange(other);
+  RC_ASSERT(a.arrangement.vertices().size() == b.arrangement.vertices().size());
+  RC_ASSERT(a.arrangement.edges().size() == b.arrangement.edges().size());
+  RC_ASSERT(a.complex.junctions.size() == b.complex.junctions.size());
+  auto equal = [](const Measure& x, const Measure& y) { return compare(x, y) == Order::Equal; };
+  const auto id = identity(n);
+  const std::string cells = unmatched(cell_signatures(a.complex, id), cell_signatures(b.complex, order), equal);
+  RC_ASSERT(cells == "");
+  const std::string patches =
+      unmatched(patch_signatures(a.complex, id), patch_signatures(b.complex, order), equal);
+  RC_ASSERT(patches == "");
+  for (std::size_t s = 0; s < scene.samples.size(); ++s) {
+    const int pa = a.complex.samples[s].patch, pb = b.complex.samples[s].patch;
+    RC_ASSERT(patch_key(a.complex, pa, id) == patch_key(b.complex, pb, order));
+    RC_ASSERT(equal(a.complex.patches[pa].measure, b.complex.patches[pb].measure));
+  }
+}
+
+/// Same counts and signatures; measures Equal without disks, never separated (and equal to 25 digits) with disks.
+void check_translation(const Scene2& scene) {
+  const int dx = *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-5, 6));
+  const int dy = *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-5, 6));
+  const Scene2 other = translated(scene, pt(dx, dy));
+  const Arranged2 a = arrange(scene), b = arrange(other);
+  RC_ASSERT(a.arrangement.vertices().size() == b.arrangement.vertices().size());
+  RC_ASSERT(a.arrangement.edges().size() == b.arrangement.edges().size());
+  RC_ASSERT(a.complex.cells.size() == b.complex.cells.size());
+  RC_ASSERT(a.complex.outer_cell_count() == b.complex.outer_cell_count());
+  RC_ASSERT(a.complex.patches.size() == b.complex.patches.size());
+  RC_ASSERT(a.complex.junctions.size() == b.complex.junctions.size());
+  const bool disks = has_disk(scene);
+  auto same = [disks](const Measure& x, const Measure& y) {
+    const Order o = compare(x, y);
+    if (!disks) return o == Order::Equal;
+    return o != Order::Less && o != Order::Greater && close(x, y, 1e-25);
+  };
+  const auto id = identity(scene.halfspaces.size());
+  RC_ASSERT(unmatched(cell_signatures(a.complex, id), cell_signatures(b.complex, id), same) == "");
+  RC_ASSERT(unmatched(patch_signatures(a.complex, id), patch_signatures(b.complex, id), same) == "");
+  for (std::size_t s = 0; s < scene.samples.size(); ++s) {
+    const int pa = a.complex.samples[s].patch, pb = b.complex.samples[s].patch;
+    RC_ASSERT(patch_key(a.complex, pa, id) == patch_key(b.complex, pb, id));
+  }
+}
+
+/// Polygon patches add up to the perimeter exactly; disk patches enclose 2 pi r.
+void check_lengths(const Scene2& scene, const Arranged2& a) {
+  const Complex& c = a.complex;
+  for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
+    const Halfspace2& h = scene.halfspaces[i];
+    Measure sum;
+    for (const Patch& p : c.patches)
+      if (p.halfspace == i) sum += p.measure;
+    if (h.kind == HalfspaceKind2::Polygon) {
+      Measure perimeter;
+      for (std::size_t k = 0; k < h.vertices.size(); ++k)
+        perimeter += Measure::distance(h.vertices[k], h.vertices[(k + 1) % h.vertices.size()]);
+      RC_LOG() << h.name << ": patches " << sum.decimal_string(30) << " = " << sum.exact_string().value_or("?")
+               << ", perimeter " << perimeter.exact_string().value_or("?") << ", compare "
+               << to_string(compare(sum, perimeter)) << "\n";
+      RC_ASSERT(compare(sum, perimeter) == Order::Equal);
+    } else if (h.kind == HalfspaceKind2::Disk) {
+      const Order o = compare(sum, circumference(h));
+      RC_ASSERT(o != Order::Less);
+      RC_ASSERT(o != Order::Greater);
+      RC_ASSERT(close(sum, circumference(h), 1e-30));
+    }
+  }
+}
+
+}  // namespace
 
 TEST_CASE("complex: structural invariants on random scenes", "[complex][property]") {
   rc::prop("check_complex is empty; patches separate cells that differ exactly in their support group", [] {
     const Scene2 scene = *gen_scene(options_with_samples());
-    const Arranged2 a = arrange(scene);
-    const Complex& c = a.complex;
-    const Arrangement2& arr = a.arrangement;
-    const auto problems = check_complex(c);
-    RC_ASSERT(problems.empty());
-    const int n = c.halfspace_count();
-    RC_ASSERT(n == static_cast<int>(scene.halfspaces.size()));
-    RC_ASSERT(c.cells.size() == arr.faces().size());
-    // Cells: witness strictly inside, sides by direct evaluation.
-    for (const Cell& cell : c.cells) {
-      RC_ASSERT(cell.witness.size() == 2u);
-      const PointQ2 w{cell.witness[0], cell.witness[1]};
-      for (int i = 0; i < n; ++i) {
-        const int side = scene.halfspaces[i].side(w);
-        RC_ASSERT(side != 0);
-        RC_ASSERT(static_cast<int>(cell.inside[i]) == (side > 0 ? 1 : 0));
-      }
-    }
-    std::set<int> covered_edges;
-    for (int p = 0; p < static_cast<int>(c.patches.size()); ++p) {
-      const Patch& pa = c.patches[p];
-      const Cell& in = c.cells.at(pa.inside_cell);
-      const Cell& out = c.cells.at(pa.outside_cell);
-      RC_ASSERT(in.inside[pa.halfspace] == 1);
-      RC_ASSERT(out.inside[pa.halfspace] == 0);
-      std::vector<int> group;
-      for (int q : c.supports.at(pa.support)) group.push_back(c.patches[q].halfspace);
-      std::sort(group.begin(), group.end());
-      RC_ASSERT(std::adjacent_find(group.begin(), group.end()) == group.end());
-      for (int i = 0; i < n; ++i) {
-        const bool in_group = std::binary_search(group.begin(), group.end(), i);
-        RC_ASSERT((in.inside[i] != out.inside[i]) == in_group);
-      }
-      // The pieces are interior edges carrying exactly the group's halfspaces, between the patch's two cells.
-      RC_ASSERT(!pa.pieces.empty());
-      for (int e : pa.pieces) {
-        const ArrEdge2& edge = arr.edges().at(e);
-        RC_ASSERT(!edge.on_box);
-        RC_ASSERT(edge.halfspaces == group);
-        RC_ASSERT(std::minmax(edge.left_face, edge.right_face) == std::minmax(pa.inside_cell, pa.outside_cell));
-        covered_edges.insert(e);
-      }
-      RC_ASSERT(pa.junctions.size() == 0u || pa.junctions.size() == 2u);
-      RC_ASSERT(pa.measure.sign() == std::optional<int>(1));
-    }
-    // Every interior edge is in some patch.
-    for (int e = 0; e < static_cast<int>(arr.edges().size()); ++e)
-      RC_ASSERT(arr.edges()[e].on_box == (covered_edges.count(e) == 0));
-    // Samples: on a patch of their halfspace whose pieces hold the sample's edge.
-    RC_ASSERT(c.samples.size() == scene.samples.size());
-    for (std::size_t s = 0; s < scene.samples.size(); ++s) {
-      const Patch& pa = c.patches.at(c.samples[s].patch);
-      RC_ASSERT(pa.halfspace == scene.samples[s].halfspace);
-      const int e = arr.sample_edges().at(s);
-      RC_ASSERT(std::find(pa.pieces.begin(), pa.pieces.end(), e) != pa.pieces.end());
-    }
+    check_structure(scene, arrange(scene));
   });
 }
 
 TEST_CASE("complex: invariant under permutation of the halfspaces", "[complex][property]") {
-  rc::prop("same cells, patches and sample sites up to renaming, measures exactly equal", [] {
-    const Scene2 scene = *gen_scene(options_with_samples());
-    const std::size_t n = scene.halfspaces.size();
-    std::vector<int> order = identity(n);  // Fisher-Yates with generated draws
-    for (std::size_t k = n; k > 1; --k) std::swap(order[k - 1], order[*rc::gen::inRange<std::size_t>(0, k)]);
-    const Scene2 other = permuted(scene, order);
-    const Arranged2 a = arrange(scene), b = arrange(other);
-    RC_ASSERT(a.arrangement.vertices().size() == b.arrangement.vertices().size());
-    RC_ASSERT(a.arrangement.edges().size() == b.arrangement.edges().size());
-    RC_ASSERT(a.complex.junctions.size() == b.complex.junctions.size());
-    auto equal = [](const Measure& x, const Measure& y) { return compare(x, y) == Order::Equal; };
-    const auto id = identity(n);
-    const std::string cells = unmatched(cell_signatures(a.complex, id), cell_signatures(b.complex, order), equal);
-    RC_ASSERT(cells == "");
-    const std::string patches =
-        unmatched(patch_signatures(a.complex, id), patch_signatures(b.complex, order), equal);
-    RC_ASSERT(patches == "");
-    for (std::size_t s = 0; s < scene.samples.size(); ++s) {
-      const int pa = a.complex.samples[s].patch, pb = b.complex.samples[s].patch;
-      RC_ASSERT(patch_key(a.complex, pa, id) == patch_key(b.complex, pb, order));
-      RC_ASSERT(equal(a.complex.patches[pa].measure, b.complex.patches[pb].measure));
-    }
-  });
+  rc::prop("same cells, patches and sample sites up to renaming, measures exactly equal",
+           [] { check_permutation(*gen_scene(options_with_samples())); });
 }
 
 TEST_CASE("complex: invariant under integer translation", "[complex][property]") {
-  rc::prop("same counts and signatures; measures Equal without disks, never separated with disks", [] {
-    const Scene2 scene = *gen_scene(options_with_samples());
-    const int dx = *rc::gen::inRange(-5, 6), dy = *rc::gen::inRange(-5, 6);
-    const Scene2 other = translated(scene, pt(dx, dy));
-    const Arranged2 a = arrange(scene), b = arrange(other);
-    RC_ASSERT(a.arrangement.vertices().size() == b.arrangement.vertices().size());
-    RC_ASSERT(a.arrangement.edges().size() == b.arrangement.edges().size());
-    RC_ASSERT(a.complex.cells.size() == b.complex.cells.size());
-    RC_ASSERT(a.complex.outer_cell_count() == b.complex.outer_cell_count());
-    RC_ASSERT(a.complex.patches.size() == b.complex.patches.size());
-    RC_ASSERT(a.complex.junctions.size() == b.complex.junctions.size());
-    const bool disks = has_disk(scene);
-    auto same = [disks](const Measure& x, const Measure& y) {
-      const Order o = compare(x, y);
-      if (!disks) return o == Order::Equal;
-      return o != Order::Less && o != Order::Greater && close(x, y, 1e-25);
-    };
-    const auto id = identity(scene.halfspaces.size());
-    RC_ASSERT(unmatched(cell_signatures(a.complex, id), cell_signatures(b.complex, id), same) == "");
-    RC_ASSERT(unmatched(patch_signatures(a.complex, id), patch_signatures(b.complex, id), same) == "");
-    for (std::size_t s = 0; s < scene.samples.size(); ++s) {
-      const int pa = a.complex.samples[s].patch, pb = b.complex.samples[s].patch;
-      RC_ASSERT(patch_key(a.complex, pa, id) == patch_key(b.complex, pb, id));
-    }
-  });
+  rc::prop("same counts and signatures; measures Equal without disks, never separated with disks",
+           [] { check_translation(*gen_scene(options_with_samples())); });
 }
 
 TEST_CASE("complex: patch lengths add up exactly", "[complex][property]") {
   rc::prop("polygon patches give the perimeter exactly; disk patches enclose 2 pi r", [] {
     const Scene2 scene = *gen_scene(options_with_samples());
-    const Arranged2 a = arrange(scene);
-    const Complex& c = a.complex;
-    for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
-      const Halfspace2& h = scene.halfspaces[i];
-      Measure sum;
-      for (const Patch& p : c.patches)
-        if (p.halfspace == i) sum += p.measure;
-      if (h.kind == HalfspaceKind2::Polygon) {
-        Measure perimeter;
-        for (std::size_t k = 0; k < h.vertices.size(); ++k)
-          perimeter += Measure::distance(h.vertices[k], h.vertices[(k + 1) % h.vertices.size()]);
-        RC_ASSERT(compare(sum, perimeter) == Order::Equal);
-      } else if (h.kind == HalfspaceKind2::Disk) {
-        const Order o = compare(sum, circumference(h));
-        RC_ASSERT(o != Order::Less);
-        RC_ASSERT(o != Order::Greater);
-        RC_ASSERT(close(sum, circumference(h), 1e-30));
-      }
-    }
+    check_lengths(scene, arrange(scene));
   });
 }
 
@@ -281,8 +305,52 @@ TEST_CASE("complex: polygon patch lengths with straight boundaries only", "[comp
   });
 }
 
+TEST_CASE("complex: all properties on larger scenes", "[.][stress][complex]") {
+  // Hidden (run with "[stress]"): more halfspaces and degeneracies than the default suite. check_lengths is left
+  // out so that the known Measure::distance limitation (the [bug] case below) does not mask other failures.
+  rc::prop("larger scenes", [] {
+    SceneGenOptions o = options_with_samples();
+    o.max_halfspaces = 12;
+    o.max_degeneracies = 5;
+    const Scene2 scene = *gen_scene(o);
+    check_structure(scene, arrange(scene));
+    check_permutation(scene);
+    check_translation(scene);
+  });
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Hand-computed cases
+
+TEST_CASE("complex: a polygon edge cut by two circles has exact patch lengths", "[complex][bug]") {
+  // Minimal reproducer of the failures of "patch lengths add up exactly". The edge (0,0)-(6,6) of T meets circle A
+  // at x = y = (1 + sqrt 7)/2 and circle B at x = y = 5 - sqrt(2)/2; the piece between them has length
+  // sqrt(2) * (9/2 - sqrt(2)/2 - sqrt(7)/2) = -1 + 9/2 sqrt(2) - 1/2 sqrt(14), an exact sum of square roots.
+  // Measure::distance (kernel/measure.cpp) keeps it as the special term sqrt(45 - 9 sqrt 2 - 9 sqrt 7 + sqrt 14)
+  // because dx and dy each hold two radicals, so the patch lengths of T cannot be compared exactly with its
+  // perimeter: compare answers Tie instead of Equal.
+  const Scene2 s = make_scene(box(-2, -3, 10, 8), {polygon("T", {pt(0, 0), pt(6, 6), pt(8, 0)}),
+                                                   disk("A", pt(1, 0), 2), disk("B", pt(5, 5), 1)});
+  const Complex c = arrange(s).complex;
+  CHECK(check_complex(c).empty());
+  Measure sum;
+  bool found_piece = false;
+  const Measure expected_piece = Measure(Rational(-1)) + Measure::sqrt_of(Rational(81, 2)) - Measure::sqrt_of(Rational(7, 2));
+  for (const Patch& p : c.patches)
+    if (p.halfspace == 0) {
+      sum += p.measure;
+      if (close(p.measure, expected_piece, 1e-30)) {
+        found_piece = true;
+        INFO("piece between the circles: " << p.measure.exact_string().value_or("?"));
+        CHECK(compare(p.measure, expected_piece) == Order::Equal);
+        CHECK(!p.measure.has_special_terms());
+      }
+    }
+  CHECK(found_piece);
+  const Measure perimeter = Measure(Rational(8)) + Measure::sqrt_of(Rational(72)) + Measure::sqrt_of(Rational(40));
+  INFO("sum of T's patches: " << sum.exact_string().value_or("?"));
+  CHECK(compare(sum, perimeter) == Order::Equal);
+}
 
 TEST_CASE("complex: two crossing disks", "[complex]") {
   // A (0,0) r 2 and B (2,0) r 2 cross at (1, +-sqrt 3). Cells: outside (outer), A only, lens, B only.
@@ -320,8 +388,15 @@ TEST_CASE("complex: a disk tangent to a line", "[complex]") {
   CHECK(c.cells.size() == 3);
   CHECK(c.outer_cell_count() == 2);
   REQUIRE(c.patches.size() == 3);
-  REQUIRE(c.junctions.size() == 1);
-  CHECK(c.junctions[0].patches.size() == 3);
+  // Junctions: the tangency point (3 patches) and the line's two ends on the box (1 patch each).
+  REQUIRE(c.junctions.size() == 3);
+  std::multiset<std::size_t> sizes;
+  int tangency = -1;
+  for (int j = 0; j < 3; ++j) {
+    sizes.insert(c.junctions[j].patches.size());
+    if (c.junctions[j].patches.size() == 3) tangency = j;
+  }
+  CHECK(sizes == std::multiset<std::size_t>{1, 1, 3});
   int line_patches = 0;
   for (const Patch& p : c.patches) {
     if (p.halfspace == 1) {
@@ -330,7 +405,7 @@ TEST_CASE("complex: a disk tangent to a line", "[complex]") {
       CHECK(c.cells[p.inside_cell].outer);
       CHECK(c.cells[p.outside_cell].outer);
     } else {
-      CHECK(p.junctions == std::vector<int>{0, 0});
+      CHECK(p.junctions == std::vector<int>{tangency, tangency});
       CHECK(close(p.measure, circumference(s.halfspaces[0]), 1e-30));
       CHECK(!c.cells[p.inside_cell].outer);
     }
@@ -426,9 +501,18 @@ TEST_CASE("complex: three concurrent lines", "[complex]") {
   CHECK(c.cells.size() == 6);
   CHECK(c.outer_cell_count() == 6);
   CHECK(c.patches.size() == 6);
-  REQUIRE(c.junctions.size() == 1);
-  CHECK(c.junctions[0].patches.size() == 6);
-  CHECK(a.arrangement.vertices().at(c.junctions[0].piece).degree == 6);
+  // Junctions: the common point (6 patches) and the six line ends on the box (1 patch each).
+  REQUIRE(c.junctions.size() == 7);
+  int centre = 0;
+  for (const Junction& j : c.junctions) {
+    if (j.patches.size() == 6) {
+      ++centre;
+      CHECK(a.arrangement.vertices().at(j.piece).degree == 6);
+    } else {
+      CHECK(j.patches.size() == 1);
+    }
+  }
+  CHECK(centre == 1);
 }
 
 TEST_CASE("complex: half-planes whose line only touches the box give no patch", "[complex]") {

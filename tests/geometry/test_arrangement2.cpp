@@ -23,6 +23,7 @@ SceneGenOptions degenerate_options() {
   SceneGenOptions o;
   o.max_halfspaces = 6;
   o.max_degeneracies = 2;
+  o.samples = true;
   return o;
 }
 
@@ -64,166 +65,202 @@ bool carries(const ArrEdge2& e, int h) { return std::binary_search(e.halfspaces.
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------------------------
-// Properties
+// Properties: checks of one scene, run on random scenes by the properties below
+
+namespace {
+
+/// V - E + F = 1 + C, degrees, edge/face incidences
+void check_structure(const Scene2& scene, const Arrangement2& arr) {
+  const int V = static_cast<int>(arr.vertices().size());
+  const int E = static_cast<int>(arr.edges().size());
+  const int F = static_cast<int>(arr.faces().size()) + 1;  // + the unbounded face outside the box
+  const int C = arr.connected_components();
+  RC_ASSERT(V - E + F == 1 + C);
+  RC_ASSERT(C >= 1);
+  RC_ASSERT(arr.halfspace_count() == static_cast<int>(scene.halfspaces.size()));
+  // Vertex degrees equal the incident edge counts (a loop would count twice; there are none).
+  std::vector<int> degree(V, 0);
+  for (const ArrEdge2& e : arr.edges()) {
+    RC_ASSERT(e.source >= 0 && e.source < V && e.target >= 0 && e.target < V);
+    RC_ASSERT(e.source != e.target);
+    ++degree[e.source];
+    ++degree[e.target];
+    RC_ASSERT(e.on_box || !e.halfspaces.empty());
+    RC_ASSERT(std::is_sorted(e.halfspaces.begin(), e.halfspaces.end()));
+    RC_ASSERT(std::adjacent_find(e.halfspaces.begin(), e.halfspaces.end()) == e.halfspaces.end());
+    // Exactly the box edges border the outside of the domain.
+    RC_ASSERT((e.left_face < 0 || e.right_face < 0) == e.on_box);
+    RC_ASSERT(e.left_face != e.right_face);
+    RC_ASSERT(e.length.sign() == std::optional<int>(1));
+  }
+  for (int v = 0; v < V; ++v) {
+    RC_ASSERT(arr.vertices()[v].degree == degree[v]);
+    RC_ASSERT(degree[v] >= 2);
+  }
+  // Every edge side that is a face is walked exactly once, by that face, with the face on the left.
+  std::map<std::pair<int, bool>, int> walked;
+  for (int f = 0; f < static_cast<int>(arr.faces().size()); ++f) {
+    const ArrFace2& face = arr.faces()[f];
+    RC_ASSERT(!face.boundary.empty());
+    for (const auto& cycle : face.boundary) {
+      RC_ASSERT(!cycle.empty());
+      for (std::size_t k = 0; k < cycle.size(); ++k) {
+        const auto [e, fwd] = cycle[k];
+        const ArrEdge2& edge = arr.edges().at(e);
+        RC_ASSERT((fwd ? edge.left_face : edge.right_face) == f);
+        ++walked[std::make_pair(e, fwd)];
+        // consecutive edges of a walk share a vertex
+        const auto [e2, fwd2] = cycle[(k + 1) % cycle.size()];
+        const int end = fwd ? edge.target : edge.source;
+        const int start = fwd2 ? arr.edges()[e2].source : arr.edges()[e2].target;
+        RC_ASSERT(end == start);
+      }
+    }
+  }
+  for (int e = 0; e < E; ++e) {
+    const ArrEdge2& edge = arr.edges()[e];
+    RC_ASSERT(walked[std::make_pair(e, true)] == (edge.left_face >= 0 ? 1 : 0));
+    RC_ASSERT(walked[std::make_pair(e, false)] == (edge.right_face >= 0 ? 1 : 0));
+  }
+}
+
+/// interior points locate to their face; sides and outer flags are right
+void check_faces(const Scene2& scene, const Arrangement2& arr) {
+  RC_ASSERT(!arr.faces().empty());
+  int outer = 0;
+  for (int f = 0; f < static_cast<int>(arr.faces().size()); ++f) {
+    const ArrFace2& face = arr.faces()[f];
+    const PointQ2& p = face.interior;
+    RC_ASSERT(scene.domain.min.x < p.x && p.x < scene.domain.max.x);
+    RC_ASSERT(scene.domain.min.y < p.y && p.y < scene.domain.max.y);
+    const PointLocation2 where = arr.locate(p);
+    RC_ASSERT(where.kind == PointLocation2::Face);
+    RC_ASSERT(where.index == f);
+    RC_ASSERT(face.inside.size() == scene.halfspaces.size());
+    for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
+      const int side = scene.halfspaces[i].side(p);
+      RC_ASSERT(side != 0);
+      RC_ASSERT(static_cast<int>(face.inside[i]) == (side > 0 ? 1 : 0));
+    }
+    bool touches_box = false;
+    for (const auto& cycle : face.boundary)
+      for (const auto& [e, fwd] : cycle) touches_box |= arr.edges()[e].on_box;
+    RC_ASSERT(face.outer == touches_box);
+    outer += face.outer;
+  }
+  RC_ASSERT(outer >= 1);
+}
+
+/// random points in the domain and on boundaries
+void check_location(const Scene2& scene, const Arrangement2& arr) {
+  std::vector<PointQ2> points = *rc::gen::container<std::vector<PointQ2>>(12, gen_point_in(scene.domain, 2));
+  // Points on boundaries reach the edge and vertex cases.
+  for (const Halfspace2& h : scene.halfspaces)
+    for (const PointQ2& p : boundary_points(h, scene.domain)) points.push_back(p);
+  for (const PointQ2& p : points) {
+    const PointLocation2 where = arr.locate(p);
+    RC_ASSERT(where.kind != PointLocation2::Outside);
+    switch (where.kind) {
+      case PointLocation2::Face: {
+        const ArrFace2& face = arr.faces().at(where.index);
+        for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
+          const int side = scene.halfspaces[i].side(p);
+          RC_ASSERT(side != 0);
+          RC_ASSERT(static_cast<int>(face.inside[i]) == (side > 0 ? 1 : 0));
+        }
+        break;
+      }
+      case PointLocation2::Edge: {
+        const ArrEdge2& edge = arr.edges().at(where.index);
+        RC_ASSERT(!edge.on_box);  // p is strictly inside the domain
+        for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i)
+          RC_ASSERT((scene.halfspaces[i].side(p) == 0) == carries(edge, i));
+        break;
+      }
+      case PointLocation2::Vertex: {
+        const ArrVertex2& v = arr.vertices().at(where.index);
+        RC_ASSERT(v.point.x == OneRoot(p.x));
+        RC_ASSERT(v.point.y == OneRoot(p.y));
+        // Every halfspace carried by an incident edge has p on its boundary.
+        for (int e : incident_edges(arr, where.index))
+          for (int i : arr.edges()[e].halfspaces) RC_ASSERT(scene.halfspaces[i].side(p) == 0);
+        break;
+      }
+      case PointLocation2::Outside:
+        break;
+    }
+  }
+}
+
+/// cells add up to the box; polygons to |signed_area|; disks to pi r^2
+void check_areas(const Scene2& scene, const Arrangement2& arr) {
+  const Box2& d = scene.domain;
+  Measure total;
+  for (const ArrFace2& f : arr.faces()) {
+    RC_ASSERT(f.area.sign() == std::optional<int>(1));
+    total += f.area;
+  }
+  RC_ASSERT(compare(total, Measure(Rational((d.max.x - d.min.x) * (d.max.y - d.min.y)))) == Order::Equal);
+  for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
+    const Halfspace2& h = scene.halfspaces[i];
+    if (h.kind == HalfspaceKind2::Halfplane) continue;
+    Measure in;  // area of the cells inside the polygon or disk itself (complement undone)
+    for (const ArrFace2& f : arr.faces())
+      if (static_cast<bool>(f.inside[i]) != h.complement) in += f.area;
+    if (h.kind == HalfspaceKind2::Polygon) {
+      RC_ASSERT(compare(in, Measure(abs(signed_area(h.vertices)))) == Order::Equal);
+    } else {
+      const Order o = compare(in, disk_area(h));
+      RC_ASSERT(o != Order::Less);
+      RC_ASSERT(o != Order::Greater);
+      RC_ASSERT(encloses_same(in, disk_area(h)));
+    }
+  }
+}
+
+}  // namespace
 
 TEST_CASE("arrangement2: Euler's relation and structure on random scenes", "[arrangement2][property]") {
   rc::prop("V - E + F = 1 + C, degrees, edge/face incidences", [] {
     const Scene2 scene = *gen_scene(degenerate_options());
-    const Arrangement2 arr = Arrangement2::build(scene);
-    const int V = static_cast<int>(arr.vertices().size());
-    const int E = static_cast<int>(arr.edges().size());
-    const int F = static_cast<int>(arr.faces().size()) + 1;  // + the unbounded face outside the box
-    const int C = arr.connected_components();
-    RC_ASSERT(V - E + F == 1 + C);
-    RC_ASSERT(C >= 1);
-    RC_ASSERT(arr.halfspace_count() == static_cast<int>(scene.halfspaces.size()));
-    // Vertex degrees equal the incident edge counts (a loop would count twice; there are none).
-    std::vector<int> degree(V, 0);
-    for (const ArrEdge2& e : arr.edges()) {
-      RC_ASSERT(e.source >= 0 && e.source < V && e.target >= 0 && e.target < V);
-      RC_ASSERT(e.source != e.target);
-      ++degree[e.source];
-      ++degree[e.target];
-      RC_ASSERT(e.on_box || !e.halfspaces.empty());
-      RC_ASSERT(std::is_sorted(e.halfspaces.begin(), e.halfspaces.end()));
-      RC_ASSERT(std::adjacent_find(e.halfspaces.begin(), e.halfspaces.end()) == e.halfspaces.end());
-      // Exactly the box edges border the outside of the domain.
-      RC_ASSERT((e.left_face < 0 || e.right_face < 0) == e.on_box);
-      RC_ASSERT(e.left_face != e.right_face);
-      RC_ASSERT(e.length.sign() == std::optional<int>(1));
-    }
-    for (int v = 0; v < V; ++v) {
-      RC_ASSERT(arr.vertices()[v].degree == degree[v]);
-      RC_ASSERT(degree[v] >= 2);
-    }
-    // Every edge side that is a face is walked exactly once, by that face, with the face on the left.
-    std::map<std::pair<int, bool>, int> walked;
-    for (int f = 0; f < static_cast<int>(arr.faces().size()); ++f) {
-      const ArrFace2& face = arr.faces()[f];
-      RC_ASSERT(!face.boundary.empty());
-      for (const auto& cycle : face.boundary) {
-        RC_ASSERT(!cycle.empty());
-        for (std::size_t k = 0; k < cycle.size(); ++k) {
-          const auto [e, fwd] = cycle[k];
-          const ArrEdge2& edge = arr.edges().at(e);
-          RC_ASSERT((fwd ? edge.left_face : edge.right_face) == f);
-          ++walked[{e, fwd}];
-          // consecutive edges of a walk share a vertex
-          const auto [e2, fwd2] = cycle[(k + 1) % cycle.size()];
-          const int end = fwd ? edge.target : edge.source;
-          const int start = fwd2 ? arr.edges()[e2].source : arr.edges()[e2].target;
-          RC_ASSERT(end == start);
-        }
-      }
-    }
-    for (int e = 0; e < E; ++e) {
-      const ArrEdge2& edge = arr.edges()[e];
-      RC_ASSERT(walked[{e, true}] == (edge.left_face >= 0 ? 1 : 0));
-      RC_ASSERT(walked[{e, false}] == (edge.right_face >= 0 ? 1 : 0));
-    }
+    check_structure(scene, Arrangement2::build(scene));
   });
 }
 
 TEST_CASE("arrangement2: faces agree with direct evaluation on random scenes", "[arrangement2][property]") {
   rc::prop("interior points locate to their face; sides and outer flags are right", [] {
     const Scene2 scene = *gen_scene(degenerate_options());
-    const Arrangement2 arr = Arrangement2::build(scene);
-    RC_ASSERT(!arr.faces().empty());
-    int outer = 0;
-    for (int f = 0; f < static_cast<int>(arr.faces().size()); ++f) {
-      const ArrFace2& face = arr.faces()[f];
-      const PointQ2& p = face.interior;
-      RC_ASSERT(scene.domain.min.x < p.x && p.x < scene.domain.max.x);
-      RC_ASSERT(scene.domain.min.y < p.y && p.y < scene.domain.max.y);
-      const PointLocation2 where = arr.locate(p);
-      RC_ASSERT(where.kind == PointLocation2::Face);
-      RC_ASSERT(where.index == f);
-      RC_ASSERT(face.inside.size() == scene.halfspaces.size());
-      for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
-        const int side = scene.halfspaces[i].side(p);
-        RC_ASSERT(side != 0);
-        RC_ASSERT(static_cast<int>(face.inside[i]) == (side > 0 ? 1 : 0));
-      }
-      bool touches_box = false;
-      for (const auto& cycle : face.boundary)
-        for (const auto& [e, fwd] : cycle) touches_box |= arr.edges()[e].on_box;
-      RC_ASSERT(face.outer == touches_box);
-      outer += face.outer;
-    }
-    RC_ASSERT(outer >= 1);
+    check_faces(scene, Arrangement2::build(scene));
   });
 }
 
 TEST_CASE("arrangement2: point location agrees with exact side tests", "[arrangement2][property]") {
   rc::prop("random points in the domain and on boundaries", [] {
     const Scene2 scene = *gen_scene(degenerate_options());
-    const Arrangement2 arr = Arrangement2::build(scene);
-    std::vector<PointQ2> points = *rc::gen::container<std::vector<PointQ2>>(12, gen_point_in(scene.domain, 2));
-    // Points on boundaries reach the edge and vertex cases.
-    for (const Halfspace2& h : scene.halfspaces)
-      for (const PointQ2& p : boundary_points(h, scene.domain)) points.push_back(p);
-    for (const PointQ2& p : points) {
-      const PointLocation2 where = arr.locate(p);
-      RC_ASSERT(where.kind != PointLocation2::Outside);
-      switch (where.kind) {
-        case PointLocation2::Face: {
-          const ArrFace2& face = arr.faces().at(where.index);
-          for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
-            const int side = scene.halfspaces[i].side(p);
-            RC_ASSERT(side != 0);
-            RC_ASSERT(static_cast<int>(face.inside[i]) == (side > 0 ? 1 : 0));
-          }
-          break;
-        }
-        case PointLocation2::Edge: {
-          const ArrEdge2& edge = arr.edges().at(where.index);
-          RC_ASSERT(!edge.on_box);  // p is strictly inside the domain
-          for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i)
-            RC_ASSERT((scene.halfspaces[i].side(p) == 0) == carries(edge, i));
-          break;
-        }
-        case PointLocation2::Vertex: {
-          const ArrVertex2& v = arr.vertices().at(where.index);
-          RC_ASSERT(v.point.x == OneRoot(p.x));
-          RC_ASSERT(v.point.y == OneRoot(p.y));
-          // Every halfspace carried by an incident edge has p on its boundary.
-          for (int e : incident_edges(arr, where.index))
-            for (int i : arr.edges()[e].halfspaces) RC_ASSERT(scene.halfspaces[i].side(p) == 0);
-          break;
-        }
-        case PointLocation2::Outside:
-          break;
-      }
-    }
+    check_location(scene, Arrangement2::build(scene));
   });
 }
 
 TEST_CASE("arrangement2: exact areas on random scenes", "[arrangement2][property]") {
   rc::prop("cells add up to the box; polygons to |signed_area|; disks to pi r^2", [] {
     const Scene2 scene = *gen_scene(degenerate_options());
+    check_areas(scene, Arrangement2::build(scene));
+  });
+}
+
+TEST_CASE("arrangement2: all properties on larger scenes", "[.][stress][arrangement2]") {
+  // Hidden (run with "[stress]"): more halfspaces and degeneracies than the default suite.
+  rc::prop("larger scenes", [] {
+    SceneGenOptions o = degenerate_options();
+    o.max_halfspaces = 12;
+    o.max_degeneracies = 5;
+    o.samples = true;
+    const Scene2 scene = *gen_scene(o);
     const Arrangement2 arr = Arrangement2::build(scene);
-    const Box2& d = scene.domain;
-    Measure total;
-    for (const ArrFace2& f : arr.faces()) {
-      RC_ASSERT(f.area.sign() == std::optional<int>(1));
-      total += f.area;
-    }
-    RC_ASSERT(compare(total, Measure(Rational((d.max.x - d.min.x) * (d.max.y - d.min.y)))) == Order::Equal);
-    for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
-      const Halfspace2& h = scene.halfspaces[i];
-      if (h.kind == HalfspaceKind2::Halfplane) continue;
-      Measure in;  // area of the cells inside the polygon or disk itself (complement undone)
-      for (const ArrFace2& f : arr.faces())
-        if (static_cast<bool>(f.inside[i]) != h.complement) in += f.area;
-      if (h.kind == HalfspaceKind2::Polygon) {
-        RC_ASSERT(compare(in, Measure(abs(signed_area(h.vertices)))) == Order::Equal);
-      } else {
-        const Order o = compare(in, disk_area(h));
-        RC_ASSERT(o != Order::Less);
-        RC_ASSERT(o != Order::Greater);
-        RC_ASSERT(encloses_same(in, disk_area(h)));
-      }
-    }
+    check_structure(scene, arr);
+    check_faces(scene, arr);
+    check_location(scene, arr);
+    check_areas(scene, arr);
   });
 }
 
@@ -330,8 +367,8 @@ TEST_CASE("arrangement2: two crossing disks", "[arrangement2]") {
   CHECK(!f.outer);
   // 8pi/3 - 2sqrt(3) = 4.913478870...
   const Interval a = f.area.enclose(128);
-  CHECK(a.lo_double() > 4.9134788);
-  CHECK(a.hi_double() < 4.9134789);
+  CHECK(a.lo_double() > 4.9134787944);
+  CHECK(a.hi_double() < 4.9134787945);
   const PointLocation2 out = arr.locate(pt(5, 3));
   REQUIRE(out.kind == PointLocation2::Face);
   CHECK(arr.faces()[out.index].outer);

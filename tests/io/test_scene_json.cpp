@@ -541,6 +541,12 @@ TEST_CASE("scene files: errors carry the path", "[scene_json]") {
   } catch (const InputError& e) {
     CHECK_THAT(e.what(), Catch::StartsWith(path + ": cannot open file"));
   }
+  try {
+    read_scene_file("/tmp");
+    FAIL("expected an error");
+  } catch (const InputError& e) {
+    CHECK(std::string(e.what()) == "/tmp: is a directory, not a file");
+  }
 }
 
 // ---------------------------------------------------------------------------------------------------------------

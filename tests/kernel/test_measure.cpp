@@ -89,6 +89,13 @@ rc::Gen<Terms> gen_few_terms() {
       [](std::vector<std::pair<int, unsigned>> v) { return Terms{std::move(v)}; });
 }
 
+Integer isqrt_exact(const Integer& z) {
+  Integer r;
+  mpz_sqrt(r.get_mpz_t(), z.get_mpz_t());
+  REQUIRE(r * r == z);
+  return r;
+}
+
 Order flip(Order o) {
   if (o == Order::Less) return Order::Greater;
   if (o == Order::Greater) return Order::Less;
@@ -162,6 +169,26 @@ TEST_CASE("radicands with large square factors are grouped exactly", "[measure]"
   CHECK(m.is_zero());
   const Measure n = Measure::sqrt_of(Rational(k1)) + Measure::sqrt_of(Rational(k2));
   CHECK(compare(n, Measure::sqrt_of(Rational(Integer(q) * r)) * Rational(p + s)) == Order::Equal);
+  // every branch of the radicand reduction: cofactor a prime square below 1009^3, a prime square above it,
+  // p^2 q below 2^64 behind small factors pushing the radicand above 2^64, and the same with the terms swapped.
+  const std::vector<std::pair<Integer, Integer>> cases = {
+      {Integer(2) * 1013 * 1013, Integer(2)},                        // 2 * 1013^2 -> 1013*sqrt(2)
+      {Integer(6) * 1000003 * 1000003, Integer(6)},                  // cofactor 1000003^2 (a square)
+      {Integer(1024) * p * p * q, Integer(q)},                        // > 2^64, cofactor p^2 q < 2^64
+      {Integer(3) * 1024 * p * p * q * 1009, Integer(3) * q * 1009},  // > 2^64, mixed
+      {Integer(1093) * 1093 * 3511 * 3511 * 5, Integer(5)},           // Wieferich squares
+  };
+  for (const auto& [k, rest] : cases) {
+    INFO("k = " << k.get_str());
+    const Integer m = isqrt_exact(k / rest);
+    const Measure whole = Measure::sqrt_of(Rational(k));
+    const Measure part = Measure::sqrt_of(Rational(rest)) * Rational(m);
+    CHECK((whole - part).is_zero());
+    CHECK((part - whole).is_zero());
+    // alone, a radicand with an unproven square factor may keep it; once both spellings met, the smaller wins
+    CHECK(*(whole + part).exact_string() == *(part * Rational(2)).exact_string());
+    CHECK(*(part + whole).exact_string() == *(part * Rational(2)).exact_string());
+  }
   // products of radicands: sqrt(k1) * sqrt(k2) is rational
   const Measure prod = Measure::product(OneRoot(R(0), R(1), Rational(k1)), OneRoot(R(0), R(1), Rational(k2)));
   REQUIRE(prod.rational_value());

@@ -15,17 +15,17 @@ const std::vector<std::pair<int, int>> kUnitNumerators5 = {{5, 0}, {0, 5}, {-5, 
                                                            {-3, 4}, {-4, 3}, {3, -4}, {4, -3}, {-3, -4}, {-4, -3}};
 const std::vector<std::pair<int, int>> kUnitNumerators13 = {{5, 12}, {12, 5}, {-5, 12}, {-12, -5}, {12, -5}};
 
+/// n/d, canonical (a non-canonical mpq breaks equality and exact text).
+Rational frac(long n, long d) { return make_rational(Integer(n), Integer(d)); }
+
 PointQ2 unit(int index) {
   const int n5 = static_cast<int>(kUnitNumerators5.size());
   if (index < n5) {
     auto [a, b] = kUnitNumerators5[index];
-    return {Rational(a, 5), Rational(b, 5)};
+    return {frac(a, 5), frac(b, 5)};
   }
   auto [a, b] = kUnitNumerators13[index - n5];
-  PointQ2 u{Rational(a, 13), Rational(b, 13)};
-  u.x.canonicalize();
-  u.y.canonicalize();
-  return u;
+  return {frac(a, 13), frac(b, 13)};
 }
 int unit_count() { return static_cast<int>(kUnitNumerators5.size() + kUnitNumerators13.size()); }
 
@@ -35,11 +35,15 @@ const std::pair<int, int> kDirections[16] = {{1, 0},  {2, 1},   {1, 1},   {1, 2}
                                              {-1, 1}, {-2, 1},  {-1, 0},  {-2, -1}, {-1, -1}, {-1, -2},
                                              {0, -1}, {1, -2},  {1, -1},  {2, -1}};
 
+/// Uniform integer in [lo, hi): rapidcheck's inRange scales its range with the test size, which would pin the
+/// first tests to lo (every point at the same corner); the geometry must be uniform from the first test on.
+int uniform(int lo, int hi) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi)); }
+rc::Gen<int> uniform_gen(int lo, int hi) { return rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi)); }
+
 PointQ2 add(const PointQ2& a, const PointQ2& b) { return {a.x + b.x, a.y + b.y}; }
 PointQ2 sub(const PointQ2& a, const PointQ2& b) { return {a.x - b.x, a.y - b.y}; }
 PointQ2 scale(const PointQ2& a, const Rational& s) { return {a.x * s, a.y * s}; }
 Rational dot(const PointQ2& a, const PointQ2& b) { return a.x * b.x + a.y * b.y; }
-Rational cross(const PointQ2& a, const PointQ2& b) { return a.x * b.y - a.y * b.x; }
 
 Rational floor_q(const Rational& v) {
   Integer r;
@@ -63,20 +67,20 @@ class Builder {
 
   Rational coord() const {
     const int n = o_.coordinate_bound * o_.denominator;
-    return make_rational(Integer(*rc::gen::inRange(-n, n + 1)), Integer(o_.denominator));
+    return make_rational(Integer(uniform(-n, n + 1)), Integer(o_.denominator));
   }
   PointQ2 point() const { return {coord(), coord()}; }
   /// A positive multiple of 1/denominator in (0, max].
   Rational positive(int max) const {
-    return make_rational(Integer(*rc::gen::inRange(1, max * o_.denominator + 1)), Integer(o_.denominator));
+    return make_rational(Integer(uniform(1, max * o_.denominator + 1)), Integer(o_.denominator));
   }
-  PointQ2 unit_vector() const { return unit(*rc::gen::inRange(0, unit_count())); }
+  PointQ2 unit_vector() const { return unit(uniform(0, unit_count())); }
   PointQ2 small_normal() const {
-    int a = *rc::gen::inRange(-3, 4), b = *rc::gen::inRange(-3, 4);
+    int a = uniform(-3, 4), b = uniform(-3, 4);
     if (a == 0 && b == 0) a = 1;
     return {Rational(a), Rational(b)};
   }
-  bool coin(int one_in) const { return *rc::gen::inRange(0, one_in) == 0; }
+  bool coin(int one_in) const { return uniform(0, one_in) == one_in - 1; }  // shrinks to false
   bool maybe_complement() const { return o_.complements && coin(4); }
 
   std::string name(char letter) { return std::string(1, letter) + std::to_string(next_name_++); }
@@ -107,21 +111,21 @@ class Builder {
     return add_halfspace(polygon(name('P'), std::move(v), maybe_complement()), std::move(anchors));
   }
   std::vector<PointQ2> random_polygon_vertices() const {
-    switch (*rc::gen::inRange(0, 3)) {
+    switch (uniform(0, 3)) {
       case 0: {  // star-shaped around c: directions at sorted indices with gaps in [1, 7] (angular gap < pi)
         const PointQ2 c = point();
-        const int k = *rc::gen::inRange(3, 7);
+        const int k = uniform(3, 7);
         const int hi = k == 3 ? 7 : k == 4 ? 6 : k == 5 ? 5 : 4;
-        const auto gaps = *rc::gen::suchThat(rc::gen::container<std::vector<int>>(k - 1, rc::gen::inRange(1, hi + 1)),
+        const auto gaps = *rc::gen::suchThat(rc::gen::container<std::vector<int>>(k - 1, uniform_gen(1, hi + 1)),
                                              [](const std::vector<int>& g) {
                                                const int s = std::accumulate(g.begin(), g.end(), 0);
                                                return s >= 9 && s <= 15;  // last gap 16 - s in [1, 7]
                                              });
-        int index = *rc::gen::inRange(0, 16);
+        int index = uniform(0, 16);
         std::vector<PointQ2> v;
         for (int j = 0; j < k; ++j) {
           const auto [dx, dy] = kDirections[index % 16];
-          const Rational t(*rc::gen::inRange(1, 5), 2);  // 1/2, 1, 3/2, 2
+          const Rational t = frac(uniform(1, 5), 2);  // 1/2, 1, 3/2, 2
           v.push_back(add(c, scale(PointQ2{Rational(dx), Rational(dy)}, t)));
           if (j + 1 < k) index += gaps[j];
         }
@@ -136,15 +140,15 @@ class Builder {
         const PointQ2 a = point();
         const PointQ2 b = add(a, PointQ2{positive(3), positive(3)});
         std::vector<PointQ2> v = {a, {b.x, a.y}, b, {a.x, b.y}};
-        std::rotate(v.begin(), v.begin() + *rc::gen::inRange(0, 4), v.end());
+        std::rotate(v.begin(), v.begin() + uniform(0, 4), v.end());
         if (coin(2)) std::reverse(v.begin(), v.end());
         return v;
       }
       default: {  // triangle
         const PointQ2 a = point();
-        const auto ds = *rc::gen::suchThat(rc::gen::container<std::vector<int>>(4, rc::gen::inRange(-4, 5)),
+        const auto ds = *rc::gen::suchThat(rc::gen::container<std::vector<int>>(4, uniform_gen(-4, 5)),
                                            [](const std::vector<int>& d) { return d[0] * d[3] - d[1] * d[2] != 0; });
-        const Rational s(1, o_.denominator);
+        const Rational s = frac(1, o_.denominator);
         return {a, add(a, scale(PointQ2{Rational(ds[0]), Rational(ds[1])}, s)),
                 add(a, scale(PointQ2{Rational(ds[2]), Rational(ds[3])}, s))};
       }
@@ -203,7 +207,7 @@ class Builder {
     const int n = static_cast<int>(scene_.halfspaces.size());
     switch (d) {
       case Degeneracy::RepeatedHalfspace: {
-        const int i = *rc::gen::inRange(0, n);
+        const int i = uniform(0, n);
         Halfspace2 h = scene_.halfspaces[i];
         h.name = name(h.name[0]);
         add_halfspace(std::move(h), {});  // the original's anchors already count
@@ -213,7 +217,7 @@ class Builder {
         std::vector<int> disks;
         for (int i = 0; i < n; ++i)
           if (scene_.halfspaces[i].kind == HalfspaceKind2::Disk) disks.push_back(i);
-        const int i = disks.empty() ? *rc::gen::inRange(0, n) : *rc::gen::elementOf(disks);
+        const int i = disks.empty() ? uniform(0, n) : *rc::gen::elementOf(disks);
         Halfspace2 h = scene_.halfspaces[i];
         h.name = name(h.name[0]);
         h.complement = !h.complement;
@@ -226,7 +230,7 @@ class Builder {
         disk_at(c, r);
         // Tangent at c + r*u, normal u: u . x = u . c + r. u = (0, 1) gives y = b + r.
         const PointQ2 u = coin(2) ? unit(1) : unit_vector();
-        line_through(add(c, scale(u, r)), scale(u, Rational(*rc::gen::inRange(1, 4))));
+        line_through(add(c, scale(u, r)), scale(u, Rational(uniform(1, 4))));
         break;
       }
       case Degeneracy::DisksTangentOutside: {
@@ -238,7 +242,7 @@ class Builder {
       }
       case Degeneracy::DisksTangentInside: {
         const PointQ2 c = point();
-        const int k1 = *rc::gen::inRange(2, 3 * o_.denominator + 1), k2 = *rc::gen::inRange(1, k1);
+        const int k1 = uniform(2, 3 * o_.denominator + 1), k2 = uniform(1, k1);
         const Rational r1 = make_rational(Integer(k1), Integer(o_.denominator));
         const Rational r2 = make_rational(Integer(k2), Integer(o_.denominator));  // 0 < r2 < r1
         disk_at(c, r1);
@@ -253,7 +257,7 @@ class Builder {
         std::iota(left.begin(), left.end(), 0);
         std::vector<int> dirs;
         for (int k = 0; k < lines; ++k) {
-          const int j = *rc::gen::inRange(0, static_cast<int>(left.size()));
+          const int j = uniform(0, static_cast<int>(left.size()));
           dirs.push_back(left[j]);
           left.erase(left.begin() + j);
         }
@@ -280,7 +284,7 @@ class Builder {
       }
       case Degeneracy::HalfplaneOnPolygonEdge: {
         auto v = random_polygon_vertices();
-        const int k = *rc::gen::inRange(0, static_cast<int>(v.size()));
+        const int k = uniform(0, static_cast<int>(v.size()));
         const PointQ2 a = v[k], b = v[(k + 1) % v.size()];
         polygon_from(v);
         const PointQ2 d = sub(b, a);
@@ -292,7 +296,7 @@ class Builder {
         const PointQ2 a = point();
         const Rational x1 = a.x + positive(2), x2 = x1 + positive(2);
         const Rational y1 = a.y + positive(3);
-        const Rational y2 = a.y + make_rational(Integer(*rc::gen::inRange(-2 * o_.denominator, 2 * o_.denominator)),
+        const Rational y2 = a.y + make_rational(Integer(uniform(-2 * o_.denominator, 2 * o_.denominator)),
                                                 Integer(o_.denominator));
         const Rational y3 = std::max(y2, a.y) + positive(2);
         polygon_from({a, {x1, a.y}, {x1, y1}, {a.x, y1}});
@@ -374,18 +378,18 @@ rc::Gen<Scene2> gen_scene(const SceneGenOptions& options) {
       if (b.applicable(d)) pool.push_back(d);
     std::vector<Degeneracy> patterns;
     if (!pool.empty() && options.max_degeneracies > 0) {
-      const int count = *rc::gen::inRange(std::max(0, options.min_degeneracies), options.max_degeneracies + 1);
+      const int count = uniform(std::max(0, options.min_degeneracies), options.max_degeneracies + 1);
       for (int k = 0; k < count; ++k) patterns.push_back(*rc::gen::elementOf(pool));
     }
     int pattern_cost = 0;
     for (Degeneracy d : patterns) pattern_cost += Builder::cost(d);
     const int max_total = std::max(1, options.max_halfspaces);
-    const int base = *rc::gen::inRange(1, std::max(1, max_total - pattern_cost) + 1);
+    const int base = uniform(1, std::max(1, max_total - pattern_cost) + 1);
     for (int k = 0; k < base; ++k) b.random_halfspace();
     for (Degeneracy d : patterns)
       if (b.count() + Builder::cost(d) <= max_total) b.apply(d, max_total - b.count());
-    const int m1 = *rc::gen::inRange(1, 3), m2 = *rc::gen::inRange(1, 3), m3 = *rc::gen::inRange(1, 3),
-              m4 = *rc::gen::inRange(1, 3);
+    const int m1 = uniform(1, 3), m2 = uniform(1, 3), m3 = uniform(1, 3),
+              m4 = uniform(1, 3);
     Scene2 scene = b.finish_geometry(m1, m2, m3, m4);
     if (!options.samples || options.max_samples <= 0) return scene;
 
@@ -396,9 +400,9 @@ rc::Gen<Scene2> gen_scene(const SceneGenOptions& options) {
       for (const PointQ2& p : sample_candidates(scene, arr, i))
         if (sample_fits(arr, i, p)) fitting.emplace_back(i, p);
     if (fitting.empty()) return scene;
-    const int count = *rc::gen::inRange(0, options.max_samples + 1);
+    const int count = uniform(0, options.max_samples + 1);
     for (int k = 0; k < count; ++k) {
-      const auto& [i, p] = fitting[*rc::gen::inRange(0, static_cast<int>(fitting.size()))];
+      const auto& [i, p] = fitting[uniform(0, static_cast<int>(fitting.size()))];
       const Halfspace2& h = scene.halfspaces[i];
       Sample2 s;
       s.halfspace = i;
@@ -407,9 +411,9 @@ rc::Gen<Scene2> gen_scene(const SceneGenOptions& options) {
         // A point off the boundary whose nearest boundary point is exactly p.
         s.snapped = true;
         if (h.kind == HalfspaceKind2::Halfplane) {
-          s.given = add(p, scale(h.normal, *rc::gen::element(Rational(1, 2), Rational(-1), Rational(1))));
+          s.given = add(p, scale(h.normal, *rc::gen::element(frac(1, 2), Rational(-1), Rational(1))));
         } else {
-          s.given = add(h.center, scale(sub(p, h.center), *rc::gen::element(Rational(1, 2), Rational(2))));
+          s.given = add(h.center, scale(sub(p, h.center), *rc::gen::element(frac(1, 2), Rational(2))));
         }
       }
       scene.samples.push_back(s);
@@ -425,7 +429,7 @@ rc::Gen<PointQ2> gen_point_in(const Box2& box, int denominator) {
       // multiples of 1/denominator strictly between lo and hi; the midpoint when there is none
       const Rational a = floor_q(lo * denominator) + 1, b = ceil_q(hi * denominator) - 1;
       if (a > b) return Rational((lo + hi) / 2);
-      const long k = *rc::gen::inRange(a.get_num().get_si(), b.get_num().get_si() + 1);
+      const long k = uniform(a.get_num().get_si(), b.get_num().get_si() + 1);
       return make_rational(Integer(k), Integer(denominator));
     };
     return PointQ2{coordinate(box.min.x, box.max.x), coordinate(box.min.y, box.max.y)};
@@ -442,7 +446,7 @@ std::vector<PointQ2> boundary_points(const Halfspace2& h, const Box2& box) {
       const PointQ2 p = sub(c, scale(h.normal, t0));
       const PointQ2 d{-h.normal.y, h.normal.x};
       for (int k : {0, 1, -1, 2, -2, 3, -3}) {
-        for (const Rational& t : {Rational(k), Rational(k, 2)}) {
+        for (const Rational& t : {Rational(k), frac(k, 2)}) {
           PointQ2 x = add(p, scale(d, t));
           x.x.canonicalize();
           x.y.canonicalize();
@@ -460,8 +464,8 @@ std::vector<PointQ2> boundary_points(const Halfspace2& h, const Box2& box) {
         const PointQ2& a = h.vertices[k];
         const PointQ2& b = h.vertices[(k + 1) % n];
         out.push_back(a);
-        out.push_back(scale(add(a, b), Rational(1, 2)));
-        out.push_back(add(a, scale(sub(b, a), Rational(1, 3))));
+        out.push_back(scale(add(a, b), frac(1, 2)));
+        out.push_back(add(a, scale(sub(b, a), frac(1, 3))));
       }
       break;
     }

@@ -10,5 +10,6 @@ void add_arrange_command(CLI::App& app);
 void add_extract_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_csg_commands(CLI::App& app);
 
 }  // namespace hsx::cli

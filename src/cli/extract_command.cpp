@@ -41,6 +41,7 @@ std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bs
   if (r.method == bsh::Method::Beam) out << " (K = " << std::max(1, o.beam_width) << ")";
   out << "  optimal " << (r.optimal ? "yes (proven)" : "not proven");
   if (!r.stopped_by.empty()) out << "  stopped by " << r.stopped_by;
+  if (!r.optimality_note.empty()) out << " (" << r.optimality_note << ")";
   out << "\nenergy " << energy_text(r.energy) << "\n";
   const Measure area = bsh::inside_measure(in.complex(), r.labelling);
   out << (in.complex().dimension == 3 ? "volume " : "area ") << area.decimal_string(30);

@@ -39,6 +39,9 @@ struct ArrEdge2 {
   PointQ2 center;                 ///< arc only: supporting circle
   Rational radius;                ///< arc only
   bool ccw = false;               ///< arc only: source -> target runs counter-clockwise
+  /// segment only: the supporting line a*x + b*y + c = 0 with rational coefficients (all zero when unknown,
+  /// e.g. read from a document)
+  Rational line_a, line_b, line_c;
   Measure length;
 };
 

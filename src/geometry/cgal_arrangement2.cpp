@@ -195,6 +195,12 @@ Arrangement2 Arrangement2::build(const Scene2& scene) {
     std::sort(edge.halfspaces.begin(), edge.halfspaces.end());
     edge.halfspaces.erase(std::unique(edge.halfspaces.begin(), edge.halfspaces.end()), edge.halfspaces.end());
     const XCurve& cv = h->curve();
+    if (cv.is_linear()) {
+      const auto line = cv.supporting_line();
+      edge.line_a = line.a();
+      edge.line_b = line.b();
+      edge.line_c = line.c();
+    }
     if (cv.is_circular()) {
       edge.shape = EdgeShape2::Arc;
       const auto circle = cv.supporting_circle();

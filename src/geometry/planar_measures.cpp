@@ -2,8 +2,30 @@
 
 namespace hsx {
 
+namespace {
+
+/// |q - p| along the rational line a x + b y + c = 0 (b != 0): |dx| * sqrt(a^2 + b^2) / |b|, an exact sum of
+/// square roots even when p and q carry different radicals (two circles cutting one segment); with b == 0, |dy|.
+Measure length_on_line(const ArrEdge2& e, const OneRootPoint& p, const OneRootPoint& q) {
+  const bool vertical = e.line_b == 0;
+  const OneRoot& u0 = vertical ? p.y : p.x;
+  const OneRoot& u1 = vertical ? q.y : q.x;
+  const Rational scale = vertical ? Rational(1) : (e.line_a * e.line_a + e.line_b * e.line_b) / (e.line_b * e.line_b);
+  const int sign = compare(u1, u0) >= 0 ? 1 : -1;
+  // sign * (u1 - u0) * sqrt(scale), term by term: (a0 + a1 sqrt(r)) sqrt(s) = a0 sqrt(s) + a1 sqrt(r s).
+  Measure m = Measure::sqrt_of(scale) * Rational(sign * (u1.a0 - u0.a0));
+  if (!u1.is_rational()) m += Measure::sqrt_of(u1.root * scale) * Rational(sign * u1.a1);
+  if (!u0.is_rational()) m -= Measure::sqrt_of(u0.root * scale) * Rational(sign * u0.a1);
+  return m;
+}
+
+}  // namespace
+
 Measure edge_length(const ArrEdge2& edge, const OneRootPoint& from, const OneRootPoint& to) {
-  if (edge.shape == EdgeShape2::Segment) return Measure::distance(from, to);
+  if (edge.shape == EdgeShape2::Segment) {
+    if (edge.line_a == 0 && edge.line_b == 0) return Measure::distance(from, to);  // line unknown
+    return length_on_line(edge, from, to);
+  }
   return edge.ccw ? Measure::arc_angle(edge.center, edge.radius, from, to, edge.radius)
                   : Measure::arc_angle(edge.center, edge.radius, to, from, edge.radius);
 }

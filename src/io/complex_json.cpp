@@ -457,7 +457,7 @@ void read_geometry(const JsonField& g, const Names& names, std::size_t cell_coun
     ArrEdge2& edge = doc.edges[k];
     const std::string shape = e.at("shape").string();
     if (shape == "segment") {
-      e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape"},
+      e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape", "line"},
                    "a segment edge");
       edge.shape = EdgeShape2::Segment;
     } else if (shape == "arc") {
@@ -492,6 +492,19 @@ void read_geometry(const JsonField& g, const Names& names, std::size_t cell_coun
     const OneRootPoint& q = doc.vertices[edge.target].point;
     if (edge.shape == EdgeShape2::Segment) {
       if (edge.source == edge.target || same_point(p, q)) e.fail("a segment whose source and target coincide");
+      if (auto line = e.get("line")) {
+        // Optional supporting line a*x + b*y + c = 0; it makes lengths exact sums of square roots.
+        if (line->size() != 3) line->fail("expected [a, b, c]");
+        edge.line_a = line->at(0).rational();
+        edge.line_b = line->at(1).rational();
+        edge.line_c = line->at(2).rational();
+        if (edge.line_a == 0 && edge.line_b == 0) line->fail("a and b are both zero");
+        for (const OneRootPoint* v : {&p, &q}) {
+          Measure value = Measure::product(OneRoot(edge.line_a), v->x) + Measure::product(OneRoot(edge.line_b), v->y) +
+                          Measure(edge.line_c);
+          if (!value.is_zero()) line->fail("an end point of the segment is not on this line");
+        }
+      }
     } else {
       edge.center = e.at("center").point2();
       edge.radius = e.at("radius").rational();
@@ -1034,6 +1047,8 @@ json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2*
       j["right_face"] = e.right_face;
       if (e.shape == EdgeShape2::Segment) {
         j["shape"] = "segment";
+        if (e.line_a != 0 || e.line_b != 0)
+          j["line"] = json::array({exact_string(e.line_a), exact_string(e.line_b), exact_string(e.line_c)});
       } else {
         j["shape"] = "arc";
         j["center"] = exact_pair(e.center.x, e.center.y);

@@ -1,6 +1,7 @@
 #include "io/result_json.hpp"
 
 #include "io/json_values.hpp"
+#include "geometry/scene.hpp"
 
 namespace hsx {
 
@@ -11,6 +12,23 @@ std::vector<int> patches_of_supports(const Complex& complex, const std::vector<c
       for (int p : complex.supports[g]) out.push_back(p);
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::vector<char> read_result_labelling(const nlohmann::json& doc, int cell_count) {
+  if (!doc.is_object() || !doc.contains("format") || doc.at("format") != kResultFormat)
+    throw InputError("format: expected \"" + std::string(kResultFormat) + "\"");
+  if (!doc.contains("inside_cells") || !doc.at("inside_cells").is_array())
+    throw InputError("inside_cells: expected an array of cell ids");
+  std::vector<char> labelling(cell_count, 0);
+  const auto& cells = doc.at("inside_cells");
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const auto& v = cells[k];
+    if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= cell_count)
+      throw InputError("inside_cells[" + std::to_string(k) + "]: not a cell of this scene's arrangement (it has " +
+                       std::to_string(cell_count) + " cells); was the result computed from another scene?");
+    labelling[v.get<long long>()] = 1;
+  }
+  return labelling;
 }
 
 namespace {
@@ -73,6 +91,7 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
   j["method"] = bsh::to_string(r.method);
   j["optimal"] = r.optimal;
   if (!r.stopped_by.empty()) j["stopped_by"] = r.stopped_by;
+  if (!r.optimality_note.empty()) j["optimality_note"] = r.optimality_note;
   j["energy"] = {{"missing_samples", r.energy.missing_samples}, {"measure", measure_to_json(r.energy.measure)}};
   j[c.dimension == 3 ? "volume" : "area"] = measure_to_json(bsh::inside_measure(c, r.labelling));
   j["sample_connected"] = r.sample_connected;

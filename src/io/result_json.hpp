@@ -34,6 +34,10 @@ struct PlanarPieces {
 nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractResult& result,
                               const PlanarPieces& geometry, bool include_seconds = true);
 
+/// The inside cells of an hsx-result/1 document, as a labelling of a complex with `cell_count` cells. Throws
+/// InputError naming the field when the document is not a result or does not fit the complex.
+std::vector<char> read_result_labelling(const nlohmann::json& document, int cell_count);
+
 /// Patches of the supports flagged in `supports` (per support), ascending.
 std::vector<int> patches_of_supports(const Complex& complex, const std::vector<char>& supports);
 

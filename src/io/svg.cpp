@@ -231,6 +231,7 @@ std::string arrangement_svg(const Scene2& scene, const Arrangement2& arr, const 
       else
         fill = count % 2 ? "#d2d2d2" : "#e4e4e4";
     }
+    if (f < o.cell_marks.size() && o.cell_marks[f]) fill = o.cell_marks[f] == 1 ? "#f4a261" : "#e63946";
     std::string d;
     for (const auto& walk : faces[f].boundary) {
       if (walk.empty()) continue;

@@ -24,6 +24,9 @@ struct SvgOptions {
   std::vector<char> cell_fill;           ///< optional, per cell: 1 = filled (inside a shape); empty: grey shading
   bool show_cell_ids = false;
   bool show_patch_ids = false;
+  /// optional, per cell: 1 = an inside cell of a mixed term (drawn orange), 2 = an outside cell of a mixed term
+  /// (drawn red); overrides cell_fill (describability witnesses)
+  std::vector<char> cell_marks;
   std::vector<char> highlight_patches;   ///< optional, per patch: 1 = highlighted (e.g. removed patches)
   std::string title;
 };

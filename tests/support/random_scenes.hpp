@@ -1,8 +1,10 @@
 // Random valid 2D scenes for property tests (rapidcheck), and small helpers to build, transform and show scenes.
 //
 // What gen_scene produces (every scene is validated: validate_and_resolve has been called and did not throw):
-// - a few halfspaces (half-planes, disks, polygons, some complemented) with small rational data: coordinates are
-//   multiples of 1/denominator with |x| <= coordinate_bound, radii are multiples of 1/denominator in (0, 3];
+// - a few halfspaces (half-planes, disks, polygons, some complemented) with small rational data: centres, line
+//   anchor points and polygon start points are multiples of 1/denominator with |x| <= coordinate_bound (polygon
+//   vertices and the parts of degenerate patterns lie up to ~6 further out), radii are multiples of
+//   1/denominator in (0, 3]; points on circles use Pythagorean unit vectors (denominators 5 and 13);
 // - polygons are simple: star-shaped around a rational point (vertices at sorted, distinct directions, angular
 //   gaps below pi, so three consecutive vertices may be collinear), axis-aligned rectangles, or triangles;
 // - on purpose, degenerate configurations (see Degeneracy): a halfspace repeated exactly, a halfspace and its
@@ -53,11 +55,13 @@ struct SceneGenOptions {
   bool polygons = true;
   bool complements = true;  ///< some halfspaces get complement = true
   /// Degeneracies: between min_degeneracies and max_degeneracies patterns, drawn from `allowed_degeneracies`
-  /// (empty: all; patterns needing a kind that is not allowed are skipped).
+  /// (empty: all; patterns needing a kind that is not allowed are skipped, and so are patterns that would exceed
+  /// max_halfspaces: ask for max_halfspaces >= 1 + the patterns' cost to be sure to get them).
   int min_degeneracies = 0;
   int max_degeneracies = 2;
   std::vector<Degeneracy> allowed_degeneracies;
-  /// Samples: up to max_samples, each on a patch (never on a vertex where boundaries meet).
+  /// Samples: up to max_samples, each on a patch (never on a vertex where boundaries meet). Choosing them builds
+  /// the arrangement of the scene once, inside the generator.
   bool samples = false;
   int max_samples = 4;
   bool near_samples = true;  ///< some samples are `near` (with an exact rational snapped location)
@@ -65,7 +69,9 @@ struct SceneGenOptions {
   int denominator = 2;       ///< coordinates and radii are multiples of 1/denominator
 };
 
-/// Random valid scene; see the header comment.
+/// Random valid scene; see the header comment. Draws are uniform from the first test on (rapidcheck's size does
+/// not shrink the ranges) and shrink towards fewer halfspaces, no complement and no samples. Counterexamples print
+/// as hsx-scene/1 JSON (showValue below), ready to save as a file and run with `hsx arrange`.
 rc::Gen<Scene2> gen_scene(const SceneGenOptions& options = {});
 
 /// A rational point strictly inside `box`, coordinates multiples of 1/denominator.

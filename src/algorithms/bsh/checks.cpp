@@ -1,5 +1,7 @@
 #include "algorithms/bsh/checks.hpp"
 
+#include "algorithms/bsh/samples.hpp"
+
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -69,16 +71,10 @@ CheckResult check_prop51(const Problem& problem, const Labelling& b, const Label
 }
 
 Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling) {
-  Complex c = complex;
-  c.samples.clear();
-  for (Patch& p : c.patches) p.samples.clear();
-  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p) {
-    const Patch& patch = c.patches[p];
-    if (labelling[patch.inside_cell] == labelling[patch.outside_cell]) continue;
-    c.patches[p].samples.push_back(static_cast<int>(c.samples.size()));
-    c.samples.push_back({patch.halfspace, p});
-  }
-  return c;
+  std::vector<int> patches;
+  for (int p = 0; p < static_cast<int>(complex.patches.size()); ++p)
+    if (labelling[complex.patches[p].inside_cell] != labelling[complex.patches[p].outside_cell]) patches.push_back(p);
+  return with_samples_on(complex, patches);
 }
 
 CheckResult check_prop41(const Complex& complex, const Labelling& labelling, const CompareOptions& compare) {

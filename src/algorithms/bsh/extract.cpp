@@ -141,15 +141,16 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
     const std::size_t pick = best_index(queue, out.archive, cmp);
     const int current = queue[pick];
     queue.erase(queue.begin() + static_cast<std::ptrdiff_t>(pick));
-    if (beam_width <= 0)
-      for (int other : queue)
-        if (compare(out.archive[other].cut.energy, out.archive[current].cut.energy, cmp) == Order::Tie)
-          ctx.unseparated = true;
     ++ctx.stats().states_expanded;
     const Labelling labelling = out.archive[current].cut.labelling;
     if (ctx.options().record_states) ctx.expanded.push_back(labelling);
     const SampleConnectivity connectivity = sample_connectivity(problem, labelling);
     if (connectivity.sample_connected()) {
+      // Optimal only if proven no worse than every state still queued (their descendants cost at least as much).
+      if (beam_width <= 0)
+        for (int other : queue)
+          if (compare(out.archive[other].cut.energy, out.archive[current].cut.energy, cmp) == Order::Tie)
+            ctx.unseparated = true;
       ctx.offer_feasible(out.archive[current].cut);
       out.found = true;
       out.result = current;
@@ -270,6 +271,7 @@ ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
   ExtractResult result;
   result.method = options.method;
   const std::vector<signed char> free_labels(problem.cell_count(), -1);
+  long stats_enumerated = 0;
 
   if (options.method == Method::GraphCut) {
     const CutResult cut = ctx.cut({}, free_labels);
@@ -289,15 +291,51 @@ ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
       for (int k = outcome.result; k >= 0; k = outcome.archive[k].parent)
         result.steps.insert(result.steps.begin(), outcome.archive[k].removed);
       const bool all_certified = ctx.stats().uncertified_cuts == 0;
+      if (!all_certified) {
+        // Some max flow met measures that did not separate: the answer may tie with another boundary.
+        result.optimality_note = "a graph cut could not be certified (unseparated measures)";
+        result.ties.certified = false;
+      }
       if (options.method == Method::BestFirst) {
         result.optimal = all_certified;
+        if (!problem.non_generic_junctions().empty() && all_certified) {
+          // Prop. 5.2 rests on Prop. 5.1, which needs generic junctions (a counterexample with three concurrent
+          // lines is kept in data/counterexamples): certify with the oracle when it is small enough.
+          const std::string where = std::to_string(problem.non_generic_junctions().size()) + " non-generic junction(s)";
+          result.optimal = false;
+          result.optimality_note = where + ": best-first is not proven complete here and the oracle is too large";
+          if (options.certify_limit > 0) {
+            try {
+              const BruteForceResult bf = brute_force(problem, true, options.certify_limit, options.compare);
+              const Order o = compare(best.cut.energy, bf.energy, options.compare);
+              if (o == Order::Greater) {
+                result.labelling = bf.optimal.front();
+                result.energy = bf.energy;
+                result.sample_connected = true;
+                result.steps.clear();
+                result.optimality_note = where + ": best-first missed the optimum (Prop. 5.1 fails there); this is "
+                                                 "the oracle's optimum";
+              } else {
+                result.optimality_note = where + ": optimality certified by exhaustive enumeration";
+              }
+              result.optimal = o != Order::Tie && bf.certified;
+              result.ties.checked = true;
+              result.ties.count = static_cast<int>(bf.optimal.size());
+              result.ties.certified = bf.certified;
+              for (const Labelling& l : bf.optimal)
+                if (l != result.labelling) result.tied.push_back(l);
+              stats_enumerated = bf.enumerated;
+            } catch (const std::runtime_error&) {
+            }
+          }
+        }
       } else {
         // Beam results are optimal when they meet the unconstrained lower bound (the root graph cut).
         const Order o = compare(best.cut.energy, outcome.archive[0].cut.energy, options.compare);
         result.optimal = all_certified && o == Order::Equal;
       }
       if (ctx.unseparated) result.ties.certified = false;
-      if (options.method == Method::BestFirst && options.enumerate_ties && result.optimal) {
+      if (options.method == Method::BestFirst && options.enumerate_ties && result.optimal && !result.ties.checked) {
         enumerate_ties(ctx, best.cut, result);
         if (!ctx.stopped_by.empty()) {
           result.stopped_by = ctx.stopped_by;
@@ -318,6 +356,7 @@ ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
     }
   }
   result.stats = ctx.stats();
+  result.stats.labellings_enumerated = stats_enumerated;
   result.stats.seconds = ctx.seconds();
   result.expanded = std::move(ctx.expanded);
   return result;

@@ -36,6 +36,9 @@ struct ExtractOptions {
   bool enumerate_ties = true;   ///< complete methods: find every optimal boundary (up to max_ties)
   int max_ties = 16;
   long brute_force_limit = 1L << 22;  ///< labellings the oracle may enumerate before refusing
+  /// Best-first on a complex with non-generic junctions (where Prop. 5.2 is not proven) is certified by the
+  /// oracle when it needs at most this many labellings; 0 disables it.
+  long certify_limit = 200000;
   CompareOptions compare;
   bool record_states = false;   ///< keep the labelling of every expanded state (ExtractResult::expanded)
   /// Called about twice a second during long searches (the CLI prints it on stderr); may be empty.
@@ -71,6 +74,7 @@ struct ExtractResult {
   Ties ties;
   std::vector<Labelling> tied;   ///< the other optimal labellings when ties.count > 1
   std::string stopped_by;        ///< "" (finished), "max-states", "time-limit"
+  std::string optimality_note;   ///< how optimality was decided when the search alone could not prove it
   std::vector<Labelling> expanded;  ///< with ExtractOptions::record_states: every expanded state's boundary
   SearchStats stats;
 };

@@ -3,19 +3,25 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/edmonds_karp_max_flow.hpp>
 
+#include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 
 namespace hsx::bsh {
 namespace {
 
-/// An edge weight: infinite, or (samples, measure) ordered lexicographically. Ordering questions that the
-/// certified comparison cannot separate answer "not less" (so a tie never counts as positive residual); the
+/// An edge weight: infinite, or (samples, measure) ordered lexicographically, where the measure is kept as an
+/// integer combination of support measures ("atoms"): every capacity, flow and residual of the max-flow is one,
+/// so additions are exact and cheap. Comparisons first try a rigorous double-interval enclosure of the atoms and
+/// fall back to exact Measure arithmetic (problem.hpp) only when it does not separate. Questions that even the
+/// certified comparison cannot separate answer "not less" (a tie never counts as positive residual); the
 /// certificate check afterwards reports any such tie.
 struct Capacity {
   bool infinite = false;
   long samples = 0;
-  Measure measure;
+  std::vector<std::pair<int, long>> atoms;  // (support, coefficient), ascending support, no zero coefficient
+  const Problem* problem = nullptr;
 
   Capacity() = default;
   Capacity(int zero) { (void)zero; }  // NOLINT: Boost writes `FlowValue x = 0` and `0 < x`
@@ -24,35 +30,89 @@ struct Capacity {
     c.infinite = true;
     return c;
   }
-  static Capacity of(long samples, const Measure& m) {
+  static Capacity of_samples(long samples) {
     Capacity c;
     c.samples = samples;
-    c.measure = m;
     return c;
   }
+  static Capacity of_support(const Problem& problem, int support) {
+    Capacity c;
+    c.atoms.emplace_back(support, 1);
+    c.problem = &problem;
+    return c;
+  }
+  bool is_zero() const { return !infinite && samples == 0 && atoms.empty(); }
+  Measure measure() const {
+    Measure m;
+    for (const auto& [g, k] : atoms) m += problem->supports()[g].measure * Rational(k);
+    return m;
+  }
 };
+
+Capacity combine(const Capacity& a, const Capacity& b, long sign) {
+  Capacity c;
+  c.samples = a.samples + sign * b.samples;
+  c.problem = a.problem ? a.problem : b.problem;
+  std::size_t i = 0, j = 0;
+  while (i < a.atoms.size() || j < b.atoms.size()) {
+    if (j == b.atoms.size() || (i < a.atoms.size() && a.atoms[i].first < b.atoms[j].first)) {
+      c.atoms.push_back(a.atoms[i++]);
+    } else if (i == a.atoms.size() || b.atoms[j].first < a.atoms[i].first) {
+      c.atoms.emplace_back(b.atoms[j].first, sign * b.atoms[j].second);
+      ++j;
+    } else {
+      const long k = a.atoms[i].second + sign * b.atoms[j].second;
+      if (k != 0) c.atoms.emplace_back(a.atoms[i].first, k);
+      ++i;
+      ++j;
+    }
+  }
+  return c;
+}
 
 // Boost's max-flow only needs +, -, < and numeric_limits::max.
 Capacity operator+(const Capacity& a, const Capacity& b) {
   if (a.infinite || b.infinite) return Capacity::inf();
-  return Capacity::of(a.samples + b.samples, a.measure + b.measure);
+  return combine(a, b, 1);
 }
 Capacity operator-(const Capacity& a, const Capacity& b) {
   if (a.infinite) return Capacity::inf();
   if (b.infinite) throw std::logic_error("graph cut: subtracting an infinite flow");
-  return Capacity::of(a.samples - b.samples, a.measure - b.measure);
+  return combine(a, b, -1);
 }
 Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
-/// Certified "a < b"; Tie and Equal answer false.
+
+/// Sign of sum k_g * |g|: rigorous double enclosure first (each operation widened outward by one ulp), then the
+/// exact Measure; nullopt when even that does not separate at the precision cap.
+std::optional<int> sign_of(const Capacity& d) {
+  double lo = 0, hi = 0;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const auto& [g, k] : d.atoms) {
+    const auto& [mlo, mhi] = d.problem->support_enclosures()[g];
+    const double kd = static_cast<double>(k);
+    const double plo = std::nextafter(kd * (k > 0 ? mlo : mhi), -inf);
+    const double phi = std::nextafter(kd * (k > 0 ? mhi : mlo), inf);
+    lo = std::nextafter(lo + plo, -inf);
+    hi = std::nextafter(hi + phi, inf);
+  }
+  if (lo > 0) return 1;
+  if (hi < 0) return -1;
+  return d.measure().sign();
+}
+
 Order order(const Capacity& a, const Capacity& b) {
   if (a.infinite || b.infinite) {
     if (a.infinite && b.infinite) return Order::Equal;
     return a.infinite ? Order::Greater : Order::Less;
   }
   if (a.samples != b.samples) return a.samples < b.samples ? Order::Less : Order::Greater;
-  if (a.measure.is_zero() && b.measure.is_zero()) return Order::Equal;
-  return hsx::compare(a.measure, b.measure);
+  const Capacity d = combine(a, b, -1);
+  if (d.atoms.empty()) return Order::Equal;
+  const std::optional<int> s = sign_of(d);
+  if (!s) return Order::Tie;
+  return *s < 0 ? Order::Less : (*s > 0 ? Order::Greater : Order::Equal);
 }
+/// Certified "a < b"; Tie and Equal answer false.
 bool operator<(const Capacity& a, const Capacity& b) { return order(a, b) == Order::Less; }
 
 }  // namespace
@@ -115,7 +175,7 @@ Terms build_terms(const Problem& problem, const CutConstraints& constraints) {
     Capacity& allowed = s.inside_cell == s.cell_a ? ab : ba;
     Capacity& forbidden = s.inside_cell == s.cell_a ? ba : ab;
     forbidden = Capacity::inf();
-    allowed = allowed + Capacity::of(0, s.measure);
+    allowed = allowed + Capacity::of_support(problem, g);
   }
   return t;
 }
@@ -128,17 +188,17 @@ bool cut_cost(const Problem& problem, const CutConstraints& constraints, const L
   for (int k = 0; k < problem.cell_count(); ++k) {
     if (labelling[k]) {
       if (t.sink_infinite[k]) return false;
-      total = total + Capacity::of(t.sink_samples[k], Measure());
+      total = total + Capacity::of_samples(t.sink_samples[k]);
     } else {
       if (t.source_infinite[k]) return false;
-      total = total + Capacity::of(t.source_samples[k], Measure());
+      total = total + Capacity::of_samples(t.source_samples[k]);
     }
   }
   for (const auto& [pair, w] : t.binary)
     if (labelling[pair.first] && !labelling[pair.second]) total = total + w;
   if (total.infinite) return false;
   cost->missing_samples = total.samples;
-  cost->measure = total.measure;
+  cost->measure = total.measure();
   return true;
 }
 
@@ -165,14 +225,14 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints) {
     if (terms.source_infinite[k])
       add(s, k, Capacity::inf());
     else if (terms.source_samples[k])
-      add(s, k, Capacity::of(terms.source_samples[k], Measure()));
+      add(s, k, Capacity::of_samples(terms.source_samples[k]));
     if (terms.sink_infinite[k])
       add(k, t, Capacity::inf());
     else if (terms.sink_samples[k])
-      add(k, t, Capacity::of(terms.sink_samples[k], Measure()));
+      add(k, t, Capacity::of_samples(terms.sink_samples[k]));
   }
   for (const auto& [pair, w] : terms.binary)
-    if (w.infinite || w.samples || !w.measure.is_zero()) add(pair.first, pair.second, w);
+    if (!w.is_zero()) add(pair.first, pair.second, w);
 
   // Infeasible constraints show as a path of infinite edges from s to t; Edmonds-Karp would loop on it.
   {
@@ -256,11 +316,21 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints) {
     if (a.from == s) flow += f;
   }
   for (int k = 0; k < n; ++k)
-    if (balance[k].infinite || balance[k].samples != 0 || !balance[k].measure.is_zero())
+    if (!balance[k].is_zero())
       note("flow not conserved at cell " + std::to_string(k));
-  if (flow.infinite || flow.samples != result.energy.missing_samples ||
-      !(flow.measure - result.energy.measure).is_zero())
+  if (flow.infinite || flow.samples != result.energy.missing_samples)
     note("flow value differs from the energy of the cut");
+  else {
+    // The energy as atoms: one of each support on the boundary. Equal vectors prove equality; otherwise the
+    // values are compared exactly.
+    Capacity energy_atoms;
+    for (int g : boundary_supports(problem, result.labelling)) energy_atoms += Capacity::of_support(problem, g);
+    const Capacity diff = combine(flow, energy_atoms, -1);
+    if (!diff.atoms.empty()) {
+      const std::optional<int> sgn = sign_of(diff);
+      if (!sgn || *sgn != 0) note("flow value differs from the energy of the cut");
+    }
+  }
   result.certified = result.certificate_note.empty();
   return result;
 }

@@ -4,6 +4,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <map>
 
 namespace hsx::bsh {
 
@@ -29,6 +30,8 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
       if (patch.inside_cell != term.inside_cell) term.inside_cell = term.outside_cell = -1;
     }
     term.measure = first.measure;
+    const Interval enclosure = term.measure.enclose(64);
+    support_enclosures_.emplace_back(enclosure.lo_double(), enclosure.hi_double());
     total_samples_ += term.samples;
   }
   support_neighbours_.resize(supports_.size());
@@ -44,6 +47,30 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
   for (auto& list : support_neighbours_) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  for (int j = 0; j < static_cast<int>(complex.junctions.size()); ++j) {
+    std::map<int, int> ends;  // support -> patch ends at j
+    std::set<int> cells;
+    bool usable = false;
+    for (int p : complex.junctions[j].patches) {
+      const Patch& patch = complex.patches[p];
+      if (supports_[patch.support].patches.front() != p) continue;  // one patch per support
+      ends[patch.support] += static_cast<int>(std::count(patch.junctions.begin(), patch.junctions.end(), j));
+      cells.insert(patch.inside_cell);
+      cells.insert(patch.outside_cell);
+      usable = usable || !complex.cells[patch.inside_cell].outer || !complex.cells[patch.outside_cell].outer;
+    }
+    if (!usable) continue;
+    // Group supports into boundaries: supports of one halfspace meeting here continue that boundary.
+    std::map<int, int> ends_per_boundary;  // smallest halfspace of the support -> ends
+    for (const auto& [g, count] : ends) {
+      int h = complex.halfspace_count();
+      for (int p : supports_[g].patches) h = std::min(h, complex.patches[p].halfspace);
+      ends_per_boundary[h] += count;
+    }
+    bool generic = ends_per_boundary.size() == 2 && cells.size() == 4;
+    for (const auto& [h, count] : ends_per_boundary) generic = generic && count == 2;
+    if (!generic) non_generic_junctions_.push_back(j);
   }
 }
 

@@ -54,11 +54,21 @@ class Problem {
   long total_samples() const { return total_samples_; }
   /// Supports adjacent to each support (sharing a junction through any of their patches), ascending.
   const std::vector<std::vector<int>>& support_neighbours() const { return support_neighbours_; }
+  /// Junctions where the paper's genericity assumption fails (Section 3.1: then an orientation-preserving
+  /// boundary may be non-manifold, Prop. 5.1 may fail, and best-first is not proven complete). A junction is
+  /// generic when its patches lie on exactly two boundaries (coincident patches count as one) that cross: two
+  /// ends each and four distinct cells around it (a tangency has three). Junctions whose patches all separate
+  /// outer cells are ignored: no boundary can use them. Ascending.
+  const std::vector<int>& non_generic_junctions() const { return non_generic_junctions_; }
+  /// Rigorous double enclosure [lo, hi] of each support's measure (fast comparisons before exact ones).
+  const std::vector<std::pair<double, double>>& support_enclosures() const { return support_enclosures_; }
 
  private:
   const Complex& complex_;
   std::vector<SupportTerm> supports_;
   std::vector<std::vector<int>> support_neighbours_;
+  std::vector<std::pair<double, double>> support_enclosures_;
+  std::vector<int> non_generic_junctions_;
   long total_samples_ = 0;
 };
 

@@ -1,0 +1,151 @@
+#include "algorithms/bsh/samples.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace hsx::bsh {
+
+Complex with_samples_on(const Complex& complex, const std::vector<int>& patches) {
+  Complex c = complex;
+  c.samples.clear();
+  for (Patch& p : c.patches) p.samples.clear();
+  for (int p : patches) {
+    c.patches.at(p).samples.push_back(static_cast<int>(c.samples.size()));
+    c.samples.push_back({c.patches[p].halfspace, p});
+  }
+  return c;
+}
+
+namespace {
+
+/// The central patch of a component (see the header). Distances are Measures compared with certified compare.
+int central_patch(const Complex& c, const std::vector<int>& component, const CompareOptions& compare_options) {
+  if (component.size() == 1) return component.front();
+  const int n = static_cast<int>(component.size());
+  std::vector<std::vector<int>> adjacent(n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      if (a == b) continue;
+      const auto& ja = c.patches[component[a]].junctions;
+      const auto& jb = c.patches[component[b]].junctions;
+      for (int j : ja)
+        if (std::find(jb.begin(), jb.end(), j) != jb.end()) {
+          adjacent[a].push_back(b);
+          break;
+        }
+    }
+  // Dijkstra from every patch (components are small); edge a-b costs (|a| + |b|) / 2.
+  int best = -1;
+  Measure best_radius;
+  for (int s = 0; s < n; ++s) {
+    std::vector<std::optional<Measure>> dist(n);
+    std::vector<char> done(n, 0);
+    dist[s] = Measure();
+    for (int round = 0; round < n; ++round) {
+      int u = -1;
+      for (int v = 0; v < n; ++v)
+        if (!done[v] && dist[v] && (u < 0 || compare(*dist[v], *dist[u], compare_options) == Order::Less)) u = v;
+      if (u < 0) break;
+      done[u] = 1;
+      for (int v : adjacent[u]) {
+        Measure d = *dist[u] + (c.patches[component[u]].measure + c.patches[component[v]].measure) * Rational(1, 2);
+        if (!dist[v] || compare(d, *dist[v], compare_options) == Order::Less) dist[v] = d;
+      }
+    }
+    Measure radius;
+    for (int v = 0; v < n; ++v)
+      if (dist[v] && compare(*dist[v], radius, compare_options) == Order::Greater) radius = *dist[v];
+    if (best < 0 || compare(radius, best_radius, compare_options) == Order::Less) {
+      best = s;
+      best_radius = radius;
+    }
+  }
+  return component[best];
+}
+
+ExtractResult run(const Complex& sampled, const SampleGenOptions& options) {
+  const Problem problem(sampled);
+  ExtractOptions extract_options;
+  extract_options.method = options.search;
+  extract_options.beam_width = options.beam_width;
+  extract_options.enumerate_ties = false;
+  extract_options.compare = options.compare;
+  return extract(problem, extract_options);
+}
+
+}  // namespace
+
+SampleGenResult generate_samples(const Complex& complex, const Labelling& target, const SampleGenOptions& options) {
+  SampleGenResult result;
+  const Problem target_problem(complex);
+  const SampleConnectivity components = sample_connectivity(target_problem, target);
+  for (const Component& comp : components.components)
+    result.sample_patches.push_back(central_patch(complex, comp.patches, options.compare));
+  result.initial = static_cast<int>(result.sample_patches.size());
+  for (int g : boundary_supports(target_problem, target))
+    result.upper_bound += static_cast<int>(target_problem.supports()[g].patches.size());
+  for (;;) {
+    const ExtractResult found = run(with_samples_on(complex, result.sample_patches), options);
+    ++result.rounds;
+    if (found.labelling == target) {
+      result.reproduced = true;
+      return result;
+    }
+    // The largest sample-free patch of b \ b' (Fig. 12).
+    std::vector<char> on_found(target_problem.support_count(), 0);
+    for (int g : boundary_supports(target_problem, found.labelling)) on_found[g] = 1;
+    int pick = -1;
+    for (int g : boundary_supports(target_problem, target)) {
+      if (on_found[g]) continue;
+      for (int p : target_problem.supports()[g].patches) {
+        if (std::find(result.sample_patches.begin(), result.sample_patches.end(), p) != result.sample_patches.end())
+          continue;
+        if (pick < 0 || compare(complex.patches[p].measure, complex.patches[pick].measure, options.compare) ==
+                            Order::Greater)
+          pick = p;
+      }
+    }
+    if (pick < 0) {
+      result.failure = "no sample-free patch in b \\ b' (a counterexample to Prop. 6.1/B.1, or a search limit)";
+      return result;
+    }
+    result.sample_patches.push_back(pick);
+    if (result.rounds > result.upper_bound + 1) {
+      result.failure = "more rounds than boundary patches";
+      return result;
+    }
+  }
+}
+
+int minimum_samples(const Complex& complex, const Labelling& target, int max_patches, long max_subsets) {
+  const Problem problem(complex);
+  std::vector<int> patches;
+  for (int g : boundary_supports(problem, target))
+    for (int p : problem.supports()[g].patches) patches.push_back(p);
+  const int n = static_cast<int>(patches.size());
+  if (n > max_patches) return -1;
+  const int lower = static_cast<int>(sample_connectivity(problem, target).components.size());
+  long tried = 0;
+  SampleGenOptions best_first;
+  best_first.search = Method::BestFirst;
+  for (int k = lower; k <= n; ++k) {
+    // Subsets of size k in lexicographic order.
+    std::vector<int> pick(k);
+    for (int i = 0; i < k; ++i) pick[i] = i;
+    for (;;) {
+      if (++tried > max_subsets) return -1;
+      std::vector<int> chosen;
+      for (int i : pick) chosen.push_back(patches[i]);
+      const ExtractResult r = run(with_samples_on(complex, chosen), best_first);
+      if (r.labelling == target) return k;
+      int i = k - 1;
+      while (i >= 0 && pick[i] == n - k + i) --i;
+      if (i < 0) break;
+      ++pick[i];
+      for (int j = i + 1; j < k; ++j) pick[j] = pick[j - 1] + 1;
+    }
+  }
+  return n;
+}
+
+}  // namespace hsx::bsh

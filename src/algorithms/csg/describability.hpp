@@ -1,0 +1,27 @@
+// Shapiro-Vossler describability on a complex: a solid (a set of cells) is describable by the halfspaces iff no
+// canonical intersection term (the cells sharing one sign vector over all halfspaces) holds both an inside and an
+// outside cell. See proofs/csg.md.
+#pragma once
+
+#include "complex/complex.hpp"
+
+#include <vector>
+
+namespace hsx::csg {
+
+struct MixedTerm {
+  std::vector<char> signs;          ///< the term's sign vector (per halfspace: 1 inside)
+  std::vector<int> inside_cells;    ///< its cells in the solid, ascending
+  std::vector<int> outside_cells;   ///< its cells not in the solid, ascending
+};
+
+struct Describability {
+  bool describable = true;
+  int terms = 0;                    ///< non-empty canonical intersection terms
+  std::vector<MixedTerm> mixed;     ///< ordered by smallest cell
+};
+
+/// `solid`: per cell, 1 inside.
+Describability describability(const Complex& complex, const std::vector<char>& solid);
+
+}  // namespace hsx::csg

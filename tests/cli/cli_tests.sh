@@ -1,0 +1,194 @@
+#!/usr/bin/env bash
+# End-to-end tests of the `hsx` program: usage: cli_tests.sh PATH/TO/hsx
+# - --version and --help exit 0;
+# - `hsx arrange` on every bundled scene (data/scenes/*.json) exits 0 and writes valid hsx-complex/1 JSON with
+#   counts.{vertices,edges,cells,outer_cells,patches} (equal to tests/regression/expected.json) and
+#   patches[].{halfspace,measure.decimal,measure.exact,samples}, and an SVG;
+# - bad inputs exit 2 with a message on stderr naming the offending field, and leave no output file behind;
+# - a missing scene file exits 2.
+# Prints "N passed, M failed" and exits non-zero when anything failed.
+set -u
+
+HSX="${1:?usage: cli_tests.sh PATH/TO/hsx}"
+HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+ROOT="$(cd "$HERE/../.." && pwd)"
+EXPECTED="$ROOT/tests/regression/expected.json"
+TMP="$(mktemp -d "${TMPDIR:-/tmp}/hsx-cli-tests.XXXXXX")"
+trap 'rm -rf "$TMP"' EXIT
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() {
+  failed=$((failed + 1))
+  echo "FAIL: $*" >&2
+}
+
+# ---- --version, --help ----
+if out="$("$HSX" --version 2>&1)"; then
+  if [[ "$out" == hsx* ]]; then pass; else fail "--version printed '$out'"; fi
+else
+  fail "--version exited $?"
+fi
+if "$HSX" --help >"$TMP/help.txt" 2>&1; then
+  if grep -q arrange "$TMP/help.txt"; then pass; else fail "--help does not mention the arrange command"; fi
+else
+  fail "--help exited non-zero"
+fi
+if "$HSX" arrange --help >/dev/null 2>&1; then pass; else fail "arrange --help exited non-zero"; fi
+
+# ---- every bundled scene ----
+check_complex_json() {  # file scene-name: structure and counts
+  python3 - "$1" "$2" "$EXPECTED" <<'EOF'
+import json, sys
+path, scene, expected_path = sys.argv[1], sys.argv[2], sys.argv[3]
+doc = json.load(open(path))
+problems = []
+if doc.get("format") != "hsx-complex/1":
+    problems.append("format is %r" % doc.get("format"))
+counts = doc.get("counts", {})
+for key in ("vertices", "edges", "cells", "outer_cells", "patches"):
+    if not isinstance(counts.get(key), int):
+        problems.append("counts.%s missing or not an integer" % key)
+patches = doc.get("patches")
+if not isinstance(patches, list) or not patches:
+    problems.append("patches missing or empty")
+else:
+    names = set(doc.get("halfspaces", []))
+    for k, p in enumerate(patches):
+        if p.get("halfspace") not in names:
+            problems.append("patches[%d].halfspace %r is not a halfspace name" % (k, p.get("halfspace")))
+        m = p.get("measure")
+        if not isinstance(m, dict) or not isinstance(m.get("decimal"), str) or "exact" not in m:
+            problems.append("patches[%d].measure lacks decimal/exact" % k)
+        elif not (m["exact"] is None or isinstance(m["exact"], str)):
+            problems.append("patches[%d].measure.exact is neither a string nor null" % k)
+        if not isinstance(p.get("samples"), int):
+            problems.append("patches[%d].samples is not an integer" % k)
+    if counts.get("patches") != len(patches):
+        problems.append("counts.patches %r != %d patches" % (counts.get("patches"), len(patches)))
+    if counts.get("cells") != len(doc.get("cells", [])):
+        problems.append("counts.cells disagrees with cells[]")
+expected = json.load(open(expected_path))["scenes"].get(scene)
+if expected is None:
+    problems.append("no expectation for %s in tests/regression/expected.json" % scene)
+else:
+    for key in ("vertices", "edges", "cells", "outer_cells", "patches"):
+        if counts.get(key) != expected[key]:
+            problems.append("counts.%s = %r, expected %r" % (key, counts.get(key), expected[key]))
+if problems:
+    print("; ".join(problems))
+    sys.exit(1)
+EOF
+}
+
+shopt -s nullglob
+scenes=("$ROOT"/data/scenes/*.json)
+if ((${#scenes[@]} == 0)); then fail "no scenes in $ROOT/data/scenes"; fi
+for scene in "${scenes[@]}"; do
+  name="$(basename "$scene")"
+  json="$TMP/$name.complex.json"
+  svg="$TMP/$name.svg"
+  if "$HSX" arrange "$scene" --json "$json" --svg "$svg" >"$TMP/stdout.txt" 2>"$TMP/stderr.txt"; then
+    if why="$(check_complex_json "$json" "$name")"; then pass; else fail "arrange $name: $why"; fi
+    if [[ -s "$svg" ]] && grep -q "<svg" "$svg"; then pass; else fail "arrange $name: no SVG written"; fi
+    if grep -q "patches" "$TMP/stdout.txt"; then pass; else fail "arrange $name: no summary on stdout"; fi
+  else
+    fail "arrange $name exited $? ($(head -c 300 "$TMP/stderr.txt"))"
+  fi
+done
+# --json - writes the document to standard output.
+if "$HSX" arrange "${scenes[0]}" --json - >"$TMP/stdout.json" 2>/dev/null &&
+  python3 -c 'import json,sys; json.load(open(sys.argv[1]))["counts"]' "$TMP/stdout.json" 2>/dev/null; then
+  pass
+else
+  fail "arrange --json - did not write valid JSON to stdout"
+fi
+
+# ---- bad inputs: exit 2, message naming the field, no output left behind ----
+BAD="$TMP/bad"
+mkdir -p "$BAD"
+HDR='"format": "hsx-scene/1", "dimension": 2'
+DISK='{"name": "A", "kind": "disk", "center": [0, 0], "radius": 1}'
+write() { printf '%s\n' "$2" >"$BAD/$1.json"; }
+write invalid_json "{$HDR, \"halfspaces\": [$DISK"
+write unknown_field "{$HDR, \"colour\": \"red\", \"halfspaces\": [$DISK]}"
+write unknown_halfspace_field "{$HDR, \"halfspaces\": [{\"name\": \"A\", \"kind\": \"disk\", \"center\": [0, 0], \"radius\": 1, \"radios\": 2}]}"
+write duplicate_name "{$HDR, \"halfspaces\": [$DISK, {\"name\": \"A\", \"kind\": \"disk\", \"center\": [3, 0], \"radius\": 1}]}"
+write zero_radius "{$HDR, \"halfspaces\": [{\"name\": \"A\", \"kind\": \"disk\", \"center\": [0, 0], \"radius\": 0}]}"
+write self_intersecting "{$HDR, \"halfspaces\": [{\"name\": \"P\", \"kind\": \"polygon\", \"vertices\": [[0, 0], [2, 2], [2, 0], [0, 2]]}]}"
+write sample_unknown_halfspace "{$HDR, \"halfspaces\": [$DISK], \"samples\": [{\"on\": \"B\", \"at\": [1, 0]}]}"
+write sample_off_boundary "{$HDR, \"halfspaces\": [$DISK], \"samples\": [{\"on\": \"A\", \"at\": [2, 0]}]}"
+write sample_on_crossing "{$HDR, \"halfspaces\": [{\"name\": \"X\", \"kind\": \"halfplane\", \"normal\": [0, 1], \"offset\": 0}, {\"name\": \"Y\", \"kind\": \"halfplane\", \"normal\": [1, 0], \"offset\": 0}], \"samples\": [{\"on\": \"X\", \"at\": [0, 0]}]}"
+write empty_halfspaces "{$HDR, \"halfspaces\": []}"
+write domain_misses_disk "{$HDR, \"domain\": {\"min\": [-1, -1], \"max\": [1, 1]}, \"halfspaces\": [{\"name\": \"A\", \"kind\": \"disk\", \"center\": [0, 0], \"radius\": 2}]}"
+write huge_exponent_string "{$HDR, \"halfspaces\": [{\"name\": \"A\", \"kind\": \"disk\", \"center\": [0, 0], \"radius\": \"1e99999999999\"}]}"
+write huge_exponent_number "{$HDR, \"halfspaces\": [{\"name\": \"H\", \"kind\": \"halfplane\", \"normal\": [0, 1], \"offset\": 1e99999999999}]}"
+write not_a_number "{$HDR, \"halfspaces\": [{\"name\": \"A\", \"kind\": \"disk\", \"center\": [0, \"abc\"], \"radius\": 1}]}"
+write zero_normal "{$HDR, \"halfspaces\": [{\"name\": \"H\", \"kind\": \"halfplane\", \"normal\": [0, 0], \"offset\": 1}]}"
+write wrong_format "{\"format\": \"hsx-scene/9\", \"dimension\": 2, \"halfspaces\": [$DISK]}"
+
+# case name -> text that stderr must contain (the field or the position it is about)
+declare -A NEEDLE=(
+  [invalid_json]="column"
+  [unknown_field]="colour"
+  [unknown_halfspace_field]="radios"
+  [duplicate_name]="halfspaces[1].name"
+  [zero_radius]="halfspaces[0].radius"
+  [self_intersecting]="halfspaces[0]"
+  [sample_unknown_halfspace]="samples[0].on"
+  [sample_off_boundary]="samples[0]"
+  [sample_on_crossing]="samples[0]"
+  [empty_halfspaces]="halfspaces"
+  [domain_misses_disk]="domain"
+  [huge_exponent_string]="halfspaces[0].radius"
+  [huge_exponent_number]="halfspaces[0].offset"
+  [not_a_number]="halfspaces[0].center"
+  [zero_normal]="halfspaces[0].normal"
+  [wrong_format]="format"
+)
+
+for input in "$BAD"/*.json; do
+  case_name="$(basename "$input" .json)"
+  needle="${NEEDLE[$case_name]:-}"
+  out="$TMP/out-$case_name"
+  "$HSX" arrange "$input" --json "$out.json" --svg "$out.svg" >"$TMP/stdout.txt" 2>"$TMP/stderr.txt"
+  rc=$?
+  if ((rc != 2)); then
+    fail "$case_name: exit code $rc, expected 2 (stderr: $(head -c 300 "$TMP/stderr.txt"))"
+    continue
+  fi
+  pass
+  if [[ -n "$needle" ]] && grep -qF -- "$needle" "$TMP/stderr.txt"; then
+    pass
+  else
+    fail "$case_name: stderr does not name '$needle': $(head -c 300 "$TMP/stderr.txt")"
+  fi
+  if [[ -e "$out.json" || -e "$out.svg" ]]; then
+    fail "$case_name: an output file was left behind"
+  else
+    pass
+  fi
+done
+# Nothing else (temporary files of the atomic writes) was left in the output directory either.
+leftovers="$(find "$TMP" -maxdepth 1 -name 'out-*' | head -5)"
+if [[ -z "$leftovers" ]]; then pass; else fail "files left behind: $leftovers"; fi
+
+# ---- a missing file ----
+"$HSX" arrange "$TMP/does-not-exist.json" --json "$TMP/missing.json" >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -qF "does-not-exist.json" "$TMP/stderr.txt" && [[ ! -e "$TMP/missing.json" ]]; then
+  pass
+else
+  fail "missing file: exit $rc, stderr: $(head -c 300 "$TMP/stderr.txt")"
+fi
+# ---- no subcommand, unknown option: usage errors exit 2 ----
+"$HSX" >/dev/null 2>&1
+rc=$?
+if ((rc == 2)); then pass; else fail "no subcommand: exit $rc, expected 2"; fi
+"$HSX" arrange "${scenes[0]}" --no-such-option >/dev/null 2>&1
+rc=$?
+if ((rc == 2)); then pass; else fail "unknown option: exit $rc, expected 2"; fi
+
+echo "$passed passed, $failed failed"
+((failed == 0))

@@ -226,6 +226,7 @@ struct ConversionReport {
 std::optional<Scene2> orient_for_bsh(const Scene2& scene, const Complex& complex, const std::vector<char>& solid,
                                      std::vector<std::string>& flipped, std::string& failure) {
   std::vector<char> normal(scene.halfspaces.size(), 0), reversed(scene.halfspaces.size(), 0);
+  std::vector<const std::vector<int>*> reversed_only;  // supports on b that no halfspace runs along correctly
   for (const auto& group : complex.supports) {
     const Patch& first = complex.patches[group.front()];
     if (solid[first.inside_cell] == solid[first.outside_cell]) continue;
@@ -237,19 +238,36 @@ std::optional<Scene2> orient_for_bsh(const Scene2& scene, const Complex& complex
         normal[patch.halfspace] = 1;
       }
     }
-    if (!agrees) reversed[first.halfspace] = 1;
+    if (!agrees) reversed_only.push_back(&group);
+  }
+  // Each such support needs one of its (coincident) halfspaces complemented: prefer one used nowhere else; when
+  // every one of them also runs along the solid correctly somewhere, add a complemented copy instead.
+  std::vector<char> copy(scene.halfspaces.size(), 0);
+  for (const auto* group : reversed_only) {
+    int pick = complex.patches[group->front()].halfspace;
+    for (int p : *group) {
+      const int h = complex.patches[p].halfspace;
+      if (reversed[h] || copy[h]) { pick = h; break; }
+      if (normal[pick] && !normal[h]) pick = h;
+    }
+    (normal[pick] ? copy : reversed)[pick] = 1;
   }
   Scene2 out = scene;
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
-    if (!reversed[i]) continue;
-    if (normal[i]) {
-      failure = "halfspace \"" + scene.halfspaces[i].name +
-                "\" bounds the solid with both orientations; BSH would need it and its coincident complement";
-      return std::nullopt;
+    if (reversed[i]) {
+      out.halfspaces[i].complement = !out.halfspaces[i].complement;
+      flipped.push_back(scene.halfspaces[i].name);
     }
-    out.halfspaces[i].complement = !out.halfspaces[i].complement;
-    flipped.push_back(scene.halfspaces[i].name);
+    if (copy[i]) {
+      Halfspace2 h = scene.halfspaces[i];
+      h.complement = !h.complement;
+      h.name += "~";
+      while (out.find_halfspace(h.name) >= 0) h.name += "~";
+      flipped.push_back(h.name + " (a complemented copy of " + scene.halfspaces[i].name + ")");
+      out.halfspaces.push_back(h);
+    }
   }
+  (void)failure;
   return out;
 }
 
@@ -266,11 +284,15 @@ ConversionReport convert_to_bsh(const Scene2& scene, const Arranged2& arranged, 
   if (!oriented) return report;
   Scene2 bare = *oriented;
   bare.samples.clear();
-  // Complementing halfspaces changes no curve, so the arrangement and its cell order are the same.
   const Arranged2 oriented_arranged = report.flipped.empty() && scene.samples.empty() ? arranged : arrange(bare);
+  // Cell order may differ after adding copies: carry the solid over by point location.
+  const std::vector<char> oriented_solid =
+      report.flipped.empty() && scene.samples.empty()
+          ? solid
+          : carry_solid_over(arranged.arrangement, solid, oriented_arranged.arrangement);
   bsh::SampleGenOptions options;
   options.search = search;
-  report.samples = bsh::generate_samples(oriented_arranged.complex, solid, options);
+  report.samples = bsh::generate_samples(oriented_arranged.complex, oriented_solid, options);
   if (!report.samples.reproduced) {
     report.failure = report.samples.failure;
     return report;
@@ -290,7 +312,7 @@ ConversionReport convert_to_bsh(const Scene2& scene, const Arranged2& arranged, 
   extract_options.method = search;
   extract_options.enumerate_ties = false;
   const bsh::ExtractResult r = bsh::extract(problem, extract_options);
-  report.round_trip = r.labelling == solid;
+  report.round_trip = r.labelling == oriented_solid;
   if (!report.round_trip) report.failure = "extracting the written scene does not give the solid back";
   return report;
 }
@@ -395,6 +417,7 @@ int run_samples(const SamplesOptions& o) {
 // ---------------------------------------------------------------------------------------------------------------
 struct CorpusOptions {
   std::string kind, file, json_path, search = "beam";
+  long first = 1;  // first line to run (1-based)
   long limit = 0;
 };
 
@@ -414,17 +437,26 @@ int run_corpus(const CorpusOptions& o) {
   std::vector<Row> rows;
   std::string line;
   long number = 0;
-  long ok = 0, not_describable = 0, bhc_failed = 0, round_trip_failed = 0, errors = 0;
+  long ok = 0, not_describable = 0, bhc_failed = 0, round_trip_failed = 0, errors = 0, malformed = 0;
   long total_samples = 0, total_lower = 0, total_upper = 0;
   double total_seconds = 0;
   while (std::getline(in, line)) {
     ++number;
-    if (line.empty()) continue;
+    if (line.empty() || number < o.first) continue;
     if (o.limit > 0 && static_cast<long>(rows.size()) >= o.limit) break;
     Row row{number, line, ""};
     const auto start = std::chrono::steady_clock::now();
+    std::optional<CsgnetProgram> parsed;
     try {
-      CsgnetProgram program = read_csgnet(line, "line " + std::to_string(number));
+      parsed = read_csgnet(line, "line " + std::to_string(number));
+    } catch (const InputError& e) {
+      // Malformed programs (the corpus has truncated ones) are reported and skipped, not counted as failures.
+      ++malformed;
+      std::cout << "skipped malformed " << e.what() << "\n";
+      continue;
+    }
+    try {
+      CsgnetProgram& program = *parsed;
       const Arranged2 arranged = arrange(program.scene);
       const std::vector<char> solid = csg::evaluate(*program.expression, arranged.complex);
       const csg::Describability d = csg::describability(arranged.complex, solid);
@@ -474,7 +506,7 @@ int run_corpus(const CorpusOptions& o) {
     if (!row.failure.empty()) std::cout << "line " << row.line << ": " << row.failure << "\n  " << row.program << "\n";
     rows.push_back(row);
   }
-  std::cout << rows.size() << " programs: " << ok << " ok, " << not_describable << " not describable, " << bhc_failed
+  std::cout << rows.size() << " programs (" << malformed << " malformed lines skipped): " << ok << " ok, " << not_describable << " not describable, " << bhc_failed
             << " BHC failures, " << round_trip_failed << " round-trip failures, " << errors << " errors\n"
             << "samples " << total_samples << " (lower bound " << total_lower << ", upper bound " << total_upper
             << "), " << total_seconds << " s\n";
@@ -556,7 +588,8 @@ void add_csg_commands(CLI::App& app) {
                                                  "BHC, conversion to BSH and back)");
     cmd->add_option("KIND", o->kind, "csgnet")->required();
     cmd->add_option("FILE", o->file, "the corpus file")->required();
-    cmd->add_option("--limit", o->limit, "only the first N programs");
+    cmd->add_option("--from", o->first, "start at this line (1-based, default 1)");
+    cmd->add_option("--limit", o->limit, "run at most N programs");
     cmd->add_option("--search", o->search, "beam (default) or best-first for the conversion");
     cmd->add_option("--json", o->json_path, "write one row per program as JSON");
     set_status_callback(cmd, o, &run_corpus);

@@ -47,9 +47,10 @@ std::optional<Candidate> line_through(const PointQ2& p, const PointQ2& q) {
   return Candidate{n, n.x * p.x + n.y * p.y};
 }
 
-/// The solid carried over to a refined arrangement: each new cell lies inside one old cell.
-std::vector<char> carry_over(const Arrangement2& old_arrangement, const std::vector<char>& solid,
-                             const Arrangement2& refined) {
+}  // namespace
+
+std::vector<char> carry_solid_over(const Arrangement2& old_arrangement, const std::vector<char>& solid,
+                                   const Arrangement2& refined) {
   std::vector<char> out;
   for (const ArrFace2& f : refined.faces()) {
     const PointLocation2 loc = old_arrangement.locate(f.interior);
@@ -58,6 +59,8 @@ std::vector<char> carry_over(const Arrangement2& old_arrangement, const std::vec
   }
   return out;
 }
+
+namespace {
 
 int mixed_cells(const csg::Describability& d) {
   int n = 0;
@@ -128,7 +131,7 @@ SeparatedSolid add_separators(const Scene2& scene, const Arranged2& arranged, co
       trial.halfspaces.push_back(h);
       try {
         Arranged2 refined = arrange(trial);
-        std::vector<char> cells = carry_over(out.arranged.arrangement, out.cells, refined.arrangement);
+        std::vector<char> cells = carry_solid_over(out.arranged.arrangement, out.cells, refined.arrangement);
         const csg::Describability dd = csg::describability(refined.complex, cells);
         const std::pair<int, int> key{static_cast<int>(dd.mixed.size()), mixed_cells(dd)};
         if (!best || key < best_key) {
@@ -139,7 +142,7 @@ SeparatedSolid add_separators(const Scene2& scene, const Arranged2& arranged, co
         continue;  // e.g. the line passes through a sample: not a usable separator
       }
     }
-    if (!best || best_key.first >= static_cast<int>(d.mixed.size()) && best_key.second >= mixed_cells(d))
+    if (!best || (best_key.first >= static_cast<int>(d.mixed.size()) && best_key.second >= mixed_cells(d)))
       return out;  // no candidate helps
     out = std::move(*best);
   }

@@ -26,6 +26,11 @@ Solid load_solid(const LoadedInput& in, const SolidSource& source);
 /// Per halfspace: its boundary is a line (BHC prefers those for partitioning).
 std::vector<char> planar_halfspaces(const Scene2& scene);
 
+/// The solid carried over to an arrangement of the same scene with more (or complemented) halfspaces: each
+/// refined cell lies inside one old cell, found by exact point location of its witness.
+std::vector<char> carry_solid_over(const Arrangement2& old_arrangement, const std::vector<char>& solid,
+                                   const Arrangement2& refined);
+
 /// 2D separators (Shapiro-Vossler): half-planes added to the scene until the solid is describable. Candidates
 /// are lines through pairs of rational arrangement vertices, the radical axes of pairs of circles (through their
 /// intersection points), and lines through pairs of cell witness points of mixed terms; each round adds the one

@@ -56,14 +56,14 @@ Complex complex_of(const Scene2& scene) { return arrange(scene).complex; }
 
 /// Best-first with tie enumeration, under a state budget: the search is exponential in the worst case, and a
 /// few random scenes would take seconds. Runs over budget are discarded (rare: about 1 in 50 scenes).
-ExtractOptions best_first_options() {
+/// `search_only`: no oracle fallback at non-generic junctions (ExtractOptions::certify_limit = 0), so that the
+/// search itself is what is tested; otherwise hsx's default, which certifies with the oracle there.
+ExtractResult best_first(const Problem& problem, bool search_only = false) {
   ExtractOptions o;
   o.method = Method::BestFirst;
   o.max_states = 200;
-  return o;
-}
-ExtractResult best_first(const Problem& problem) {
-  ExtractResult r = extract(problem, best_first_options());
+  if (search_only) o.certify_limit = 0;
+  ExtractResult r = extract(problem, o);
   if (!r.stopped_by.empty()) RC_DISCARD("best-first over its state budget");
   return r;
 }
@@ -88,17 +88,42 @@ bool contains(const std::vector<Labelling>& list, const Labelling& l) {
 /// A result that claims to be the unique, proven optimum.
 bool unique_proven(const ExtractResult& r) { return r.optimal && r.ties.count == 1 && r.ties.certified; }
 
-/// The implications of orientation preservation (problem.hpp): label(outside cell) = 1 => label(inside cell) = 1
-/// for each support, both ways when its halfspaces disagree.
+/// Best-first against the oracle. Always: the result is admissible, never below the optimum, and never a
+/// false claim of a unique proven optimum. With `exact` (the search is proven complete: generic junctions, or
+/// the oracle fallback): energy Equal (Tie only when the oracle itself is unseparated), a boundary among the
+/// oracle's optima, and the same number of ties when they were enumerated.
+void check_against_oracle(const Problem& problem, const ExtractResult& r, const BruteForceResult& bf, bool exact) {
+  RC_ASSERT(r.sample_connected);
+  RC_ASSERT(sample_connectivity(problem, r.labelling).sample_connected());
+  RC_ASSERT(is_orientation_preserving(problem, r.labelling));
+  const Order order = compare(r.energy, bf.energy);
+  RC_ASSERT(order != Order::Less);
+  if (order != Order::Equal) RC_ASSERT(!unique_proven(r) || (order == Order::Tie && !bf.certified));
+  if (!exact) return;
+  if (order != Order::Equal) {
+    // Only an unseparated tie may differ from Equal, and then neither side may claim a unique proven answer.
+    RC_ASSERT(order == Order::Tie);
+    RC_ASSERT(!bf.certified);
+    RC_ASSERT(!unique_proven(r));
+  }
+  RC_ASSERT(contains(bf.optimal, r.labelling));
+  for (const Labelling& t : r.tied) RC_ASSERT(contains(bf.optimal, t));
+  if (r.labelling != bf.optimal.front()) {
+    RC_ASSERT(bf.optimal.size() > 1u);
+    if (r.ties.checked) RC_ASSERT(r.ties.count > 1);
+  }
+  if (r.optimal && r.ties.checked && !r.ties.capped && bf.certified && r.ties.certified)
+    RC_ASSERT(static_cast<std::size_t>(r.ties.count) == bf.optimal.size());
+}
+
+/// The implications of orientation preservation (problem.hpp), per support with cells a, b: only a-inside
+/// allowed: label(b) = 1 => label(a) = 1; only b-inside: label(a) = 1 => label(b) = 1; neither: equal labels
+/// (both ways); both: no constraint.
 std::vector<std::vector<int>> implications(const Problem& problem) {
   std::vector<std::vector<int>> implies(problem.cell_count());
   for (const SupportTerm& s : problem.supports()) {
-    if (s.inside_cell >= 0) {
-      implies[s.outside_cell].push_back(s.inside_cell);
-    } else {
-      implies[s.cell_a].push_back(s.cell_b);
-      implies[s.cell_b].push_back(s.cell_a);
-    }
+    if (!s.allow_b_inside) implies[s.cell_b].push_back(s.cell_a);
+    if (!s.allow_a_inside) implies[s.cell_a].push_back(s.cell_b);
   }
   return implies;
 }
@@ -138,14 +163,15 @@ Labelling random_labelling(int n) {
   return l;
 }
 
-/// The complex with its samples replaced by one sample on every patch of `labelling`'s boundary (Prop. 4.1),
-/// written independently of bsh::with_one_sample_per_boundary_patch.
+/// The complex with its samples replaced by one sample on every patch of `labelling`'s boundary that lies on it
+/// with its own halfspace's orientation (Prop. 4.1; a coincident patch used reversed is not "on b" for its
+/// halfspace, problem.hpp), written independently of bsh::with_one_sample_per_boundary_patch.
 Complex one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling) {
   Complex c = complex;
   c.samples.clear();
   for (Patch& p : c.patches) p.samples.clear();
   for (int p = 0; p < static_cast<int>(c.patches.size()); ++p)
-    if (labelling[c.patches[p].inside_cell] != labelling[c.patches[p].outside_cell]) {
+    if (labelling[c.patches[p].inside_cell] && !labelling[c.patches[p].outside_cell]) {  // on b, own orientation
       c.patches[p].samples.push_back(static_cast<int>(c.samples.size()));
       c.samples.push_back({c.patches[p].halfspace, p});
     }
@@ -269,7 +295,7 @@ rc::Gen<Scene2> gen_grid_scene() {
         for (int t = 1; t < 8; ++t) {
           const PointQ2& a = v[e];
           const PointQ2& b = v[(e + 1) % v.size()];
-          const Rational f(t, 8);
+          const Rational f = make_rational(t, 8);
           PointQ2 p{a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f};
           p.x.canonicalize();
           p.y.canonicalize();
@@ -290,6 +316,55 @@ rc::Gen<Scene2> gen_grid_scene() {
   }));
 }
 
+/// Generic scenes (every junction a transversal crossing) with exact ties: a rectangle R = [0,w]x[0,h] crossed by
+/// vertical lines at integer x (either orientation) and maybe the line y = h/2, samples at multiples of 1/4 inside
+/// patches. Half of them contain the tie of "bsh unit: Fig. 6 (generic)": a 2 x 2 room between x = a and
+/// x = a + 2 with samples on both lines, on R's top and bottom over the room, and on R's two ends.
+rc::Gen<Scene2> gen_rooms_scene() {
+  return rc::gen::resize(100, rc::gen::exec([]() -> Scene2 {
+    const bool tie = *rc::gen::inRange(0, 2) == 0;
+    const int w = *rc::gen::inRange(tie ? 5 : 3, 7), h = tie ? 2 : *rc::gen::inRange(1, 3);
+    std::vector<Halfspace2> hs{polygon("R", {pt(0, 0), pt(w, 0), pt(w, h), pt(0, h)})};
+    std::set<int> used;
+    std::vector<std::pair<std::string, PointQ2>> pattern_samples;
+    if (tie) {
+      // The generic tie of "bsh unit: Fig. 6 (generic)": a 2 x 2 room between x = a and x = a + 2.
+      const int a = *rc::gen::inRange(1, w - 2);
+      used = {a, a + 2};
+      hs.push_back(halfplane("x" + std::to_string(a) + "-", pt(1, 0), a));
+      hs.push_back(halfplane("x" + std::to_string(a + 2) + "+", pt(-1, 0), -(a + 2)));
+      pattern_samples = {{hs[1].name, pt(a, 1)}, {hs[2].name, pt(a + 2, 1)}, {"R", pt(a + 1, 0)},
+                         {"R", pt(a + 1, 2)},    {"R", pt(0, 1)},           {"R", pt(w, 1)}};
+    }
+    const int n = *rc::gen::inRange(tie ? 0 : 1, tie ? 2 : 4);
+    for (int k = 0; k < n; ++k) {
+      const int c = *rc::gen::inRange(1, w);
+      if (!used.insert(c).second) continue;
+      const int sign = *rc::gen::inRange(0, 2) ? 1 : -1;
+      hs.push_back(halfplane("x" + std::to_string(c) + (sign > 0 ? "-" : "+"), pt(sign, 0), sign * c));
+    }
+    if (*rc::gen::inRange(0, 2)) hs.push_back(halfplane("y", pt(0, 1), make_rational(h, 2)));
+    Scene2 scene = make_scene(Box2{pt(-1, -1), pt(w + 1, h + 1)}, hs);
+    const Arrangement2 arrangement = Arrangement2::build(scene);
+    std::vector<std::pair<int, PointQ2>> fitting;
+    for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i)
+      for (int x = 0; x <= 4 * w; ++x)
+        for (int y = 0; y <= 4 * h; ++y) {
+          const PointQ2 p = pt(make_rational(x, 4), make_rational(y, 4));
+          if (scene.halfspaces[i].side(p) == 0 && sample_fits(arrangement, i, p)) fitting.emplace_back(i, p);
+        }
+    for (const auto& [name, p] : pattern_samples)
+      if (sample_fits(arrangement, scene.find_halfspace(name), p)) add_sample(scene, name, p);
+    const int samples = tie ? *rc::gen::inRange(0, 3) : *rc::gen::inRange(1, 9);
+    for (int k = 0; k < samples && !fitting.empty(); ++k) {
+      const auto& [i, p] = fitting[*rc::gen::inRange(0, static_cast<int>(fitting.size()))];
+      add_sample(scene, scene.halfspaces[i].name, p);
+    }
+    validate_and_resolve(scene);
+    return scene;
+  }));
+}
+
 // Beam K = 1 optimality, recorded by property 8 and printed at its end.
 long g_beam_cases = 0, g_beam_optimal = 0;
 
@@ -302,55 +377,61 @@ TEST_CASE("bsh property 1: best-first = brute force (Prop. 5.2), same boundary u
     const Complex complex = complex_of(scene);
     const Problem problem(complex);
     const BruteForceResult bf = oracle(problem, true);
-    const ExtractResult r = best_first(problem);
-    RC_ASSERT(r.sample_connected);
-    RC_ASSERT(sample_connectivity(problem, r.labelling).sample_connected());
-    RC_ASSERT(is_orientation_preserving(problem, r.labelling));
-    const Order order = compare(r.energy, bf.energy);
-    RC_TAG(to_string(order));
-    RC_CLASSIFY(r.stats.states_expanded > 1, "searched past the root");
-    if (order != Order::Equal) {
-      // Only an unseparated tie may differ from Equal, and then neither side may claim a unique proven answer.
-      RC_ASSERT(order == Order::Tie);
-      RC_ASSERT(!bf.certified);
-      RC_ASSERT(!unique_proven(r));
-    }
-    RC_ASSERT(contains(bf.optimal, r.labelling));
-    for (const Labelling& t : r.tied) RC_ASSERT(contains(bf.optimal, t));
-    if (r.labelling != bf.optimal.front()) {
-      RC_ASSERT(bf.optimal.size() > 1u);
-      if (r.ties.checked) RC_ASSERT(r.ties.count > 1);
-    }
-    if (r.optimal && r.ties.checked && !r.ties.capped && bf.certified && r.ties.certified)
-      RC_ASSERT(static_cast<std::size_t>(r.ties.count) == bf.optimal.size());
-    if (r.ties.count > 1) RC_TAG("tie");
+    const bool generic = problem.non_generic_junctions().empty();
+    // The search alone: proven complete at generic junctions only (Prop. 5.1); elsewhere it may miss the
+    // optimum and must then not claim optimality.
+    const ExtractResult search = best_first(problem, true);
+    check_against_oracle(problem, search, bf, generic);
+    if (!generic) RC_ASSERT(!search.optimal);
+    RC_CLASSIFY(!generic, "non-generic");
+    RC_CLASSIFY(!generic && compare(search.energy, bf.energy) == Order::Greater, "search missed the optimum");
+    RC_CLASSIFY(search.stats.states_expanded > search.ties.count, "searched past the root");
+    RC_CLASSIFY(bf.optimal.size() > 1u, "tie");
+    // hsx's default certifies non-generic cases with the oracle: then it is exact everywhere.
+    check_against_oracle(problem, generic ? search : best_first(problem), bf, true);
   });
 }
 
-TEST_CASE("bsh property 1b: best-first = brute force on grid scenes, ties enumerated completely",
+TEST_CASE("bsh property 1b: best-first = brute force on grid scenes (non-generic junctions, ties)",
           "[bsh][property][prop52][ties]") {
   rc::prop("best-first energy, boundary and tie count match the oracle", [] {
     const Scene2 scene = *gen_grid_scene();
     const Complex complex = complex_of(scene);
     const Problem problem(complex);
     const BruteForceResult bf = oracle(problem, true);
-    const ExtractResult r = best_first(problem);
     RC_ASSERT(bf.certified);  // straight scenes: every comparison is exact
+    const bool generic = problem.non_generic_junctions().empty();
+    const ExtractResult search = best_first(problem, true);
+    check_against_oracle(problem, search, bf, generic);
+    const ExtractResult r = best_first(problem);
+    check_against_oracle(problem, r, bf, true);
     RC_ASSERT(r.optimal);
     RC_ASSERT(r.ties.checked);
     RC_ASSERT(r.ties.certified);
-    RC_ASSERT(compare(r.energy, bf.energy) == Order::Equal);
-    RC_ASSERT(contains(bf.optimal, r.labelling));
-    for (const Labelling& t : r.tied) RC_ASSERT(contains(bf.optimal, t));
+    if (!r.ties.capped) RC_ASSERT(static_cast<std::size_t>(r.ties.count) == bf.optimal.size());
+    RC_CLASSIFY(r.ties.count > 1, "tie");
+    RC_CLASSIFY(!generic, "non-generic");
+    RC_CLASSIFY(compare(search.energy, bf.energy) == Order::Greater, "search missed the optimum");
+  });
+}
+
+TEST_CASE("bsh property 1c: best-first search = brute force on generic scenes with ties (tie enumeration)",
+          "[bsh][property][prop52][ties]") {
+  rc::prop("the search alone finds the optimum and enumerates every tie", [] {
+    const Scene2 scene = *gen_rooms_scene();
+    const Complex complex = complex_of(scene);
+    const Problem problem(complex);
+    RC_ASSERT(problem.non_generic_junctions().empty());  // crossings only, by construction
+    const BruteForceResult bf = oracle(problem, true);
+    RC_ASSERT(bf.certified);
+    const ExtractResult r = best_first(problem, true);
+    check_against_oracle(problem, r, bf, true);
+    RC_ASSERT(r.optimal);
+    RC_ASSERT(r.ties.checked);
+    RC_ASSERT(r.ties.certified);
     if (!r.ties.capped) RC_ASSERT(static_cast<std::size_t>(r.ties.count) == bf.optimal.size());
     RC_CLASSIFY(r.ties.count > 1, "tie");
     RC_CLASSIFY(r.stats.states_expanded > r.ties.count, "searched past the root");
-    RC_CLASSIFY(complex.samples.empty(), "no samples");
-    RC_CLASSIFY(complex.cells.size() > 6, "more than 6 cells");
-    // Prop. 5.1 on the root graph cut against every optimum.
-    const CutResult root = graph_cut(problem, {});
-    if (!sample_connectivity(problem, root.labelling).sample_connected())
-      for (const Labelling& b_prime : bf.optimal) RC_ASSERT(prop51_violation(problem, root.labelling, b_prime) == -1);
   });
 }
 
@@ -465,8 +546,9 @@ TEST_CASE("bsh property 4: a child state's energy is never below its parent's (P
     const auto on = boundary_supports(problem, target);
     if (!on.empty()) {
       const SupportTerm& s = problem.supports()[on[*rc::gen::inRange(0, static_cast<int>(on.size()))]];
-      base.forced[s.inside_cell] = 1;
-      base.forced[s.outside_cell] = 0;
+      const int one = target[s.cell_a] ? s.cell_a : s.cell_b;
+      base.forced[one] = 1;
+      base.forced[one == s.cell_a ? s.cell_b : s.cell_a] = 0;
     }
     const CutResult root = graph_cut(problem, base);
     RC_PRE(root.energy.missing_samples >= 0);
@@ -490,26 +572,37 @@ TEST_CASE("bsh property 5: Prop. 5.1 - an island or one of its neighbours is not
     const Scene2 scene = *gen_scene(small_scenes());
     const Complex complex = complex_of(scene);
     const Problem problem(complex);
-    const ExtractResult best = best_first(problem);
-    RC_ASSERT(best.sample_connected);
-    std::vector<Labelling> targets{best.labelling};
-    targets.insert(targets.end(), best.tied.begin(), best.tied.end());
+    // b' ranges over every optimum (from the oracle) and the best-first result; b over the root graph cut and a
+    // random orientation-preserving labelling. Proven for generic junctions only (proofs/bsh.md); at non-generic
+    // ones a failure is recorded, not asserted (see "bsh unit: three concurrent lines ...").
+    const BruteForceResult bf = oracle(problem, true);
+    std::vector<Labelling> targets = bf.optimal;
+    targets.push_back(best_first(problem, true).labelling);
+    const bool generic = problem.non_generic_junctions().empty();
     const CutResult root = graph_cut(problem, {});
     const Labelling random = random_op_labelling(problem);
     RC_CLASSIFY(!sample_connectivity(problem, root.labelling).sample_connected(), "root has islands");
+    RC_CLASSIFY(!generic, "non-generic");
+    bool failed_non_generic = false;
     for (const Labelling& b : {root.labelling, random}) {
       if (sample_connectivity(problem, b).sample_connected()) continue;
       for (const Labelling& b_prime : targets) {
         const int bad = prop51_violation(problem, b, b_prime);
+        const bool checker_passes = check_prop51(problem, b, b_prime).status == CheckResult::Pass;
+        RC_ASSERT(checker_passes == (bad == -1));  // hsx's checker agrees with this file's
+        if (!generic) {
+          failed_non_generic = failed_non_generic || bad >= 0;
+          continue;
+        }
         if (bad >= 0) {
           const auto comps = sample_connectivity(problem, b).components;
           RC_LOG() << "island starting at patch " << comps[bad].patches.front() << " of halfspace "
                    << comps[bad].halfspace << "\n";
         }
         RC_ASSERT(bad == -1);
-        RC_ASSERT(check_prop51(problem, b, b_prime).status == CheckResult::Pass);
       }
     }
+    RC_CLASSIFY(failed_non_generic, "Prop. 5.1 fails (non-generic)");
   });
 }
 
@@ -535,7 +628,9 @@ TEST_CASE("bsh property 6: Prop. 4.1 - one sample per boundary patch reproduces 
       const BruteForceResult bf = oracle(problem, true);
       RC_ASSERT(bf.optimal.size() == 1u);
       RC_ASSERT(bf.optimal.front() == l);
-      RC_ASSERT(check_prop41(complex, l).status == CheckResult::Pass);
+      // hsx's checker: never Fail here (it may say Skipped where a coincident patch is used reversed; see
+      // "bsh unit: two squares sharing an edge ...").
+      RC_ASSERT(check_prop41(complex, l).status != CheckResult::Fail);
     }
   });
 }
@@ -639,51 +734,5 @@ TEST_CASE("bsh property 9: junction parity, and 0 or 2 boundary ends at transver
       const auto it = ends.find(j);
       RC_ASSERT((it == ends.end() || it->second == 2));
     }
-  });
-}
-rc::Gen<Scene2> gen_lines_scene() {
-  return rc::gen::resize(100, rc::gen::exec([]() -> Scene2 {
-    std::vector<Halfspace2> hs;
-    for (int axis = 0; axis < 2; ++axis) {
-      const int n = *rc::gen::inRange(2, 5);
-      std::set<int> used;
-      for (int k = 0; k < n; ++k) {
-        const int c = *rc::gen::inRange(0, 6);
-        if (!used.insert(c).second) continue;
-        const int sign = *rc::gen::inRange(0, 2) ? 1 : -1;
-        const PointQ2 normal = axis == 0 ? pt(sign, 0) : pt(0, sign);
-        hs.push_back(halfplane((axis ? "y" : "x") + std::to_string(c) + (sign > 0 ? "-" : "+"), normal, sign * c));
-      }
-    }
-    Scene2 scene = make_scene(Box2{pt(-1, -1), pt(6, 6)}, hs);
-    const Arrangement2 arrangement = Arrangement2::build(scene);
-    std::vector<std::pair<int, PointQ2>> fitting;
-    for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
-      const Halfspace2& h = scene.halfspaces[i];
-      for (int t = 0; t < 12; ++t) {
-        const Rational u(2 * t + 1, 2), c = h.offset / (h.normal.x + h.normal.y);
-        const PointQ2 p = h.normal.x != 0 ? PointQ2{c, u / 2} : PointQ2{u / 2, c};
-        if (sample_fits(arrangement, i, p)) fitting.emplace_back(i, p);
-      }
-    }
-    const int samples = *rc::gen::inRange(1, 9);
-    for (int k = 0; k < samples && !fitting.empty(); ++k) {
-      const auto& [i, p] = fitting[*rc::gen::inRange(0, static_cast<int>(fitting.size()))];
-      add_sample(scene, scene.halfspaces[i].name, p);
-    }
-    validate_and_resolve(scene);
-    return scene;
-  }));
-}
-TEST_CASE("scratch generic ties", "[.scratch3]") {
-  int found = 0;
-  rc::prop("x", [&] {
-    const Scene2 scene = *gen_lines_scene();
-    const Complex complex = complex_of(scene);
-    const Problem problem(complex);
-    if (!problem.non_generic_junctions().empty()) return;
-    const BruteForceResult bf = brute_force(problem, true, kOracleLimit);
-    if (bf.optimal.size() > 1 && found < 5) { ++found; std::cerr << bf.optimal.size() << " " << scene_text(scene) << "\n"; }
-    RC_TAG(bf.optimal.size() > 1);
   });
 }

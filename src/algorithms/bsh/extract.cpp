@@ -180,13 +180,14 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   return out;
 }
 
-/// Labels that put support g on the boundary with its orientation (inside cell 1, outside cell 0).
-bool force_on(const Problem& problem, int g, std::vector<signed char>& forced) {
+/// Labels that put support g on the boundary as `labelling` has it (its inside cell 1, the other 0).
+bool force_on(const Problem& problem, int g, const Labelling& labelling, std::vector<signed char>& forced) {
   const SupportTerm& s = problem.supports()[g];
-  if (s.inside_cell < 0) return false;
-  if (forced[s.inside_cell] == 0 || forced[s.outside_cell] == 1) return false;
-  forced[s.inside_cell] = 1;
-  forced[s.outside_cell] = 0;
+  const int inside = labelling[s.cell_a] ? s.cell_a : s.cell_b;
+  const int outside = inside == s.cell_a ? s.cell_b : s.cell_a;
+  if (forced[inside] == 0 || forced[outside] == 1) return false;
+  forced[inside] = 1;
+  forced[outside] = 0;
   return true;
 }
 
@@ -211,7 +212,9 @@ void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult&
     std::vector<signed char> forced = space.forced;
     for (int g : boundary_supports(problem, space.optimum)) {
       const SupportTerm& s = problem.supports()[g];
-      const bool already_forced = forced[s.inside_cell] == 1 && forced[s.outside_cell] == 0;
+      const int inside = space.optimum[s.cell_a] ? s.cell_a : s.cell_b;
+      const int outside = inside == s.cell_a ? s.cell_b : s.cell_a;
+      const bool already_forced = forced[inside] == 1 && forced[outside] == 0;
       if (!already_forced && !std::binary_search(space.removed.begin(), space.removed.end(), g)) {
         std::vector<int> removed = merged(space.removed, {g});
         SearchOutcome sub = search(ctx, removed, forced, 0);
@@ -233,7 +236,7 @@ void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult&
           }
         }
       }
-      if (!force_on(problem, g, forced)) break;  // nothing later in this subspace can keep g
+      if (!force_on(problem, g, space.optimum, forced)) break;  // nothing later in this subspace can keep g
     }
   }
   result.ties.count = static_cast<int>(found.size());
@@ -372,12 +375,9 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, long lim
       implies[x].push_back(y);
       implied_by[y].push_back(x);
     };
-    if (s.inside_cell >= 0) {
-      link(s.outside_cell, s.inside_cell);
-    } else {
-      link(s.cell_a, s.cell_b);
-      link(s.cell_b, s.cell_a);
-    }
+    // Only a-inside allowed: b = 1 forces a = 1; only b-inside: the reverse; neither: equal labels.
+    if (!s.allow_b_inside) link(s.cell_b, s.cell_a);
+    if (!s.allow_a_inside) link(s.cell_a, s.cell_b);
   }
   BruteForceResult result;
   std::vector<signed char> label(n, -1);

@@ -168,14 +168,9 @@ Terms build_terms(const Problem& problem, const CutConstraints& constraints) {
     const SupportTerm& s = problem.supports()[g];
     Capacity& ab = t.binary[{s.cell_a, s.cell_b}];
     Capacity& ba = t.binary[{s.cell_b, s.cell_a}];
-    if ((!constraints.removed.empty() && constraints.removed[g]) || s.inside_cell < 0) {
-      ab = ba = Capacity::inf();
-      continue;
-    }
-    Capacity& allowed = s.inside_cell == s.cell_a ? ab : ba;
-    Capacity& forbidden = s.inside_cell == s.cell_a ? ba : ab;
-    forbidden = Capacity::inf();
-    allowed = allowed + Capacity::of_support(problem, g);
+    const bool removed = !constraints.removed.empty() && constraints.removed[g];
+    ab = !removed && s.allow_a_inside ? ab + Capacity::of_support(problem, g) : Capacity::inf();
+    ba = !removed && s.allow_b_inside ? ba + Capacity::of_support(problem, g) : Capacity::inf();
   }
   return t;
 }

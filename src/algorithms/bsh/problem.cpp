@@ -22,13 +22,16 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
     const Patch& first = complex.patches.at(term.patches.at(0));
     term.cell_a = first.inside_cell;
     term.cell_b = first.outside_cell;
-    term.inside_cell = first.inside_cell;
-    term.outside_cell = first.outside_cell;
+    bool sampled_a = false, sampled_b = false;
     for (int p : term.patches) {
       const Patch& patch = complex.patches[p];
       term.samples += static_cast<long>(patch.samples.size());
-      if (patch.inside_cell != term.inside_cell) term.inside_cell = term.outside_cell = -1;
+      const bool a_inside = patch.inside_cell == term.cell_a;
+      (a_inside ? term.allow_a_inside : term.allow_b_inside) = true;
+      if (!patch.samples.empty()) (a_inside ? sampled_a : sampled_b) = true;
     }
+    if (sampled_b) term.allow_a_inside = false;
+    if (sampled_a) term.allow_b_inside = false;
     term.measure = first.measure;
     const Interval enclosure = term.measure.enclose(64);
     support_enclosures_.emplace_back(enclosure.lo_double(), enclosure.hi_double());
@@ -92,12 +95,11 @@ bool is_orientation_preserving(const Problem& problem, const Labelling& labellin
     }
   for (int g : boundary_supports(problem, labelling)) {
     const SupportTerm& s = problem.supports()[g];
-    if (s.inside_cell < 0 || !labelling[s.inside_cell]) {
+    if (!s.allows(labelling[s.cell_a] ? s.cell_a : s.cell_b)) {
       if (why)
         *why = "patch " + std::to_string(s.patches.front()) + " (" +
-               c.halfspace_names[c.patches[s.patches.front()].halfspace] + ") is on the boundary " +
-               (s.inside_cell < 0 ? "although its coincident halfspaces disagree on inside"
-                                  : "with its orientation reversed");
+               c.halfspace_names[c.patches[s.patches.front()].halfspace] +
+               ") is on the boundary with an orientation none of its (sampled) halfspaces has";
       return false;
     }
   }
@@ -109,8 +111,11 @@ Energy energy(const Problem& problem, const Labelling& labelling) {
   e.missing_samples = problem.total_samples();
   for (int g : boundary_supports(problem, labelling)) {
     const SupportTerm& s = problem.supports()[g];
-    e.missing_samples -= s.samples;
     e.measure += s.measure;
+    for (int p : s.patches) {
+      const Patch& patch = problem.complex().patches[p];
+      if (labelling[patch.inside_cell]) e.missing_samples -= static_cast<long>(patch.samples.size());
+    }
   }
   return e;
 }
@@ -120,7 +125,7 @@ SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& 
   SampleConnectivity out;
   std::vector<char> on_b(c.patches.size(), 0);
   for (int g : boundary_supports(problem, labelling))
-    for (int p : problem.supports()[g].patches) on_b[p] = 1;
+    for (int p : problem.supports()[g].patches) on_b[p] = labelling[c.patches[p].inside_cell];
   // Union-find over patches of the same halfspace that share a junction.
   std::vector<int> parent(c.patches.size());
   std::iota(parent.begin(), parent.end(), 0);

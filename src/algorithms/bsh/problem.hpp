@@ -4,15 +4,19 @@
 // - A labelling gives every cell 1 (inside the shape) or 0 (outside); outer cells are always 0.
 // - The boundary b of a labelling is the set of supports (groups of coincident patches, complex/complex.hpp)
 //   whose two cells have different labels; a patch is on b when its support is.
-// - Orientation-preserving (Def. 3.1): a support may lie on b only with its halfspaces' inside cell labelled 1.
-//   On coincident boundaries hsx asks this of EVERY halfspace through the support (Def. 3.1 without its
-//   genericity escape clause), so a halfspace given twice behaves like one, and a disk and its complement
-//   cannot be used at all where they coincide. Equivalently: label(outside cell) = 1 implies label(inside) = 1,
-//   and a support whose halfspaces disagree forces equal labels.
-// - A sample is covered when its patch is on b. Energy (Eq. 1) is the pair (missing samples, measure of b)
-//   compared lexicographically: no lambda constant.
-// - Sample-connected (Def. 3.2): for every halfspace i, every connected component of b ∩ b_i (patches of i on b,
-//   connected through shared junctions) holds a sample of i.
+// - Orientation-preserving (Def. 3.1): a support may lie on b only with an orientation (which of its two cells
+//   is labelled 1) that one of its halfspaces has. On coincident boundaries (Def. 3.1 leaves them open) hsx adds:
+//   a patch of halfspace i "is on b" only where b has i's orientation, and a sampled patch may not be used
+//   reversed (a sample of i says "this boundary, with i's inside"). So a halfspace given twice behaves like one,
+//   two squares sharing an edge line can use it either way, and a disk and its complement both sampled on the
+//   same arc keep that arc off b. Equivalently, per support: an orientation is allowed iff some halfspace has it
+//   and no sampled patch has the other; as implications: "cell b inside => cell a inside" when only a-inside is
+//   allowed, and equal labels when neither is.
+// - A sample is covered when its patch is on b (with its halfspace's orientation). Energy (Eq. 1) is the pair
+//   (missing samples, measure of b) compared lexicographically: no lambda constant. The measure counts each
+//   support once.
+// - Sample-connected (Def. 3.2): for every halfspace i, every connected component of b ∩ b_i (patches of i on b
+//   with i's orientation, connected through shared junctions) holds a sample of i.
 #pragma once
 
 #include "complex/complex.hpp"
@@ -35,9 +39,10 @@ Order compare(const Energy& a, const Energy& b, const CompareOptions& options = 
 
 /// One support group seen by the labelling problem.
 struct SupportTerm {
-  int inside_cell = -1;   ///< the cell its halfspaces have inside (-1 when they disagree: never on b)
-  int outside_cell = -1;
   int cell_a = -1, cell_b = -1;  ///< the two cells, in the first patch's inside/outside order
+  bool allow_a_inside = false;   ///< may lie on b with cell_a = 1, cell_b = 0
+  bool allow_b_inside = false;   ///< may lie on b with cell_b = 1, cell_a = 0
+  bool allows(int inside) const { return inside == cell_a ? allow_a_inside : allow_b_inside; }
   std::vector<int> patches;
   long samples = 0;       ///< samples on all its patches
   Measure measure;        ///< counted once

@@ -432,18 +432,20 @@ int run_corpus(const CorpusOptions& o) {
     std::string program, failure;
     std::size_t samples = 0;
     int lower = 0, upper = 0, leaves = 0, duplicated = 0;
+    bool sufficient_set = false;
     double seconds = 0;
   };
   std::vector<Row> rows;
   std::string line;
   long number = 0;
   long ok = 0, not_describable = 0, bhc_failed = 0, round_trip_failed = 0, errors = 0, malformed = 0;
+  long sufficient_sets = 0;
   long total_samples = 0, total_lower = 0, total_upper = 0;
   double total_seconds = 0;
   while (std::getline(in, line)) {
     ++number;
     if (line.empty() || number < o.first) continue;
-    if (o.limit > 0 && static_cast<long>(rows.size()) >= o.limit) break;
+    if (o.limit > 0 && number >= o.first + o.limit) break;  // the range is of lines, malformed ones included
     Row row{number, line, ""};
     const auto start = std::chrono::steady_clock::now();
     std::optional<CsgnetProgram> parsed;
@@ -485,6 +487,12 @@ int run_corpus(const CorpusOptions& o) {
           continue;
         }
         row.samples = report.samples.sample_patches.size();
+        row.sufficient_set = report.samples.used_sufficient_set;
+        if (row.sufficient_set) {
+          ++sufficient_sets;
+          std::cout << "line " << row.line << ": GENERATE-SAMPLES missed the target (search incomplete at "
+                    << "non-generic junctions); used one sample per boundary patch\n";
+        }
         row.lower = report.samples.initial;
         row.upper = report.samples.upper_bound;
         if (!report.round_trip) {
@@ -509,13 +517,15 @@ int run_corpus(const CorpusOptions& o) {
   std::cout << rows.size() << " programs (" << malformed << " malformed lines skipped): " << ok << " ok, " << not_describable << " not describable, " << bhc_failed
             << " BHC failures, " << round_trip_failed << " round-trip failures, " << errors << " errors\n"
             << "samples " << total_samples << " (lower bound " << total_lower << ", upper bound " << total_upper
-            << "), " << total_seconds << " s\n";
+            << "), " << sufficient_sets << " programs needed one sample per boundary patch, " << total_seconds
+            << " s\n";
   if (!o.json_path.empty()) {
     nlohmann::json list = nlohmann::json::array();
     for (const Row& r : rows)
       list.push_back({{"line", r.line}, {"program", r.program}, {"ok", r.failure.empty()}, {"failure", r.failure},
                       {"samples", r.samples}, {"lower_bound", r.lower}, {"upper_bound", r.upper},
-                      {"leaves", r.leaves}, {"duplicated_halfspaces", r.duplicated}, {"seconds", r.seconds}});
+                      {"leaves", r.leaves}, {"duplicated_halfspaces", r.duplicated},
+                      {"sufficient_set", r.sufficient_set}, {"seconds", r.seconds}});
     write_file_atomically(o.json_path, nlohmann::json{{"format", "hsx-corpus/1"}, {"programs", list}}.dump(1) + "\n");
   }
   std::cout << (ok == static_cast<long>(rows.size()) ? "all" : "NOT all") << " programs passed\n";

@@ -515,6 +515,7 @@ bool random_target(const Complex& c, const bsh::Problem& problem, bsh::Labelling
     eo.method = bsh::Method::BestFirst;
     eo.max_states = 200;
     eo.enumerate_ties = false;
+    eo.certify_limit = 0;  // any orientation-preserving, sample-connected boundary will do as a target
     const bsh::ExtractResult r = bsh::extract(problem, eo);
     if (!r.stopped_by.empty()) return false;
     target = r.labelling;
@@ -559,10 +560,14 @@ void check_generate_samples(bsh::Method method, SkipCounts& skipped) {
   bsh::SampleGenOptions options;
   options.search = method;
   options.beam_width = 1;
+  options.fallback_states = 0;  // the paper's algorithm alone: no best-first rescue of a beam round
   const bsh::SampleGenResult r = bsh::generate_samples(c, target, options);
   RC_LOG() << "failure: " << r.failure << "\n";
   RC_ASSERT(r.reproduced);
   RC_ASSERT(r.failure.empty());
+  // Fig. 12's greedy rounds did it: no fallback to Section 6.2's sufficient set (one sample per patch of b).
+  RC_ASSERT(r.fallbacks == 0);
+  RC_ASSERT(!r.used_sufficient_set);
   RC_ASSERT(r.upper_bound >= patches);  // all patches of b's supports; `patches` counts those with b's orientation
   RC_ASSERT(r.rounds >= 1);
   RC_ASSERT(r.rounds <= patches + 1);
@@ -636,15 +641,19 @@ TEST_CASE("csg theory explore: GENERATE-SAMPLES on non-generic junctions", "[.ex
     bsh::Labelling target;
     RC_PRE(random_target(c, problem, target));
     RC_PRE(boundary_patch_count(c, target) <= 16);
-    for (bsh::Method m : {bsh::Method::Beam, bsh::Method::BestFirst}) {
+    std::vector<bsh::Method> methods{bsh::Method::Beam};
+    if (!std::getenv("HSX_EXPLORE_BEAM_ONLY")) methods.push_back(bsh::Method::BestFirst);
+    for (bsh::Method m : methods) {
       bsh::SampleGenOptions so;
       so.search = m;
+      so.fallback_states = 0;
       const bsh::SampleGenResult r = bsh::generate_samples(c, target, so);
       std::string cells;
       for (int k = 0; k < problem.cell_count(); ++k)
         if (target[k]) cells += " " + std::to_string(k);
       RC_LOG() << bsh::to_string(m) << ": " << r.failure << "; target cells" << cells << "\n";
       RC_ASSERT(r.reproduced);
+      RC_ASSERT(!r.used_sufficient_set);
     }
   });
 }
@@ -659,12 +668,38 @@ TEST_CASE("csg theory explore: GENERATE-SAMPLES on the Prop. 5.1 counterexample 
     for (bsh::Method m : {bsh::Method::Beam, bsh::Method::BestFirst}) {
       bsh::SampleGenOptions so;
       so.search = m;
+      so.fallback_states = 0;
       const bsh::SampleGenResult r = bsh::generate_samples(c, target, so);
       std::string cells;
       for (int k = 0; k < static_cast<int>(target.size()); ++k)
         if (target[k]) cells += " " + std::to_string(k);
       RC_LOG() << bsh::to_string(m) << ": " << r.failure << "; target cells" << cells << "\n";
       RC_ASSERT(r.reproduced);
+      RC_ASSERT(!r.used_sufficient_set);
     }
   });
+}
+
+// Not run by default: GENERATE-SAMPLES on one input, for studying a counterexample. Environment: HSX_CX_SCENE (a
+// scene file), HSX_CX_TARGET (the target as a CSG expression over its halfspaces), HSX_CX_METHOD (beam or
+// best-first). Prints the rounds and whether the greedy rounds reproduced the target without fallbacks.
+TEST_CASE("csg theory explore: GENERATE-SAMPLES on one input", "[.explore-one]") {
+  const char* path = std::getenv("HSX_CX_SCENE");
+  const char* expr = std::getenv("HSX_CX_TARGET");
+  const char* method = std::getenv("HSX_CX_METHOD");
+  if (!path || !expr) return;
+  const Scene2 scene = read_scene_file(path);
+  const Complex c = complex_of(scene);
+  const bsh::Labelling target = evaluate(*parse_csg_text(expr, c.halfspace_names), c);
+  const bsh::Problem problem(c);
+  bsh::SampleGenOptions so;
+  so.search = method && std::string(method) == "best-first" ? bsh::Method::BestFirst : bsh::Method::Beam;
+  so.fallback_states = 0;
+  const bsh::SampleGenResult r = bsh::generate_samples(c, target, so);
+  std::cout << "non-generic junctions " << problem.non_generic_junctions().size() << ", orientation-preserving "
+            << bsh::is_orientation_preserving(bsh::Problem(bsh::with_samples_on(c, {})), target) << ", initial "
+            << r.initial << ", rounds " << r.rounds << ", reproduced " << r.reproduced << ", sufficient set "
+            << r.used_sufficient_set << ", boundary patches " << boundary_patch_count(c, target) << "\n";
+  CHECK(r.reproduced);
+  CHECK_FALSE(r.used_sufficient_set);
 }

@@ -1,0 +1,282 @@
+#!/usr/bin/env bash
+# End-to-end tests of the Halfspace CSG commands: usage: csg_cli_tests.sh PATH/TO/hsx SOURCE_DIR
+# - hsx describe SCENE --csg/--shape --json: describable, terms, mixed_terms (signs, cells, witness points);
+# - hsx csg SCENE --csg/--shape --json: tree, text, verified, stats, area {decimal, exact}; --separators on BSH
+#   Fig. 2's non-describable shapes 5 and 6 (data/figures/fig02-{5,6}.json) makes them describable, verified;
+# - hsx convert SCENE --csg EXPR --out S, then hsx extract S: the same area as hsx csg gives for the solid;
+#   hsx convert --csgnet PROGRAM --out S, then hsx extract S: the area of the same solid written as CSG over S;
+#   orientation rule: a halfspace used reversed is complemented; used both ways: a failure (exit 3);
+# - hsx samples SCENE --target/--csg --json: reproduced, counts within their bounds;
+# - bad inputs exit 2 with a message naming the option (and write no output file);
+# - hsx corpus csgnet FILE --limit 5 when SOURCE_DIR/../shared/data/csgnet/best_st_expressions.txt exists.
+# Prints "N passed, M failed" and exits non-zero when anything failed.
+set -u
+
+HSX="${1:?usage: csg_cli_tests.sh PATH/TO/hsx SOURCE_DIR}"
+SRC="${2:-$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)}"
+if [[ ! -x "$HSX" ]]; then
+  echo "hsx not found at $HSX: skipped"
+  exit 77
+fi
+FIG="$SRC/data/figures"
+SCENES="$SRC/data/scenes"
+TMP="$(mktemp -d "${TMPDIR:-/tmp}/hsx-csg-cli-tests.XXXXXX")"
+trap 'rm -rf "$TMP"' EXIT
+
+passed=0
+failed=0
+pass() { passed=$((passed + 1)); }
+fail() {
+  failed=$((failed + 1))
+  echo "FAIL: $*" >&2
+}
+# check NAME COMMAND...: the command's exit status decides.
+check() {
+  local name="$1"
+  shift
+  if "$@"; then pass; else fail "$name"; fi
+}
+# run EXPECTED_STATUS NAME COMMAND...: runs the command (stdout to $TMP/out, stderr to $TMP/err).
+run() {
+  local expected="$1" name="$2"
+  shift 2
+  "$@" >"$TMP/out" 2>"$TMP/err"
+  local status=$?
+  if [[ "$status" == "$expected" ]]; then
+    pass
+    return 0
+  fi
+  fail "$name: exit $status, expected $expected; stderr: $(head -c 400 "$TMP/err")"
+  return 1
+}
+# json FILE PYTHON-EXPRESSION: evaluates the expression with `d` bound to the document; exit 0 iff truthy.
+json() {
+  python3 - "$1" "$2" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+try:
+    ok = eval(sys.argv[2])
+except Exception as e:
+    print("json check raised %r" % e, file=sys.stderr)
+    sys.exit(1)
+if not ok:
+    print("json check failed: %s" % sys.argv[2], file=sys.stderr)
+sys.exit(0 if ok else 1)
+EOF
+}
+# field FILE PYTHON-EXPRESSION: prints the expression's value.
+field() {
+  python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); print(eval(sys.argv[2]))' "$1" "$2"
+}
+# err_names WORD...: stderr of the last run mentions every word.
+err_names() {
+  local w
+  for w in "$@"; do
+    if ! grep -qF -- "$w" "$TMP/err"; then
+      fail "stderr does not name '$w': $(head -c 400 "$TMP/err")"
+      return 1
+    fi
+  done
+  pass
+}
+
+# ---- the best-first results of Fig. 2's scenes (shapes 5 and 6 have no CSG expression over A and B) ----
+for k in 1 2 3 4 5 6; do
+  run 0 "extract fig02-$k" "$HSX" extract "$FIG/fig02-$k.json" --method best-first --json "$TMP/r$k.json"
+done
+
+# ---- describe ----
+if run 0 "describe --csg" "$HSX" describe "$FIG/fig02-1.json" --csg "A & ~B" --json "$TMP/d1.json"; then
+  check "describe: describable, no mixed terms" \
+    json "$TMP/d1.json" 'd["format"] == "hsx-describe/1" and d["describable"] is True and d["mixed_terms"] == [] and d["terms"] == 4'
+fi
+for k in 5 6; do
+  if run 0 "describe fig02-$k" "$HSX" describe "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/d$k.json"; then
+    # One mixed term: A in, B out (the arms L and R), L inside, R outside; witness points on either side of x = 0.
+    check "describe fig02-$k: one mixed term A & ~B with witnesses" json "$TMP/d$k.json" '
+      d["describable"] is False and len(d["mixed_terms"]) == 1 and
+      d["mixed_terms"][0]["signs"] == {"A": "in", "B": "out"} and
+      len(d["mixed_terms"][0]["inside_cells"]) == 1 and len(d["mixed_terms"][0]["outside_cells"]) == 1 and
+      d["mixed_terms"][0]["witness"]["inside"]["cell"] == d["mixed_terms"][0]["inside_cells"][0] and
+      float(eval(d["mixed_terms"][0]["witness"]["inside"]["point"][0].replace("/", "/1./"))) < 0 and
+      float(eval(d["mixed_terms"][0]["witness"]["outside"]["point"][0].replace("/", "/1./"))) > 0'
+  fi
+done
+for k in 1 2 3 4; do
+  run 0 "describe fig02-$k" "$HSX" describe "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/d$k.json" &&
+    check "describe fig02-$k: describable" json "$TMP/d$k.json" 'd["describable"] is True'
+done
+
+# ---- csg ----
+if run 0 "csg --csg" "$HSX" csg "$FIG/fig02-1.json" --csg "A | B" --json "$TMP/c1.json"; then
+  check "csg: tree, verified, stats, area" json "$TMP/c1.json" '
+    d["format"] == "hsx-csg/1" and d["describable"] is True and d["verified"] is True and
+    d["tree"] == {"op": "union", "args": [{"halfspace": "A"}, {"halfspace": "B"}]} and d["text"] == "A | B" and
+    d["stats"]["leaves"] == 2 and d["stats"]["depth"] == 1 and d["stats"]["partitions"] == 0 and
+    d["stats"]["duplicated_halfspaces"] == 0 and d["area"] == {"decimal": "24", "exact": "24"}'
+fi
+# A case that needs a partition: the symmetric difference of the ovals (the four arms).
+if run 0 "csg xor" "$HSX" csg "$FIG/fig02-1.json" --csg "(A - B) | (B - A)" --json "$TMP/cx.json"; then
+  check "csg xor: one partition, both halfspaces duplicated, area 20" json "$TMP/cx.json" '
+    d["verified"] is True and d["stats"]["partitions"] == 1 and d["stats"]["duplicated_halfspaces"] == 2 and
+    d["stats"]["leaves"] == 4 and d["area"]["exact"] == "20"'
+fi
+# The four describable shapes of Fig. 2 from their best-first results: trees verified, areas as docs/figures.md.
+areas=(x 24 4 14 14 9 19)
+for k in 1 2 3 4; do
+  run 0 "csg fig02-$k" "$HSX" csg "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/c$k.json" &&
+    check "csg fig02-$k: verified, area ${areas[$k]}" \
+      json "$TMP/c$k.json" "d['verified'] is True and d['area']['exact'] == '${areas[$k]}'"
+done
+# Shapes 5 and 6: not describable (exit 0, mixed terms, no tree); with --separators: describable and verified.
+for k in 5 6; do
+  if run 0 "csg fig02-$k" "$HSX" csg "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/c$k.json"; then
+    check "csg fig02-$k: not describable, mixed term, no tree" \
+      json "$TMP/c$k.json" "d['describable'] is False and 'tree' not in d and len(d['mixed_terms']) == 1"
+  fi
+  if run 0 "csg fig02-$k --separators" "$HSX" csg "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --separators \
+    --json "$TMP/cs$k.json"; then
+    check "csg fig02-$k --separators: describable, verified, separators listed, area ${areas[$k]}" \
+      json "$TMP/cs$k.json" "d['describable'] is True and d['verified'] is True and len(d['separators']) >= 1 and
+        all(s['kind'] == 'halfplane' for s in d['separators']) and d['area']['exact'] == '${areas[$k]}' and
+        any(leaf == s['name'] for s in d['separators'] for leaf in d['text'].replace('(', ' ').replace(')', ' ').split())"
+  fi
+done
+
+# ---- convert (SCENE --csg) then extract: same area ----
+for expr in "A - B" "(A & B) | (T & ~C)" "A | B"; do
+  name="convert lens.json --csg '$expr'"
+  run 0 "$name: csg" "$HSX" csg "$SCENES/lens.json" --csg "$expr" --json "$TMP/lc.json" || continue
+  run 0 "$name" "$HSX" convert "$SCENES/lens.json" --csg "$expr" --out "$TMP/lo.json" --json "$TMP/lj.json" || continue
+  check "$name: summary" json "$TMP/lj.json" '
+    d["round_trip"] is True and d["lower_bound"] <= d["samples"] <= d["upper_bound"] and d["rounds"] >= 1'
+  run 0 "$name: extract" "$HSX" extract "$TMP/lo.json" --json "$TMP/lr.json" || continue
+  a="$(field "$TMP/lc.json" 'd["area"]')"
+  b="$(field "$TMP/lr.json" 'd["area"]')"
+  if [[ "$a" == "$b" ]]; then pass; else fail "$name: extract area $b, csg area $a"; fi
+done
+# The same with best-first as the conversion's search.
+run 0 "convert --search best-first" "$HSX" convert "$FIG/fig02-1.json" --csg "(A - B) | (B - A)" --search best-first \
+  --out "$TMP/xo.json" &&
+  run 0 "extract converted xor" "$HSX" extract "$TMP/xo.json" --method best-first --json "$TMP/xr.json" &&
+  check "converted xor: area 20" json "$TMP/xr.json" 'd["area"]["exact"] == "20"'
+
+# ---- convert --csgnet, then extract: the area of the same solid written as CSG over the written scene ----
+# c(32,32,16)s(32,40,12)- is the disk minus the square; convert complements the square's sides that the solid runs
+# along reversed (its description lists them). Over the written scene the solid is c0 & (t1 | t2 | t3 | t4) with
+# t = s1.side when that side was complemented, ~s1.side otherwise.
+if run 0 "convert --csgnet" "$HSX" convert --csgnet "c(32,32,16)s(32,40,12)-" --out "$TMP/n.json"; then
+  expr="$(python3 - "$TMP/n.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+hs = {h["name"]: h for h in d["halfspaces"]}
+sides = [n for n in hs if n.startswith("s1.")]
+assert "c0" in hs and not hs["c0"].get("complement", False) and len(sides) == 4, hs
+print("c0 & (" + " | ".join(n if hs[n].get("complement", False) else "~" + n for n in sides) + ")")
+EOF
+)"
+  if [[ -n "$expr" ]]; then pass; else fail "convert --csgnet: unexpected halfspaces in the written scene"; fi
+  check "convert --csgnet: description names the complemented sides" \
+    json "$TMP/n.json" '"complemented" in d["description"]'
+  if run 0 "extract the csgnet conversion" "$HSX" extract "$TMP/n.json" --json "$TMP/nr.json" &&
+    run 0 "csg over the written scene: $expr" "$HSX" csg "$TMP/n.json" --csg "$expr" --json "$TMP/nc.json"; then
+    a="$(field "$TMP/nc.json" 'd["area"]')"
+    b="$(field "$TMP/nr.json" 'd["area"]')"
+    if [[ "$a" == "$b" ]]; then pass; else fail "csgnet conversion: extract area $b, CSG area $a"; fi
+    check "csgnet conversion: area between disk - square bounds" \
+      json "$TMP/nr.json" '0 < float(d["area"]["decimal"]) < 3.14159266 * 16 * 16'
+  fi
+fi
+
+# ---- the conversion's orientation rule ----
+cat >"$TMP/twice.json" <<'EOF'
+{"format": "hsx-scene/1", "dimension": 2, "domain": {"min": [-5, -5], "max": [5, 5]},
+ "halfspaces": [{"name": "B", "kind": "disk", "center": [0, 0], "radius": 3},
+                {"name": "A", "kind": "disk", "center": [0, 0], "radius": 1},
+                {"name": "A2", "kind": "disk", "center": [0, 0], "radius": 1}]}
+EOF
+# B - A runs along A (and its copy A2) reversed: A is complemented in the BSH scene, and the ring comes back.
+if run 0 "convert B - A (A given twice)" "$HSX" convert "$TMP/twice.json" --csg "B - A" --out "$TMP/to.json"; then
+  check "convert B - A: A complemented" json "$TMP/to.json" '[h.get("complement", False) for h in d["halfspaces"]][:2] == [False, True]'
+  run 0 "extract the ring" "$HSX" extract "$TMP/to.json" --json "$TMP/tr.json" &&
+    check "ring area 8 pi" json "$TMP/tr.json" 'abs(float(d["area"]["decimal"]) - 8 * 3.14159265358979) < 1e-9'
+fi
+cat >"$TMP/both.json" <<'EOF'
+{"format": "hsx-scene/1", "dimension": 2, "domain": {"min": [-8, -8], "max": [8, 8]},
+ "halfspaces": [{"name": "L", "kind": "halfplane", "normal": [1, 0], "offset": 0},
+                {"name": "D1", "kind": "disk", "center": [0, 3], "radius": 2},
+                {"name": "D2", "kind": "disk", "center": [0, -3], "radius": 2}]}
+EOF
+# (D1 & L) | (D2 & ~L) runs along L with L's orientation on D1 and reversed on D2: reported, exit 3, no file.
+run 3 "convert: a boundary used both ways fails" "$HSX" convert "$TMP/both.json" --csg "(D1 & L) | (D2 & ~L)" \
+  --out "$TMP/bo.json" && err_names '"L"' "both orientations"
+if [[ -e "$TMP/bo.json" ]]; then fail "convert failure left $TMP/bo.json behind"; else pass; fi
+
+# ---- samples ----
+for k in 1 5 6; do
+  if run 0 "samples fig02-$k" "$HSX" samples "$FIG/fig02-$k.json" --target "$TMP/r$k.json" --json "$TMP/s$k.json"; then
+    check "samples fig02-$k: reproduced, bounds" json "$TMP/s$k.json" '
+      d["format"] == "hsx-samples/1" and d["reproduced"] is True and
+      d["lower_bound"] <= d["samples"] <= d["upper_bound"] and d["rounds"] <= d["upper_bound"] + 1 and
+      len(d["sample_patches"]) == d["samples"] and
+      (d["minimum"] is None or d["lower_bound"] <= d["minimum"] <= d["samples"])'
+  fi
+done
+for search in beam best-first; do
+  if run 0 "samples --csg --search $search" "$HSX" samples "$FIG/fig02-1.json" --csg "(A - B) | (B - A)" \
+    --search "$search" --json "$TMP/sx.json" --out "$TMP/sxo.json"; then
+    check "samples xor ($search): reproduced" json "$TMP/sx.json" 'd["reproduced"] is True and d["search"] in ("beam", "best-first")'
+    run 0 "extract the sampled xor scene" "$HSX" extract "$TMP/sxo.json" --method "$search" --json "$TMP/sxr.json" &&
+      check "sampled xor scene gives the xor back (area 20)" json "$TMP/sxr.json" 'd["area"]["exact"] == "20"'
+  fi
+done
+
+# ---- bad inputs: exit 2, the message names the option, no output file ----
+rm -f "$TMP/bad.json"
+run 2 "describe: unknown halfspace in --csg" "$HSX" describe "$FIG/fig02-1.json" --csg "A | X" --json "$TMP/bad.json" &&
+  err_names "--csg" '"X"'
+run 2 "csg: unknown halfspace in --csg" "$HSX" csg "$FIG/fig02-1.json" --csg "A & (B | Q)" --json "$TMP/bad.json" &&
+  err_names "--csg" '"Q"'
+run 2 "describe: both --shape and --csg" "$HSX" describe "$FIG/fig02-5.json" --shape "$TMP/r5.json" --csg "A" \
+  --json "$TMP/bad.json" && err_names "--shape" "--csg"
+run 2 "csg: neither --shape nor --csg" "$HSX" csg "$FIG/fig02-5.json" --json "$TMP/bad.json" && err_names "--shape" "--csg"
+# A result computed from another scene (fig03-a: 10 cells; fig02: 6).
+run 0 "extract fig03-a" "$HSX" extract "$FIG/fig03-a.json" --json "$TMP/r3a.json"
+if [[ "$(field "$TMP/r3a.json" 'max(d["inside_cells"])')" -ge 6 ]]; then
+  run 2 "csg: --shape from another scene" "$HSX" csg "$FIG/fig02-5.json" --shape "$TMP/r3a.json" --json "$TMP/bad.json" &&
+    err_names "r3a.json" "inside_cells" "another scene"
+  run 2 "describe: --shape from another scene" "$HSX" describe "$FIG/fig02-5.json" --shape "$TMP/r3a.json" &&
+    err_names "r3a.json" "another scene"
+  run 2 "samples: --target from another scene" "$HSX" samples "$FIG/fig02-5.json" --target "$TMP/r3a.json" \
+    --json "$TMP/bad.json" && err_names "r3a.json" "another scene"
+else
+  fail "fig03-a's result has no cell id >= 6 (test setup)"
+fi
+# samples spells the shape option --target: its message must say so.
+run 2 "samples: both --target and --csg" "$HSX" samples "$FIG/fig02-5.json" --target "$TMP/r5.json" --csg "A" \
+  --json "$TMP/bad.json" && err_names "--target" "--csg"
+run 2 "samples: a target that is not orientation-preserving" "$HSX" samples "$FIG/fig02-1.json" --csg "~A" \
+  --json "$TMP/bad.json" && err_names "orientation-preserving"
+run 2 "convert: --csgnet with a SCENE" "$HSX" convert "$FIG/fig02-1.json" --csgnet "c(32,32,16)" --out "$TMP/bad.json" &&
+  err_names "--csgnet"
+run 2 "convert: bad --search" "$HSX" convert "$FIG/fig02-1.json" --csg "A" --search greedy --out "$TMP/bad.json" &&
+  err_names "--search"
+run 2 "convert: --out missing" "$HSX" convert "$FIG/fig02-1.json" --csg "A"
+run 2 "corpus: unknown kind" "$HSX" corpus shapenet /dev/null && err_names "csgnet"
+if [[ -e "$TMP/bad.json" ]]; then fail "a failed command left $TMP/bad.json behind"; else pass; fi
+
+# ---- corpus ----
+CORPUS="$SRC/../shared/data/csgnet/best_st_expressions.txt"
+if [[ -f "$CORPUS" ]]; then
+  if run 0 "corpus csgnet --limit 5" "$HSX" corpus csgnet "$CORPUS" --limit 5 --json "$TMP/corpus.json"; then
+    check "corpus: 5 programs, all ok" grep -q "^5 programs: 5 ok" "$TMP/out"
+    check "corpus json: 5 rows, ok, samples within bounds" json "$TMP/corpus.json" '
+      d["format"] == "hsx-corpus/1" and len(d["programs"]) == 5 and
+      all(p["ok"] and p["lower_bound"] <= p["samples"] <= p["upper_bound"] for p in d["programs"])'
+  fi
+else
+  echo "note: $CORPUS not found: corpus test skipped"
+fi
+
+echo "$passed passed, $failed failed"
+[[ "$failed" == 0 ]]

@@ -72,8 +72,10 @@ CheckResult check_prop51(const Problem& problem, const Labelling& b, const Label
 
 Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling) {
   std::vector<int> patches;
+  // Only patches whose halfspace has b's orientation there: a sample on a coincident patch that b runs along
+  // reversed would forbid b's own orientation (problem.hpp).
   for (int p = 0; p < static_cast<int>(complex.patches.size()); ++p)
-    if (labelling[complex.patches[p].inside_cell] != labelling[complex.patches[p].outside_cell]) patches.push_back(p);
+    if (labelling[complex.patches[p].inside_cell] && !labelling[complex.patches[p].outside_cell]) patches.push_back(p);
   return with_samples_on(complex, patches);
 }
 

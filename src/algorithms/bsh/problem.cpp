@@ -73,6 +73,14 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
     }
     bool generic = ends_per_boundary.size() == 2 && cells.size() == 4;
     for (const auto& [h, count] : ends_per_boundary) generic = generic && count == 2;
+    if (generic) {
+      // A crossing shows all four inside/outside combinations of the two boundaries around it; a tangency or two
+      // corners touching at a point do not.
+      const int h1 = ends_per_boundary.begin()->first, h2 = std::next(ends_per_boundary.begin())->first;
+      std::set<std::pair<int, int>> combos;
+      for (int k : cells) combos.insert({complex.cells[k].inside[h1], complex.cells[k].inside[h2]});
+      generic = combos.size() == 4;
+    }
     if (!generic) non_generic_junctions_.push_back(j);
   }
 }

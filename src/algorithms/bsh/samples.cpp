@@ -63,10 +63,11 @@ int central_patch(const Complex& c, const std::vector<int>& component, const Com
   return component[best];
 }
 
-ExtractResult run(const Complex& sampled, const SampleGenOptions& options) {
+ExtractResult run(const Complex& sampled, const SampleGenOptions& options, Method method, long max_states = 0) {
   const Problem problem(sampled);
   ExtractOptions extract_options;
-  extract_options.method = options.search;
+  extract_options.method = method;
+  extract_options.max_states = max_states;
   extract_options.beam_width = options.beam_width;
   extract_options.enumerate_ties = false;
   extract_options.compare = options.compare;
@@ -85,7 +86,8 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
   for (int g : boundary_supports(target_problem, target))
     result.upper_bound += static_cast<int>(target_problem.supports()[g].patches.size());
   for (;;) {
-    const ExtractResult found = run(with_samples_on(complex, result.sample_patches), options);
+    const Complex sampled = with_samples_on(complex, result.sample_patches);
+    ExtractResult found = run(sampled, options, options.search);
     ++result.rounds;
     if (found.labelling == target) {
       result.reproduced = true;
@@ -105,8 +107,46 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
           pick = p;
       }
     }
+    if (pick < 0 && options.search != Method::BestFirst && options.fallback_states > 0) {
+      // Every patch of b \ b' has a sample, so the target covers more samples than b': the search missed the
+      // optimum. Redo this round with the complete search.
+      const Problem sampled_problem(sampled);
+      if (compare(energy(sampled_problem, target), found.energy, options.compare) == Order::Less) {
+        ++result.fallbacks;
+        found = run(sampled, options, Method::BestFirst, options.fallback_states);
+        if (found.labelling == target) {
+          result.reproduced = true;
+          return result;
+        }
+        std::fill(on_found.begin(), on_found.end(), 0);
+        for (int g : boundary_supports(target_problem, found.labelling)) on_found[g] = 1;
+        for (int g : boundary_supports(target_problem, target)) {
+          if (on_found[g]) continue;
+          for (int p : target_problem.supports()[g].patches) {
+            if (std::find(result.sample_patches.begin(), result.sample_patches.end(), p) !=
+                result.sample_patches.end())
+              continue;
+            if (pick < 0 || compare(complex.patches[p].measure, complex.patches[pick].measure, options.compare) ==
+                                Order::Greater)
+              pick = p;
+          }
+        }
+      }
+    }
     if (pick < 0) {
-      result.failure = "no sample-free patch in b \\ b' (a counterexample to Prop. 6.1/B.1, or a search limit)";
+      // Section 6.2's sufficient set: one sample on every patch that b runs along with its halfspace's
+      // orientation. The target then covers every sample and any other admissible boundary misses one or is
+      // longer, so the root graph cut already returns it.
+      std::vector<int> all;
+      for (int p = 0; p < static_cast<int>(complex.patches.size()); ++p)
+        if (target[complex.patches[p].inside_cell] && !target[complex.patches[p].outside_cell]) all.push_back(p);
+      const ExtractResult last = run(with_samples_on(complex, all), options, options.search);
+      ++result.rounds;
+      result.used_sufficient_set = true;
+      result.sample_patches = all;
+      result.reproduced = last.labelling == target;
+      if (!result.reproduced)
+        result.failure = "no sample-free patch in b \\ b', and one sample per patch does not reproduce b either";
       return result;
     }
     result.sample_patches.push_back(pick);
@@ -136,7 +176,7 @@ int minimum_samples(const Complex& complex, const Labelling& target, int max_pat
       if (++tried > max_subsets) return -1;
       std::vector<int> chosen;
       for (int i : pick) chosen.push_back(patches[i]);
-      const ExtractResult r = run(with_samples_on(complex, chosen), best_first);
+      const ExtractResult r = run(with_samples_on(complex, chosen), best_first, Method::BestFirst);
       if (r.labelling == target) return k;
       int i = k - 1;
       while (i >= 0 && pick[i] == n - k + i) --i;

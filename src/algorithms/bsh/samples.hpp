@@ -20,6 +20,10 @@ struct SampleGenOptions {
   Method search = Method::Beam;  ///< Beam (K = beam_width) or BestFirst
   int beam_width = 1;
   CompareOptions compare;
+  /// When the search returns a boundary provably worse than the target although every patch of b \ b' has a
+  /// sample (the search missed the optimum: beam incompleteness, or Prop. 5.1 failing at non-generic junctions),
+  /// redo that round with best-first limited to this many states (0: report the failure instead).
+  long fallback_states = 300;
 };
 
 struct SampleGenResult {
@@ -28,6 +32,10 @@ struct SampleGenResult {
   int upper_bound = 0;              ///< patches on the target boundary (Prop. 4.1's sufficient set)
   int rounds = 0;                   ///< extractions run
   bool reproduced = false;          ///< the last extraction returned the target
+  int fallbacks = 0;                ///< rounds redone with best-first (see SampleGenOptions::fallback_states)
+  /// The greedy rounds failed (the search missed the optimum even with best-first: Prop. 5.1 fails at
+  /// non-generic junctions) and the samples are Section 6.2's sufficient set: one on every patch of b.
+  bool used_sufficient_set = false;
   std::string failure;              ///< why not reproduced (e.g. no sample-free patch left: a counterexample)
 };
 

@@ -28,6 +28,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -702,4 +703,155 @@ TEST_CASE("csg theory explore: GENERATE-SAMPLES on one input", "[.explore-one]")
             << r.used_sufficient_set << ", boundary patches " << boundary_patch_count(c, target) << "\n";
   CHECK(r.reproduced);
   CHECK_FALSE(r.used_sufficient_set);
+}
+
+// Not run by default: GENERATE-SAMPLES on generic scenes with coincident boundaries (a halfspace given twice, a
+// halfspace and its complement). Run with: test_csg_theory "[.explore-twins]".
+TEST_CASE("csg theory explore: GENERATE-SAMPLES with coincident boundaries", "[.explore-twins]") {
+  rc::prop("generic inputs with twins: the greedy rounds reproduce the target", [] {
+    SceneGenOptions o;
+    o.max_halfspaces = 6;
+    o.min_degeneracies = 1;
+    o.max_degeneracies = 2;
+    o.allowed_degeneracies = {Degeneracy::ComplementTwin, Degeneracy::RepeatedHalfspace,
+                              Degeneracy::HalfplaneOnPolygonEdge, Degeneracy::PolygonsSharingEdge};
+    const Scene2 scene = *gen_scene(o);
+    const Complex c = complex_of(scene);
+    const bsh::Problem problem(c);
+    RC_PRE(problem.non_generic_junctions().empty());
+    const Complex bare = bsh::with_samples_on(c, {});
+    const ExprPtr e = random_expr(c.halfspace_count(), 3);
+    const bsh::Labelling target = evaluate(*e, c);
+    RC_PRE(bsh::is_orientation_preserving(bsh::Problem(bare), target));
+    RC_PRE(boundary_patch_count(c, target) <= 16);
+    RC_LOG() << "target " << to_text(*e, c.halfspace_names) << "\n";
+    for (bsh::Method m : {bsh::Method::Beam, bsh::Method::BestFirst}) {
+      bsh::SampleGenOptions so;
+      so.search = m;
+      so.fallback_states = 0;
+      const bsh::SampleGenResult r = bsh::generate_samples(c, target, so);
+      std::string cells;
+      for (int k = 0; k < static_cast<int>(target.size()); ++k)
+        if (target[k]) cells += " " + std::to_string(k);
+      RC_LOG() << bsh::to_string(m) << ": " << r.failure << "; target cells" << cells << "\n";
+      RC_ASSERT(r.reproduced);
+      RC_ASSERT(!r.used_sufficient_set);
+    }
+  });
+}
+
+namespace {
+/// Fig. 12's greedy loop written here from the public API, for diagnosis: initial samples on the first patch of
+/// each component of b ∩ b_i (hsx uses a central patch), then the largest sample-free patch of b \ b', taken
+/// among all patches of b's supports (as bsh::generate_samples does) or only among those with b's orientation.
+/// Prints every round; returns true when the target is reproduced.
+bool greedy_diagnosis(const Complex& c, const bsh::Labelling& target, bsh::Method method, bool oriented_only,
+                      bool quiet = false) {
+  std::ostringstream sink;
+  std::ostream& out = quiet ? sink : std::cout;
+  const bsh::Problem problem(c);
+  std::vector<int> samples;
+  for (const bsh::Component& comp : bsh::sample_connectivity(problem, target).components)
+    samples.push_back(comp.patches.front());
+  if (const char* initial = std::getenv("HSX_CX_INITIAL")) {  // comma-separated patch ids
+    samples.clear();
+    std::string text = initial;
+    for (std::size_t at = 0; at < text.size();) {
+      const std::size_t end = std::min(text.find(',', at), text.size());
+      samples.push_back(std::stoi(text.substr(at, end - at)));
+      at = end + 1;
+    }
+  }
+  for (int round = 1; round <= 64; ++round) {
+    const Complex sampled = bsh::with_samples_on(c, samples);
+    const bsh::Problem sp(sampled);
+    bsh::ExtractOptions eo;
+    eo.method = method;
+    eo.enumerate_ties = false;
+    const bsh::ExtractResult found = bsh::extract(sp, eo);
+    out << "  round " << round << ": samples on patches";
+    for (int p : samples) out << " " << p << "(" << c.halfspace_names[c.patches[p].halfspace] << ")";
+    out << "; target admissible " << bsh::is_orientation_preserving(sp, target) << ", target energy "
+              << bsh::energy(sp, target).missing_samples << " missing / "
+              << bsh::energy(sp, target).measure.decimal_string(6) << "; found " << found.energy.missing_samples
+              << " missing / " << found.energy.measure.decimal_string(6) << "\n";
+    if (found.labelling == target) return true;
+    std::vector<char> on_found(problem.support_count(), 0);
+    for (int g : bsh::boundary_supports(problem, found.labelling)) on_found[g] = 1;
+    int pick = -1;
+    for (int g : bsh::boundary_supports(problem, target)) {
+      if (on_found[g]) continue;
+      for (int p : problem.supports()[g].patches) {
+        if (std::find(samples.begin(), samples.end(), p) != samples.end()) continue;
+        if (oriented_only && !on_boundary(c.patches[p], target)) continue;
+        if (pick < 0 || compare(c.patches[p].measure, c.patches[pick].measure) == Order::Greater) pick = p;
+      }
+    }
+    if (pick < 0) {
+      out << "  stuck: every patch of b \\ b' has a sample\n";
+      return false;
+    }
+    samples.push_back(pick);
+  }
+  return false;
+}
+}  // namespace
+
+TEST_CASE("csg theory explore: the greedy loop round by round", "[.explore-greedy]") {
+  const char* path = std::getenv("HSX_CX_SCENE");
+  const char* expr = std::getenv("HSX_CX_TARGET");
+  if (!path || !expr) return;
+  const Scene2 scene = read_scene_file(path);
+  const Complex c = complex_of(scene);
+  const bsh::Labelling target = evaluate(*parse_csg_text(expr, c.halfspace_names), c);
+  for (bool oriented : {false, true})
+    for (bsh::Method m : {bsh::Method::Beam, bsh::Method::BestFirst}) {
+      std::cout << bsh::to_string(m) << (oriented ? ", picks with b's orientation only" : ", picks as hsx") << "\n";
+      const bool ok = greedy_diagnosis(c, target, m, oriented);
+      std::cout << "  reproduced " << ok << "\n";
+    }
+}
+
+TEST_CASE("csg theory explore: the greedy loop with oriented picks on coincident boundaries", "[.explore-twins]") {
+  rc::prop("generic inputs with twins: oriented picks reproduce the target", [] {
+    SceneGenOptions o;
+    o.max_halfspaces = 6;
+    o.min_degeneracies = 1;
+    o.max_degeneracies = 2;
+    o.allowed_degeneracies = {Degeneracy::ComplementTwin, Degeneracy::RepeatedHalfspace,
+                              Degeneracy::HalfplaneOnPolygonEdge, Degeneracy::PolygonsSharingEdge};
+    const Scene2 scene = *gen_scene(o);
+    const Complex c = complex_of(scene);
+    RC_PRE(bsh::Problem(c).non_generic_junctions().empty());
+    const bsh::Labelling target = random_closure(bsh::Problem(bsh::with_samples_on(c, {})));
+    RC_PRE(boundary_patch_count(c, target) <= 16);
+    for (bsh::Method m : {bsh::Method::Beam, bsh::Method::BestFirst}) RC_ASSERT(greedy_diagnosis(c, target, m, true, true));
+  });
+}
+
+TEST_CASE("csg theory explore: the greedy loop with oriented picks at non-generic junctions", "[.explore-oriented]") {
+  rc::prop("non-generic inputs: oriented picks reproduce the target", [] {
+    SceneGenOptions o;
+    o.max_halfspaces = std::getenv("HSX_EXPLORE_MAX") ? std::atoi(std::getenv("HSX_EXPLORE_MAX")) : 6;
+    o.min_degeneracies = 1;
+    o.max_degeneracies = 2;
+    o.allowed_degeneracies = {Degeneracy::ConcurrentLines, Degeneracy::LineTangentToDisk,
+                              Degeneracy::DisksTangentOutside, Degeneracy::DisksTangentInside,
+                              Degeneracy::PolygonVertexOnLine, Degeneracy::PolygonVertexOnCircle};
+    o.samples = true;
+    const Scene2 scene = *gen_scene(o);
+    const Complex c = complex_of(scene);
+    const bsh::Problem problem(c);
+    RC_PRE(!problem.non_generic_junctions().empty());
+    bsh::Labelling target;
+    RC_PRE(random_target(c, problem, target));
+    RC_PRE(boundary_patch_count(c, target) <= 16);
+    std::string cells;
+    for (int k = 0; k < static_cast<int>(target.size()); ++k)
+      if (target[k]) cells += " " + std::to_string(k);
+    RC_LOG() << "target cells" << cells << "\n";
+    const bool beam_only = std::getenv("HSX_EXPLORE_BEAM_ONLY") != nullptr;
+    RC_ASSERT(greedy_diagnosis(c, target, bsh::Method::Beam, true, true));
+    if (!beam_only) RC_ASSERT(greedy_diagnosis(c, target, bsh::Method::BestFirst, true, true));
+  });
 }

@@ -576,7 +576,7 @@ TEST_CASE("bsh unit: two squares sharing an edge use it either way; the Prop. 4.
       CHECK(r.ties.count == 1);
       CHECK(r.energy.missing_samples == 0);
     }
-    // hsx's checker of Prop. 4.1 must agree. FAILS at the time of writing for P1 alone and P2 alone:
+    // hsx's checker of Prop. 4.1 must agree. Failed before its fix in session 1 for P1 alone and P2 alone:
     // with_one_sample_per_boundary_patch (checks.cpp) also samples the reversed coincident patch, whose sample
     // then forbids the labelling's own orientation, and check_prop41 reports "skipped: not orientation-
     // preserving" for an orientation-preserving boundary.
@@ -1168,7 +1168,7 @@ TEST_CASE("bsh unit: touching corners (a bowtie) are not a crossing", "[bsh][uni
   // there (C's upper-left and lower-right quarters) different cells. Four ends at (1,1), two of A and two of B,
   // four distinct cells - but not all four side combinations: A + B is orientation-preserving with 4 boundary
   // ends there (non-manifold). So the junction is not generic in the sense Prop. 5.1's proof needs.
-  // FAILS at the time of writing: Problem::non_generic_junctions() does not list it.
+  // Failed before its fix in session 1: Problem::non_generic_junctions() does not list it.
   const Scene2 scene = make_scene(Box2{pt(-1, -1), pt(3, 3)},
                                   {polygon("A", {pt(0, 0), pt(1, 0), pt(1, 1), pt(0, 1)}),
                                    polygon("B", {pt(1, 1), pt(2, 1), pt(2, 2), pt(1, 2)}),
@@ -1206,7 +1206,7 @@ TEST_CASE("bsh unit: a line tangent to a circle between two distinct cells - Pro
   // break Prop. 5.1 through that junction (b = {D0 above the tangency, D0 ∩ D2, D0 ∩ L}, b' = {D2 \ D0,
   // D0 ∩ D2, D0 ∩ L}: the island is L's piece below the tangency, its neighbours on b are on b'). Best-first
   // still finds the optimum here, but Prop. 5.2's proof does not cover this junction.
-  // FAILS at the time of writing: Problem::non_generic_junctions() is empty for this scene, so best-first
+  // Failed before its fix in session 1: Problem::non_generic_junctions() is empty for this scene, so best-first
   // claims optimality from the search alone.
   Scene2 scene = make_scene(Box2{pt(-4, -5), pt(5, 6)},
                             {disk("D0", pt(R(1, 2), 0), R(5, 2)), disk("D2", pt(-1, R(1, 2)), R(3, 2)),
@@ -1267,7 +1267,7 @@ TEST_CASE("bsh unit: a circle inscribed in a square's corner - best-first must n
   // not a crossing; Problem::non_generic_junctions() still calls it generic. Prop. 5.1 fails there: the root
   // graph cut leaves out the pocket, and its island (P3's right part) and both its neighbours on b lie on the
   // optimum (P3 + D4 minus the disk, 0 missing, ~18.84), so the search ends at 1 missing (~11.36).
-  // FAILS at the time of writing: extract(BestFirst) returns that boundary with optimal = true, unique and
+  // Failed before its fix in session 1: extract(BestFirst) returns that boundary with optimal = true, unique and
   // certified, with the default options too (the oracle fallback is not used: no junction is flagged).
   Scene2 scene = make_scene(Box2{pt(-4, -3), pt(8, 9)},
                             {disk("D1", pt(3, 3), R(1, 2), true),

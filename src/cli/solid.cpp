@@ -10,7 +10,7 @@ namespace hsx::cli {
 
 Solid load_solid(const LoadedInput& in, const SolidSource& source) {
   if (source.shape_path.empty() == source.csg.empty())
-    throw InputError("give the solid either as --shape RESULT or as --csg EXPR (exactly one)");
+    throw InputError("give the solid either as a result file (--shape, or --target for samples) or as --csg EXPR, exactly one");
   Solid solid;
   const Complex& complex = in.complex();
   if (!source.shape_path.empty()) {

@@ -102,6 +102,9 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
       for (int p : target_problem.supports()[g].patches) {
         if (std::find(result.sample_patches.begin(), result.sample_patches.end(), p) != result.sample_patches.end())
           continue;
+        // Only a patch the target runs along with its halfspace's orientation: a sample on a coincident patch
+        // used reversed would forbid the target's own orientation (problem.hpp).
+        if (!target[complex.patches[p].inside_cell] || target[complex.patches[p].outside_cell]) continue;
         if (pick < 0 || compare(complex.patches[p].measure, complex.patches[pick].measure, options.compare) ==
                             Order::Greater)
           pick = p;
@@ -126,6 +129,7 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
             if (std::find(result.sample_patches.begin(), result.sample_patches.end(), p) !=
                 result.sample_patches.end())
               continue;
+            if (!target[complex.patches[p].inside_cell] || target[complex.patches[p].outside_cell]) continue;
             if (pick < 0 || compare(complex.patches[p].measure, complex.patches[pick].measure, options.compare) ==
                                 Order::Greater)
               pick = p;

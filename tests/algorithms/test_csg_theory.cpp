@@ -5,7 +5,9 @@
 //   2. Every CSG expression over the scene's halfspaces is describable and BHC rebuilds it.
 //   3. BHC on hand cases, and BSH Fig. 2's six shapes (data/figures/fig02-*.json).
 //   4. GENERATE-SAMPLES (bsh::generate_samples): Prop. 6.1 (best-first) and Prop. B.1 (beam, K = 1) on generic
-//      inputs, with the counts' bounds; non-generic inputs are skipped and counted (see proofs/csg.md, Section 4).
+//      inputs, with the counts' bounds; non-generic inputs are skipped and counted (see proofs/csg.md, Section 5),
+//      and so are targets running along a coincident patch reversed (a known bug, shown by a failing test).
+//   Hidden tests ("[.explore...]") are the searches that found it and tools to study one input round by round.
 #include "algorithms/bsh/extract.hpp"
 #include "algorithms/bsh/problem.hpp"
 #include "algorithms/bsh/samples.hpp"
@@ -80,19 +82,18 @@ std::map<std::vector<char>, std::vector<int>> terms_of(const Complex& c) {
   return terms;
 }
 
-/// A random solid, in one of four ways (tagged): a random labelling with outer cells 0; a random expression;
+/// A random solid, in one of four ways: a random labelling with outer cells 0; a random expression;
 /// a random function of the sign vector (describable by construction); such a function with one cell of a
-/// multi-cell term flipped (not describable by construction, when the complex has such a term).
-std::vector<char> random_solid(const Complex& c) {
+/// multi-cell term flipped (not describable by construction, when the complex has such a term; always tried
+/// with `prefer_flip`).
+std::vector<char> random_solid(const Complex& c, bool prefer_flip = false) {
   const int n = static_cast<int>(c.cells.size());
   std::vector<char> solid(n, 0);
-  switch (*rc::gen::inRange(0, 4)) {
+  switch (prefer_flip ? 3 : *rc::gen::inRange(0, 4)) {
     case 0:
-      RC_TAG("labelling");
       for (int k = 0; k < n; ++k) solid[k] = c.cells[k].outer ? 0 : static_cast<char>(*rc::gen::inRange(0, 2));
       return solid;
     case 1:
-      RC_TAG("expression");
       return evaluate(*random_expr(c.halfspace_count(), 3), c);
     default: {
       const auto terms = terms_of(c);
@@ -103,11 +104,9 @@ std::vector<char> random_solid(const Complex& c) {
       std::vector<const std::vector<int>*> multi;
       for (const auto& [signs, cells] : terms)
         if (cells.size() > 1) multi.push_back(&cells);
-      if (multi.empty() || *rc::gen::inRange(0, 2) == 0) {
-        RC_TAG("function of the sign vector");
-        return solid;
+      if (multi.empty() || (!prefer_flip && *rc::gen::inRange(0, 2) == 0)) {
+          return solid;
       }
-      RC_TAG("one cell of a term flipped");
       const auto& cells = *multi[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(multi.size())))];
       const int k = cells[static_cast<std::size_t>(*rc::gen::inRange(0, static_cast<int>(cells.size())))];
       solid[k] = solid[k] ? 0 : 1;
@@ -131,8 +130,8 @@ ExprPtr canonical_form(const Complex& c, const std::vector<char>& solid) {
   return unite(terms);
 }
 
-/// Checks statement 1 on one solid (rapidcheck assertions).
-void check_bhc_against_describability(const Complex& c, const std::vector<char>& solid, const BhcOptions& options) {
+/// Checks statement 1 on one solid (rapidcheck assertions); returns whether it is describable.
+bool check_bhc_against_describability(const Complex& c, const std::vector<char>& solid, const BhcOptions& options) {
   const Describability d = describability(c, solid);
   const BhcResult r = bhc(c, solid, options);
   RC_ASSERT(r.describable == d.describable);
@@ -148,7 +147,6 @@ void check_bhc_against_describability(const Complex& c, const std::vector<char>&
   RC_ASSERT(static_cast<std::size_t>(d.terms) == terms_of(c).size());
 
   if (r.describable) {
-    RC_TAG("describable");
     RC_ASSERT(r.tree != nullptr);
     RC_ASSERT(r.verified);
     RC_ASSERT(evaluate(*r.tree, c) == solid);  // re-checked here
@@ -184,7 +182,6 @@ void check_bhc_against_describability(const Complex& c, const std::vector<char>&
       RC_ASSERT(std::any_of(group.begin(), group.end(), [&](int q) { return used.count(c.patches[q].halfspace); }));
     }
   } else {
-    RC_TAG("not describable");
     RC_ASSERT(r.tree == nullptr);
     const MixedTerm& w = r.witness;
     RC_ASSERT(!w.inside_cells.empty());
@@ -204,6 +201,7 @@ void check_bhc_against_describability(const Complex& c, const std::vector<char>&
     });
     RC_ASSERT(listed);
   }
+  return r.describable;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -227,10 +225,14 @@ TEST_CASE("csg theory 1: BHC succeeds exactly on describable solids; trees verif
   rc::prop("bhc.describable == describability; verified tree or mixed witness", [] {
     const Scene2 scene = *gen_scene(csg_scenes());
     const Complex c = complex_of(scene);
-    const std::vector<char> solid = random_solid(c);
-    BhcOptions options;
-    if (*rc::gen::arbitrary<bool>()) options.planar = planar_of(scene);
-    check_bhc_against_describability(c, solid, options);
+    int not_describable = 0;
+    for (int k = 0; k < 4; ++k) {  // several solids per arrangement (the arrangement is the costly part)
+      const std::vector<char> solid = random_solid(c, k == 3);
+      BhcOptions options;
+      if (*rc::gen::arbitrary<bool>()) options.planar = planar_of(scene);
+      not_describable += check_bhc_against_describability(c, solid, options) ? 0 : 1;
+    }
+    RC_TAG(std::to_string(not_describable) + " of 4 solids not describable");
   });
 }
 
@@ -249,7 +251,7 @@ TEST_CASE("csg theory 1b: BHC on hand-written complexes with repeated sign vecto
     }
     std::vector<char> solid(n);
     for (int k = 0; k < n; ++k) solid[k] = static_cast<char>(*rc::gen::inRange(0, 2));
-    check_bhc_against_describability(c, solid, {});
+    RC_TAG(check_bhc_against_describability(c, solid, {}) ? "describable" : "not describable");
   });
 }
 
@@ -362,6 +364,39 @@ TEST_CASE("csg theory 3: partition ties prefer a planar halfspace, then the lowe
   CHECK(with_planar.partitions == 1);
   CHECK(first_partition(with_planar) == 1);
   CHECK(first_partition(without) == 0);
+}
+
+TEST_CASE("csg theory 3: cells decide the plane only when every arrangement vertex lies in the domain",
+          "[csg][theory][describability][domain]") {
+  // Two lines crossing at (20, 0): L1 & L2 is the wedge beyond the crossing. With a given domain [-3, 3]^2 (both
+  // lines cross it, the crossing does not lie in it) that term has no cell: the expression is 0 on every cell,
+  // and the complex cannot tell it from `empty`. With hsx's chosen domain (every line-line vertex inside), the
+  // wedge meets the box in an outer cell: the solid is seen, and seen to be unbounded.
+  const Halfspace2 l1 = halfplane("L1", pt(-1, 10), -20);   // 10y - x <= -20: below the line through (20, 0), slope 1/10
+  const Halfspace2 l2 = halfplane("L2", pt(-1, -10), -20);  // -10y - x <= -20: above the line with slope -1/10
+  const ExprPtr wedge = intersect({leaf(0), leaf(1)});
+  const Complex small = complex_of(make_scene(Box2{pt(-3, -3), pt(3, 3)}, {l1, l2}));
+  const std::vector<char> in_small = evaluate(*wedge, small);
+  CHECK(std::none_of(in_small.begin(), in_small.end(), [](char x) { return x != 0; }));
+  CHECK(in_small == evaluate(*empty(), small));
+  CHECK(terms_of(small).size() == 3);  // three of the four sign vectors
+
+  Scene2 chosen;
+  chosen.halfspaces = {l1, l2};
+  validate_and_resolve(chosen);  // domain_given = false: choose_domain
+  REQUIRE(chosen.domain.contains(pt(20, 0)));
+  const Complex big = complex_of(chosen);
+  CHECK(terms_of(big).size() == 4);
+  const std::vector<char> in_big = evaluate(*wedge, big);
+  int inside = 0;
+  for (int k = 0; k < static_cast<int>(big.cells.size()); ++k)
+    if (in_big[k]) {
+      ++inside;
+      CHECK(big.cells[k].outer);  // unbounded: it meets the box's boundary
+    }
+  CHECK(inside == 1);
+  const BhcResult r = bhc(big, in_big, {planar_of(chosen)});
+  CHECK(text(r, big) == "L1 & L2");
 }
 
 TEST_CASE("csg theory 3: BSH Fig. 2 - shapes 1-4 describable by A and B, shapes 5 and 6 not (mixed witness)",
@@ -502,16 +537,27 @@ int component_count(const Complex& c, const bsh::Labelling& l) {
 }
 
 struct SkipCounts {
-  long cases = 0;
+  long cases = 0;  // scenes
+  long targets = 0;
+  long non_empty = 0;        // targets checked with a non-empty boundary
+  long minimum_checked = 0;  // targets whose true minimum was computed
   long non_generic = 0;
+  long reversed_twin = 0;
   long too_large = 0;
 };
+
+/// True when b runs along a coincident patch against that patch's halfspace (a halfspace and its complement
+/// given on one curve, the target using the complement's side): bsh::generate_samples may put a sample on such a
+/// patch (see "GENERATE-SAMPLES samples a coincident patch against the target's orientation" below).
+bool reversed_coincident_patch_on_b(const Complex& c, const bsh::Labelling& l) {
+  return std::any_of(c.patches.begin(), c.patches.end(),
+                     [&](const Patch& p) { return !l[p.inside_cell] && l[p.outside_cell]; });
+}
 
 /// A random target: the best-first result of a random scene with samples, or a random closure (orientation-
 /// preserving without samples: generate_samples ignores the scene's own samples).
 bool random_target(const Complex& c, const bsh::Problem& problem, bsh::Labelling& target) {
   if (!c.samples.empty() && *rc::gen::arbitrary<bool>()) {
-    RC_TAG("target: best-first result");
     bsh::ExtractOptions eo;
     eo.method = bsh::Method::BestFirst;
     eo.max_states = 200;
@@ -520,43 +566,39 @@ bool random_target(const Complex& c, const bsh::Problem& problem, bsh::Labelling
     const bsh::ExtractResult r = bsh::extract(problem, eo);
     if (!r.stopped_by.empty()) return false;
     target = r.labelling;
-  } else {
-    RC_TAG("target: closure of random cells");
+    if (std::any_of(target.begin(), target.end(), [](char x) { return x != 0; })) {
+      return true;
+    }
+  }
+  {
     const Complex bare = bsh::with_samples_on(c, {});
     target = random_closure(bsh::Problem(bare));
   }
   return true;
 }
 
-/// Statement 4 for one search method on generic inputs (Prop. 6.1 for best-first, Prop. B.1 for beam K = 1).
-void check_generate_samples(bsh::Method method, SkipCounts& skipped) {
-  SceneGenOptions o;
-  o.max_halfspaces = 5;
-  o.max_degeneracies = 1;
-  o.samples = true;
-  o.max_samples = 6;
-  const Scene2 scene = *gen_scene(o);
-  const Complex c = complex_of(scene);
-  const bsh::Problem problem(c);
-  ++skipped.cases;
-  if (!problem.non_generic_junctions().empty()) {
-    // Prop. 6.1 and B.1 rest on Prop. 5.1/5.2, proven for generic junctions only (proofs/csg.md, Section 4).
-    ++skipped.non_generic;
-    RC_DISCARD("non-generic junctions");
-  }
+/// One target on one scene; false when the target is skipped (counted in `skipped`).
+bool check_one_target(const Complex& c, const bsh::Problem& problem, bsh::Method method, SkipCounts& skipped) {
+  ++skipped.targets;
   bsh::Labelling target;
   if (!random_target(c, problem, target)) {
     ++skipped.too_large;
-    RC_DISCARD("best-first over its state budget");
+    return false;
   }
   const Complex bare = bsh::with_samples_on(c, {});
   RC_ASSERT(bsh::is_orientation_preserving(bsh::Problem(bare), target));
+  if (reversed_coincident_patch_on_b(c, target)) {
+    // A known bug, shown deterministically below; skipped (and counted) so that this property stays about the
+    // propositions. Remove this skip when the bug is fixed.
+    ++skipped.reversed_twin;
+    return false;
+  }
   const int patches = boundary_patch_count(c, target);
   if (patches > 16) {
     ++skipped.too_large;
-    RC_DISCARD("boundary too large for the time budget");
+    return false;
   }
-  RC_TAG(patches == 0 ? "empty target" : "non-empty target");
+  if (patches > 0) ++skipped.non_empty;
 
   bsh::SampleGenOptions options;
   options.search = method;
@@ -593,11 +635,34 @@ void check_generate_samples(bsh::Method method, SkipCounts& skipped) {
   if (method == bsh::Method::BestFirst) {
     const int minimum = bsh::minimum_samples(c, target, 8, 300);
     if (minimum >= 0) {
-      RC_TAG("minimum computed");
+      ++skipped.minimum_checked;
       RC_ASSERT(minimum >= r.initial);
       RC_ASSERT(minimum <= samples);
     }
   }
+  return true;
+}
+
+/// Statement 4 for one search method on generic inputs (Prop. 6.1 for best-first, Prop. B.1 for beam K = 1): three
+/// targets per scene.
+void check_generate_samples(bsh::Method method, SkipCounts& skipped) {
+  SceneGenOptions o;
+  o.max_halfspaces = 5;
+  o.max_degeneracies = 1;
+  o.samples = true;
+  o.max_samples = 6;
+  const Scene2 scene = *gen_scene(o);
+  const Complex c = complex_of(scene);
+  const bsh::Problem problem(c);
+  ++skipped.cases;
+  if (!problem.non_generic_junctions().empty()) {
+    // Prop. 6.1 and B.1 rest on Prop. 5.1/5.2, proven for generic junctions only (proofs/csg.md, Section 5).
+    ++skipped.non_generic;
+    RC_DISCARD("non-generic junctions");
+  }
+  int checked = 0;
+  for (int t = 0; t < 3; ++t) checked += check_one_target(c, problem, method, skipped) ? 1 : 0;
+  if (checked == 0) RC_DISCARD("every target skipped");
 }
 
 }  // namespace
@@ -607,8 +672,12 @@ TEST_CASE("csg theory 4: GENERATE-SAMPLES with best-first reproduces the target 
   SkipCounts skipped;
   // rc::check rather than rc::prop: the counts are printed after the run, also when it fails.
   const bool ok = rc::check("generic inputs: reproduced, rounds <= patches + 1, initial = components, minimum in range", [&skipped] { check_generate_samples(bsh::Method::BestFirst, skipped); });
-  std::cout << "csg theory 4 (Prop. 6.1, best-first): " << skipped.cases << " cases drawn, " << skipped.non_generic
-            << " skipped for non-generic junctions, " << skipped.too_large << " skipped as too large\n";
+  std::cout << "csg theory 4 (Prop. 6.1, best-first): minimum_samples computed on " << skipped.minimum_checked
+            << " targets; " << skipped.cases << " scenes drawn, " << skipped.non_generic
+            << " skipped for non-generic junctions; " << skipped.targets << " targets on the others, "
+            << skipped.reversed_twin << " skipped for a reversed coincident patch on b (known bug), "
+            << skipped.too_large << " skipped as too large; " << skipped.non_empty
+            << " non-empty targets checked\n";
   CHECK(ok);
 }
 
@@ -617,13 +686,57 @@ TEST_CASE("csg theory 4: GENERATE-SAMPLES with beam K=1 reproduces the target (P
   SkipCounts skipped;
   // rc::check rather than rc::prop: the counts are printed after the run, also when it fails.
   const bool ok = rc::check("generic inputs: reproduced, rounds <= patches + 1, initial = components", [&skipped] { check_generate_samples(bsh::Method::Beam, skipped); });
-  std::cout << "csg theory 4 (Prop. B.1, beam K=1): " << skipped.cases << " cases drawn, " << skipped.non_generic
-            << " skipped for non-generic junctions, " << skipped.too_large << " skipped as too large\n";
+  std::cout << "csg theory 4 (Prop. B.1, beam K=1): " << skipped.cases << " scenes drawn, " << skipped.non_generic
+            << " skipped for non-generic junctions; " << skipped.targets << " targets on the others, "
+            << skipped.reversed_twin << " skipped for a reversed coincident patch on b (known bug), "
+            << skipped.too_large << " skipped as too large; " << skipped.non_empty
+            << " non-empty targets checked\n";
   CHECK(ok);
 }
 
+TEST_CASE("csg theory 4: GENERATE-SAMPLES samples a coincident patch against the target's orientation",
+          "[csg][theory][samples][propB1][bug]") {
+  // Generic input (no non-generic junction), found by "[.explore-twins]" and shrunk: D4 is D1's complement twin,
+  // so each arc of D1's circle is a support with one patch of D1 and one of D4. Target: D1 (one component of
+  // b ∩ b_D1, one initial sample, on D1's patch 11).
+  // Round 1 (beam K = 1) returns the empty boundary (allowed: beam is incomplete; Prop. B.1 only promises a
+  // sample-free patch of b \ b'). Fig. 12 then samples the largest sample-free patch of b \ b', but
+  // bsh::generate_samples (samples.cpp, the `pick` loop) takes it among ALL patches of b's supports, including
+  // D4's patch 12, which b runs along against D4's orientation. A sample there says "this arc with D4's inside"
+  // (problem.hpp), which forbids the target's orientation on that arc: the target is no longer admissible and no
+  // later round can return it. After 8 rounds every patch of b \ b' has a sample and the loop gives up (then
+  // falls back to one sample per patch: 4 samples where 2 suffice, 1 with best-first).
+  // Picking only patches that b runs along with their own orientation (inside cell 1, outside cell 0) fixes it
+  // here, on 3000 random generic inputs with coincident boundaries ("[.explore-twins]", oriented picks), and on
+  // the 8 CSGNet programs whose conversion ends with the sufficient set (proofs/csg.md, Section 5).
+  // FAILS at the time of writing.
+  const Scene2 scene = make_scene(Box2{pt(-3, -6), pt(6, 4)},
+                                  {disk("D1", pt(3, q("-1/2")), q("3/2")), disk("D2", pt(q("3/2"), q("-3/2")), 3),
+                                   disk("D3", pt(1, q("1/2")), 2, true), disk("D4", pt(3, q("-1/2")), q("3/2"), true)});
+  const Complex c = complex_of(scene);
+  REQUIRE(bsh::Problem(c).non_generic_junctions().empty());
+  const bsh::Labelling target = evaluate(*leaf(0), c);
+  REQUIRE(bsh::is_orientation_preserving(bsh::Problem(c), target));
+  bsh::SampleGenOptions options;
+  options.search = bsh::Method::Beam;
+  options.fallback_states = 0;
+  const bsh::SampleGenResult r = bsh::generate_samples(c, target, options);
+  INFO("rounds " << r.rounds << ", samples " << r.sample_patches.size() << ", failure '" << r.failure << "'");
+  CHECK(r.reproduced);
+  CHECK_FALSE(r.used_sufficient_set);
+  for (int p : r.sample_patches) {
+    INFO("sample on patch " << p << " of " << c.halfspace_names[c.patches[p].halfspace]);
+    CHECK(on_boundary(c.patches[p], target));
+  }
+  // With the default options (best-first fallback) the greedy rounds still do not finish.
+  const bsh::SampleGenResult d = bsh::generate_samples(c, target, bsh::SampleGenOptions{});
+  CHECK(d.reproduced);
+  CHECK_FALSE(d.used_sufficient_set);
+}
+
 // Not run by default: a search for GENERATE-SAMPLES failures on non-generic inputs (concurrent lines, tangencies),
-// where Props. 6.1/B.1 are not proven. Run with: test_csg_theory "[.explore]".
+// where Props. 6.1/B.1 are not proven. Run with: test_csg_theory "[.explore]". Every failure it found so far was
+// the coincident-patch pick bug (theory 4 [bug]), not a failure of the propositions: see "[.explore-oriented]".
 TEST_CASE("csg theory explore: GENERATE-SAMPLES on non-generic junctions", "[.explore]") {
   rc::prop("non-generic inputs: reproduced (beam and best-first)", [] {
     SceneGenOptions o;
@@ -751,8 +864,47 @@ bool greedy_diagnosis(const Complex& c, const bsh::Labelling& target, bsh::Metho
   std::ostream& out = quiet ? sink : std::cout;
   const bsh::Problem problem(c);
   std::vector<int> samples;
-  for (const bsh::Component& comp : bsh::sample_connectivity(problem, target).components)
-    samples.push_back(comp.patches.front());
+  for (const bsh::Component& comp : bsh::sample_connectivity(problem, target).components) {
+    int pick = comp.patches.front();
+    if (std::getenv("HSX_CX_CENTRAL")) {
+      // samples.hpp's central patch, in doubles: least eccentricity, distances between patch midpoints along the
+      // component (edge a-b costs (|a| + |b|) / 2), ties to the first.
+      const auto& ps = comp.patches;
+      const int n = static_cast<int>(ps.size());
+      double best = 1e300;
+      for (int src = 0; src < n; ++src) {
+        std::vector<double> dist(n, 1e300);
+        std::vector<char> done(n, 0);
+        dist[src] = 0;
+        for (int round = 0; round < n; ++round) {
+          int u = -1;
+          for (int v = 0; v < n; ++v)
+            if (!done[v] && dist[v] < 1e300 && (u < 0 || dist[v] < dist[u])) u = v;
+          if (u < 0) break;
+          done[u] = 1;
+          for (int v = 0; v < n; ++v) {
+            if (v == u) continue;
+            const auto& ju = c.patches[ps[u]].junctions;
+            const auto& jv = c.patches[ps[v]].junctions;
+            const bool adjacent = std::any_of(ju.begin(), ju.end(), [&](int j) {
+              return std::find(jv.begin(), jv.end(), j) != jv.end();
+            });
+            if (!adjacent) continue;
+            const double d = dist[u] + (c.patches[ps[u]].measure.to_double() + c.patches[ps[v]].measure.to_double()) / 2;
+            if (d < dist[v]) dist[v] = d;
+          }
+        }
+        double radius = 0;
+        for (int v = 0; v < n; ++v)
+          if (dist[v] < 1e300) radius = std::max(radius, dist[v]);
+        if (radius < best - 1e-12) {
+          best = radius;
+          pick = ps[src];
+        }
+      }
+    }
+    samples.push_back(pick);
+  }
   if (const char* initial = std::getenv("HSX_CX_INITIAL")) {  // comma-separated patch ids
     samples.clear();
     std::string text = initial;
@@ -768,7 +920,13 @@ bool greedy_diagnosis(const Complex& c, const bsh::Labelling& target, bsh::Metho
     bsh::ExtractOptions eo;
     eo.method = method;
     eo.enumerate_ties = false;
+    eo.certify_limit = 0;  // the paper's search alone (no oracle replacing best-first at non-generic junctions)
+    eo.max_states = 5000;
     const bsh::ExtractResult found = bsh::extract(sp, eo);
+    if (!found.stopped_by.empty()) {
+      out << "  round " << round << ": search stopped by " << found.stopped_by << "\n";
+      return true;  // inconclusive
+    }
     out << "  round " << round << ": samples on patches";
     for (int p : samples) out << " " << p << "(" << c.halfspace_names[c.patches[p].halfspace] << ")";
     out << "; target admissible " << bsh::is_orientation_preserving(sp, target) << ", target energy "
@@ -803,9 +961,18 @@ TEST_CASE("csg theory explore: the greedy loop round by round", "[.explore-greed
   if (!path || !expr) return;
   const Scene2 scene = read_scene_file(path);
   const Complex c = complex_of(scene);
-  const bsh::Labelling target = evaluate(*parse_csg_text(expr, c.halfspace_names), c);
+  bsh::Labelling target;
+  if (std::string(expr) == "@samples") {  // the target: best-first's shape for the scene's own samples
+    bsh::ExtractOptions eo;
+    eo.method = bsh::Method::BestFirst;
+    eo.enumerate_ties = false;
+    target = bsh::extract(bsh::Problem(c), eo).labelling;
+  } else {
+    target = evaluate(*parse_csg_text(expr, c.halfspace_names), c);
+  }
   for (bool oriented : {false, true})
     for (bsh::Method m : {bsh::Method::Beam, bsh::Method::BestFirst}) {
+      if (std::getenv("HSX_EXPLORE_BEAM_ONLY") && m != bsh::Method::Beam) continue;
       std::cout << bsh::to_string(m) << (oriented ? ", picks with b's orientation only" : ", picks as hsx") << "\n";
       const bool ok = greedy_diagnosis(c, target, m, oriented);
       std::cout << "  reproduced " << ok << "\n";

@@ -55,7 +55,7 @@ json() {
 import json, sys
 d = json.load(open(sys.argv[1]))
 try:
-    ok = eval(sys.argv[2])
+    ok = eval("(" + sys.argv[2].strip() + ")")
 except Exception as e:
     print("json check raised %r" % e, file=sys.stderr)
     sys.exit(1)
@@ -144,7 +144,7 @@ for k in 5 6; do
 done
 
 # ---- convert (SCENE --csg) then extract: same area ----
-for expr in "A - B" "(A & B) | (T & ~C)" "A | B"; do
+for expr in "A - B" "(A - B) | (B & ~C)" "A | B"; do
   name="convert lens.json --csg '$expr'"
   run 0 "$name: csg" "$HSX" csg "$SCENES/lens.json" --csg "$expr" --json "$TMP/lc.json" || continue
   run 0 "$name" "$HSX" convert "$SCENES/lens.json" --csg "$expr" --out "$TMP/lo.json" --json "$TMP/lj.json" || continue
@@ -207,10 +207,22 @@ cat >"$TMP/both.json" <<'EOF'
                 {"name": "D1", "kind": "disk", "center": [0, 3], "radius": 2},
                 {"name": "D2", "kind": "disk", "center": [0, -3], "radius": 2}]}
 EOF
-# (D1 & L) | (D2 & ~L) runs along L with L's orientation on D1 and reversed on D2: reported, exit 3, no file.
-run 3 "convert: a boundary used both ways fails" "$HSX" convert "$TMP/both.json" --csg "(D1 & L) | (D2 & ~L)" \
-  --out "$TMP/bo.json" && err_names '"L"' "both orientations"
-if [[ -e "$TMP/bo.json" ]]; then fail "convert failure left $TMP/bo.json behind"; else pass; fi
+# (D1 & L) | (D2 & ~L) runs along L with L's orientation on D1 and reversed on D2: L is kept and a complemented
+# copy "L~" is added for the reversed part (the description says so); the solid comes back.
+if run 0 "convert: a boundary used both ways" "$HSX" convert "$TMP/both.json" --csg "(D1 & L) | (D2 & ~L)" \
+  --out "$TMP/bo.json"; then
+  check "convert both ways: L kept, complemented copy L~ added and described" json "$TMP/bo.json" '
+    [(h["name"], h.get("complement", False)) for h in d["halfspaces"]] ==
+      [("L", False), ("D1", False), ("D2", False), ("L~", True)] and "complemented copy of L" in d["description"]'
+  if run 0 "csg of the both-ways solid" "$HSX" csg "$TMP/both.json" --csg "(D1 & L) | (D2 & ~L)" --json "$TMP/bc.json" &&
+    run 0 "extract the both-ways conversion" "$HSX" extract "$TMP/bo.json" --json "$TMP/br.json"; then
+    a="$(field "$TMP/bc.json" 'd["area"]')"
+    b="$(field "$TMP/br.json" 'd["area"]')"
+    if [[ "$a" == "$b" ]]; then pass; else fail "both-ways conversion: extract area $b, csg area $a"; fi
+    check "both-ways conversion: two half disks, area 4 pi" \
+      json "$TMP/br.json" 'abs(float(d["area"]["decimal"]) - 4 * 3.14159265358979) < 1e-9'
+  fi
+fi
 
 # ---- samples ----
 for k in 1 5 6; do
@@ -223,12 +235,15 @@ for k in 1 5 6; do
   fi
 done
 for search in beam best-first; do
-  if run 0 "samples --csg --search $search" "$HSX" samples "$FIG/fig02-1.json" --csg "(A - B) | (B - A)" \
-    --search "$search" --json "$TMP/sx.json" --out "$TMP/sxo.json"; then
-    check "samples xor ($search): reproduced" json "$TMP/sx.json" 'd["reproduced"] is True and d["search"] in ("beam", "best-first")'
-    run 0 "extract the sampled xor scene" "$HSX" extract "$TMP/sxo.json" --method "$search" --json "$TMP/sxr.json" &&
-      check "sampled xor scene gives the xor back (area 20)" json "$TMP/sxr.json" 'd["area"]["exact"] == "20"'
-  fi
+  for expr in "A | B" "A & B"; do
+    if run 0 "samples --csg '$expr' --search $search" "$HSX" samples "$FIG/fig02-1.json" --csg "$expr" \
+      --search "$search" --json "$TMP/sx.json" --out "$TMP/sxo.json"; then
+      check "samples '$expr' ($search): reproduced" json "$TMP/sx.json" "d['reproduced'] is True and d['search'] == '$search'"
+      run 0 "extract the sampled scene" "$HSX" extract "$TMP/sxo.json" --method "$search" --json "$TMP/sxr.json" &&
+        check "the sampled scene gives '$expr' back" \
+          json "$TMP/sxr.json" "d['area']['exact'] == ('24' if '$expr' == 'A | B' else '4')"
+    fi
+  done
 done
 
 # ---- bad inputs: exit 2, the message names the option, no output file ----
@@ -252,11 +267,15 @@ if [[ "$(field "$TMP/r3a.json" 'max(d["inside_cells"])')" -ge 6 ]]; then
 else
   fail "fig03-a's result has no cell id >= 6 (test setup)"
 fi
-# samples spells the shape option --target: its message must say so.
+# samples spells the shape option --target: its message must say so. FAILS at the time of writing: the message
+# comes from load_solid (src/cli/solid.cpp) and names --shape, an option `hsx samples` does not have.
 run 2 "samples: both --target and --csg" "$HSX" samples "$FIG/fig02-5.json" --target "$TMP/r5.json" --csg "A" \
   --json "$TMP/bad.json" && err_names "--target" "--csg"
-run 2 "samples: a target that is not orientation-preserving" "$HSX" samples "$FIG/fig02-1.json" --csg "~A" \
+run 2 "samples: an unbounded target" "$HSX" samples "$FIG/fig02-1.json" --csg "~A" \
   --json "$TMP/bad.json" && err_names "orientation-preserving"
+# The symmetric difference runs along B reversed around the centre square: no BSH shape has that boundary.
+run 2 "samples: a target that is not orientation-preserving" "$HSX" samples "$FIG/fig02-1.json" \
+  --csg "(A - B) | (B - A)" --json "$TMP/bad.json" && err_names "orientation-preserving"
 run 2 "convert: --csgnet with a SCENE" "$HSX" convert "$FIG/fig02-1.json" --csgnet "c(32,32,16)" --out "$TMP/bad.json" &&
   err_names "--csgnet"
 run 2 "convert: bad --search" "$HSX" convert "$FIG/fig02-1.json" --csg "A" --search greedy --out "$TMP/bad.json" &&
@@ -269,7 +288,7 @@ if [[ -e "$TMP/bad.json" ]]; then fail "a failed command left $TMP/bad.json behi
 CORPUS="$SRC/../shared/data/csgnet/best_st_expressions.txt"
 if [[ -f "$CORPUS" ]]; then
   if run 0 "corpus csgnet --limit 5" "$HSX" corpus csgnet "$CORPUS" --limit 5 --json "$TMP/corpus.json"; then
-    check "corpus: 5 programs, all ok" grep -q "^5 programs: 5 ok" "$TMP/out"
+    check "corpus: 5 programs, all ok" grep -qE "^5 programs.*: 5 ok" "$TMP/out"
     check "corpus json: 5 rows, ok, samples within bounds" json "$TMP/corpus.json" '
       d["format"] == "hsx-corpus/1" and len(d["programs"]) == 5 and
       all(p["ok"] and p["lower_bound"] <= p["samples"] <= p["upper_bound"] for p in d["programs"])'

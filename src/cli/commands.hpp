@@ -11,5 +11,7 @@ void add_extract_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_csg_commands(CLI::App& app);
+void add_nhtree_command(CLI::App& app);
+void add_nhsurvey_command(CLI::App& app);
 
 }  // namespace hsx::cli

@@ -12,6 +12,8 @@ int main(int argc, char** argv) {
   hsx::cli::add_extract_command(app);
   hsx::cli::add_check_command(app);
   hsx::cli::add_csg_commands(app);
+  hsx::cli::add_nhtree_command(app);
+  hsx::cli::add_nhsurvey_command(app);
   hsx::cli::add_bench_command(app);
   try {
     app.parse(argc, argv);

@@ -354,4 +354,15 @@ std::string arrangement_svg(const Scene2& scene, const Arrangement2& arr, const 
   return s;
 }
 
+const char* svg_palette_colour(int index) { return colour_of(index); }
+
+std::string svg_number(double value) { return num(value); }
+
+std::string svg_escape(const std::string& text) { return escape(text); }
+
+std::string svg_edge_commands(const SvgView& v, const ArrEdge2& edge, const OneRootPoint& from,
+                              const OneRootPoint& to, bool travel_ccw) {
+  return edge_commands(View{v.min_x, v.max_y, v.scale, v.left, v.top}, edge, from, to, travel_ccw);
+}
+
 }  // namespace hsx

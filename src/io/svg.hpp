@@ -36,4 +36,22 @@ struct SvgOptions {
 std::string arrangement_svg(const Scene2& scene, const Arrangement2& arrangement, const Complex& complex,
                             const SvgOptions& options = {});
 
+// ---- building blocks shared with other pictures of arrangements (io/nhrep_svg.cpp), same style as above ----
+
+/// Scene to picture coordinates: x from min_x, y flipped from max_y, uniform scale, then offset by (left, top).
+struct SvgView {
+  double min_x = 0, max_y = 0, scale = 1, left = 0, top = 0;
+};
+/// The halfspace palette, cycled by index (negative indices wrap too).
+const char* svg_palette_colour(int index);
+/// A coordinate as printed in pictures: 4 decimals, never "-0.0000".
+std::string svg_number(double value);
+/// XML text escaping.
+std::string svg_escape(const std::string& text);
+/// Path commands (" L x y" or " A ...") continuing from `from` along arrangement edge `edge` to `to`, two points of
+/// the edge in walk order (either may be an interior point of it); `travel_ccw` tells whether that walk turns
+/// counter-clockwise (arcs only). Whether an arc spans more than half its circle is decided exactly.
+std::string svg_edge_commands(const SvgView& view, const ArrEdge2& edge, const OneRootPoint& from,
+                              const OneRootPoint& to, bool travel_ccw);
+
 }  // namespace hsx

@@ -70,6 +70,36 @@ void print_graph(const nhrep::BuildResult& r, const std::vector<std::string>& pa
         << (g.surface.dimension == 3 ? " mesh edge" : " corner") << (c.links.size() == 1 ? "" : "s") << ")\n";
 }
 
+/// Connected components of the solid's cells, adjacent across patches.
+int solid_components(const Complex& complex, const std::vector<char>& solid) {
+  std::vector<int> parent(complex.cells.size());
+  for (std::size_t c = 0; c < parent.size(); ++c) parent[c] = static_cast<int>(c);
+  auto find = [&](int x) {
+    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    return x;
+  };
+  for (const Patch& p : complex.patches)
+    if (solid[static_cast<std::size_t>(p.inside_cell)] && solid[static_cast<std::size_t>(p.outside_cell)])
+      parent[static_cast<std::size_t>(find(p.inside_cell))] = find(p.outside_cell);
+  int count = 0;
+  for (std::size_t c = 0; c < parent.size(); ++c) count += solid[c] && find(static_cast<int>(c)) == static_cast<int>(c);
+  return count;
+}
+
+/// Connected components of the live patch graph (the tree initialisation's MC subgraphs).
+int patch_graph_components(const nhrep::PatchGraph& g) {
+  std::vector<int> parent(g.patches.size());
+  for (std::size_t p = 0; p < parent.size(); ++p) parent[p] = static_cast<int>(p);
+  auto find = [&](int x) {
+    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    return x;
+  };
+  for (const nhrep::Curve& c : g.curves) parent[static_cast<std::size_t>(find(c.patch_a))] = find(c.patch_b);
+  int count = 0;
+  for (int p : g.live_patches()) count += find(p) == p;
+  return count;
+}
+
 nhrep::BuildOptions build_options(const NhtreeOptions& o) {
   nhrep::BuildOptions options;
   options.restart_after_decomposition = o.nhrep_tool;
@@ -298,9 +328,17 @@ int run_planar(const NhtreeOptions& o) {
       << (e.correct ? "correct on every cell"
                     : std::to_string(e.wrong_inside.size() + e.wrong_outside.size()) + " cells wrong")
       << "; " << nhrep::verdict_name(e.verdict) << "\n";
-  if (e.verdict == nhrep::Verdict::DescribableButFails)
-    out << "  NH-Rep needs extended surfaces here (Appendix B): solid cells the tree misses: " << join(e.wrong_inside)
-        << "; cells it adds: " << join(e.wrong_outside) << "\n";
+  if (e.verdict == nhrep::Verdict::DescribableButFails) {
+    out << "  solid cells the tree misses: " << join(e.wrong_inside) << "; cells it adds: " << join(e.wrong_outside)
+        << "\n";
+    const int solid_parts = solid_components(arranged.complex, solid.cells);
+    const int boundary_parts = patch_graph_components(r.graph);
+    if (boundary_parts > solid_parts)
+      out << "  the solid has holes: its boundary has " << boundary_parts << " components but the solid " << solid_parts
+          << ", and the tree initialisation (Section 5.2) unites what should be intersected\n";
+    else
+      out << "  NH-Rep needs extended surfaces here (Appendix B)\n";
+  }
   std::vector<std::string> problems = e.violations;
   for (const std::string& v : e.violations) out << "  violated: " << v << "\n";
   const int status = finish(o, r, problems, out);

@@ -6,7 +6,7 @@
 //   3. BHC on hand cases, and BSH Fig. 2's six shapes (data/figures/fig02-*.json).
 //   4. GENERATE-SAMPLES (bsh::generate_samples): Prop. 6.1 (best-first) and Prop. B.1 (beam, K = 1) on generic
 //      inputs, with the counts' bounds; non-generic inputs are skipped and counted (see proofs/csg.md, Section 5),
-//      and so are targets running along a coincident patch reversed (a known bug, shown by a failing test).
+//      targets running along a coincident patch reversed are checked too (a bug once, fixed; see theory 4 [bug]).
 //   Hidden tests ("[.explore...]") are the searches that found it and tools to study one input round by round.
 #include "algorithms/bsh/extract.hpp"
 #include "algorithms/bsh/problem.hpp"
@@ -587,12 +587,9 @@ bool check_one_target(const Complex& c, const bsh::Problem& problem, bsh::Method
   }
   const Complex bare = bsh::with_samples_on(c, {});
   RC_ASSERT(bsh::is_orientation_preserving(bsh::Problem(bare), target));
-  if (reversed_coincident_patch_on_b(c, target)) {
-    // A known bug, shown deterministically below; skipped (and counted) so that this property stays about the
-    // propositions. Remove this skip when the bug is fixed.
-    ++skipped.reversed_twin;
-    return false;
-  }
+  // Targets running along a coincident patch reversed were skipped while generate_samples could sample such a
+  // patch (theory 4 [bug] below, fixed); they are now counted and checked like every other target.
+  if (reversed_coincident_patch_on_b(c, target)) ++skipped.reversed_twin;
   const int patches = boundary_patch_count(c, target);
   if (patches > 16) {
     ++skipped.too_large;
@@ -675,7 +672,7 @@ TEST_CASE("csg theory 4: GENERATE-SAMPLES with best-first reproduces the target 
   std::cout << "csg theory 4 (Prop. 6.1, best-first): minimum_samples computed on " << skipped.minimum_checked
             << " targets; " << skipped.cases << " scenes drawn, " << skipped.non_generic
             << " skipped for non-generic junctions; " << skipped.targets << " targets on the others, "
-            << skipped.reversed_twin << " skipped for a reversed coincident patch on b (known bug), "
+            << skipped.reversed_twin << " with b along a coincident patch reversed (checked), "
             << skipped.too_large << " skipped as too large; " << skipped.non_empty
             << " non-empty targets checked\n";
   CHECK(ok);
@@ -688,7 +685,7 @@ TEST_CASE("csg theory 4: GENERATE-SAMPLES with beam K=1 reproduces the target (P
   const bool ok = rc::check("generic inputs: reproduced, rounds <= patches + 1, initial = components", [&skipped] { check_generate_samples(bsh::Method::Beam, skipped); });
   std::cout << "csg theory 4 (Prop. B.1, beam K=1): " << skipped.cases << " scenes drawn, " << skipped.non_generic
             << " skipped for non-generic junctions; " << skipped.targets << " targets on the others, "
-            << skipped.reversed_twin << " skipped for a reversed coincident patch on b (known bug), "
+            << skipped.reversed_twin << " with b along a coincident patch reversed (checked), "
             << skipped.too_large << " skipped as too large; " << skipped.non_empty
             << " non-empty targets checked\n";
   CHECK(ok);
@@ -709,7 +706,7 @@ TEST_CASE("csg theory 4: GENERATE-SAMPLES samples a coincident patch against the
   // Picking only patches that b runs along with their own orientation (inside cell 1, outside cell 0) fixes it
   // here, on 3000 random generic inputs with coincident boundaries ("[.explore-twins]", oriented picks), and on
   // the 8 CSGNet programs whose conversion ends with the sufficient set (proofs/csg.md, Section 5).
-  // FAILS at the time of writing.
+  // Failed until generate_samples picked only such oriented patches (commit c9bf8e8).
   const Scene2 scene = make_scene(Box2{pt(-3, -6), pt(6, 4)},
                                   {disk("D1", pt(3, q("-1/2")), q("3/2")), disk("D2", pt(q("3/2"), q("-3/2")), 3),
                                    disk("D3", pt(1, q("1/2")), 2, true), disk("D4", pt(3, q("-1/2")), q("3/2"), true)});
@@ -728,7 +725,7 @@ TEST_CASE("csg theory 4: GENERATE-SAMPLES samples a coincident patch against the
     INFO("sample on patch " << p << " of " << c.halfspace_names[c.patches[p].halfspace]);
     CHECK(on_boundary(c.patches[p], target));
   }
-  // With the default options (best-first fallback) the greedy rounds still do not finish.
+  // With the default options (best-first fallback) too.
   const bsh::SampleGenResult d = bsh::generate_samples(c, target, bsh::SampleGenOptions{});
   CHECK(d.reproduced);
   CHECK_FALSE(d.used_sufficient_set);

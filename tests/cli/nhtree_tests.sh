@@ -55,6 +55,16 @@ import json; d=json.load(open('$TMP/open.json'))
 dec=d['decompositions'][0]; assert dec['both_kinds_after']==dec['both_kinds_before']-1
 assert any(s['outcome']=='case 1: decompose' for s in d['steps']) and 'groups' in d"; then pass; else fail "open corner JSON"; fi
 
+# regression: the bundled meshes' trees, byte for byte (data/meshes/*.tree.conf, also the .conf fuzz seeds)
+for pair in cube:cube lprism:lprism lprism:lprism_open_corner; do
+  obj="${pair%%:*}"; fea="${pair##*:}"
+  "$HSX" nhtree "$M/$obj.obj" --fea "$M/$fea.fea" --conf "$TMP/$fea.conf" >/dev/null 2>&1
+  if cmp -s "$TMP/$fea.conf" "$M/$fea.tree.conf"; then pass; else fail "$fea: tree differs from $M/$fea.tree.conf"; fi
+  # and it compares equal to itself through --reference
+  "$HSX" nhtree "$M/$obj.obj" --fea "$M/$fea.fea" --reference "$M/$fea.tree.conf" >"$TMP/$fea.ref.txt" 2>&1
+  expect_line "$TMP/$fea.ref.txt" "same tree" "$fea --reference"
+done
+
 # sharpness angle: the cube's 90-degree edges are smooth below a 91-degree threshold, sharp at exactly 90
 run_ok "$TMP/cube90.txt" "$M/cube.obj" --fea "$M/cube.fea" --sharp-angle 90
 expect_line "$TMP/cube90.txt" "12 convex" "cube at 90 degrees"

@@ -9,6 +9,8 @@
 #include "complex/boundary_from_arrangement2.hpp"
 #include "complex/boundary_from_mesh.hpp"
 #include "geometry/mesh3.hpp"
+#include "geometry/planar_corners.hpp"
+#include "io/json_values.hpp"
 #include "io/files.hpp"
 #include "io/nhrep_json.hpp"
 #include "io/nhrep_svg.hpp"
@@ -107,11 +109,25 @@ nhrep::BuildOptions build_options(const NhtreeOptions& o) {
   return options;
 }
 
+/// Algorithm 1. The paper's version needs fewer decompositions than patches (proofs/nhrep.md, Lemma 4.3); NH-Rep's
+/// tool's scoped decomposition has no such bound, so its guard is reported as a result, not an internal error.
+nhrep::BuildResult run_algorithm1(nhrep::PatchGraph graph, const NhtreeOptions& o) {
+  const nhrep::BuildOptions options = build_options(o);
+  try {
+    return nhrep::build_tree(std::move(graph), options);
+  } catch (const std::runtime_error& e) {
+    if (!o.nhrep_tool) throw;
+    std::cout << "NH-Rep tool mode did not finish: " << e.what() << "\n";
+    throw CLI::RuntimeError(3);
+  }
+}
+
 void print_run(const nhrep::BuildResult& r, std::ostream& out) {
   for (const nhrep::Decomposition& d : r.decompositions)
     out << "decomposed patch " << d.patch << (d.whole_patch ? "" : " (against its cluster only)") << " into "
-        << join(d.subpatches) << " (" << d.pieces_split
-        << " pieces face-split, " << d.cut_links << " links cut); patches with both convex and concave edges: "
+        << join(d.subpatches) << " (" << d.pieces_split << (d.pieces_split == 1 ? " piece" : " pieces")
+        << " face-split, " << d.cut_links << (d.cut_links == 1 ? " link" : " links")
+        << " cut); patches with both convex and concave edges: "
         << d.both_kinds_before << " -> " << d.both_kinds_after << "\n";
   if (r.rounds > 1) out << "tree constructions: " << r.rounds << " (restarted after each decomposition)\n";
   out << "tree: " << nhtree_text(r.tree) << "\n";
@@ -284,7 +300,7 @@ int run_mesh(const NhtreeOptions& o) {
   std::ostream& out = std::cout;
   std::optional<int> graph_differences;
   if (!o.reference_graph.empty()) graph_differences = compare_reference_graph(o.reference_graph, original, out);
-  nhrep::BuildResult r = nhrep::build_tree(std::move(original), build_options(o));
+  nhrep::BuildResult r = run_algorithm1(std::move(original), o);
   out << o.input << ": " << mesh.vertices.size() << " vertices, " << mesh.faces.size() << " triangles, "
       << feature_count << " feature edges; sharpness angle " << sharp_text << " degrees"
       << (o.nhrep_tool ? "; NH-Rep tool mode (majority vote per curve, scoped decomposition, restart)" : "") << "\n";
@@ -310,10 +326,10 @@ int run_planar(const NhtreeOptions& o) {
   const Arranged2& arranged = *in.arranged;
   if (std::none_of(solid.cells.begin(), solid.cells.end(), [](char c) { return c; }))
     throw InputError("the solid is empty: it has no boundary patches");
-  nhrep::BuildResult r = nhrep::build_tree(
+  nhrep::BuildResult r = run_algorithm1(
       nhrep::build_patch_graph(boundary_from_arrangement2(arranged, solid.cells),
                                o.nhrep_tool ? nhrep::CurveRule::Majority : nhrep::CurveRule::Paper),
-      build_options(o));
+      o);
   std::ostream& out = std::cout;
   // the halfspace each patch lies on, as its natural halfspace (~ for complemented)
   std::vector<std::string> names(r.graph.patches.size());
@@ -346,9 +362,26 @@ int run_planar(const NhtreeOptions& o) {
   if (o.group) groups = std::make_unique<std::vector<std::vector<int>>>(nhrep::group_patches(r.graph, o.max_group));
   nlohmann::json leaves = nlohmann::json::object();
   for (int p : r.graph.live_patches()) leaves[std::to_string(p)] = names[static_cast<std::size_t>(p)];
+  // Where each live patch lies: arrangement edges, and for halves made by patch decomposition, which end they keep
+  // and the exact split point.
+  nlohmann::json where = nlohmann::json::object();
+  for (int p : r.graph.live_patches()) {
+    nlohmann::json pieces = nlohmann::json::array();
+    for (int piece_id : r.graph.patches[static_cast<std::size_t>(p)].pieces) {
+      const BoundaryPiece& piece = r.graph.surface.pieces[static_cast<std::size_t>(piece_id)];
+      nlohmann::json entry = {{"edge", piece.origin}};
+      if (piece.split_of >= 0) {
+        entry["kept_vertex"] = r.graph.surface.links[static_cast<std::size_t>(piece.kept_link)].origin;
+        entry["split_point"] = point_to_json(edge_split_point(arranged.arrangement, piece.origin));
+      }
+      pieces.push_back(entry);
+    }
+    where[std::to_string(p)] = pieces;
+  }
   write_outputs(o, r, groups.get(),
                 {{"input", o.input},
                  {"natural_halfspaces", leaves},
+                 {"patch_pieces", where},
                  {"evaluation", {{"verdict", nhrep::verdict_key(e.verdict)}, {"correct", e.correct},
                                  {"describable", e.describable}, {"wrong_inside", e.wrong_inside},
                                  {"wrong_outside", e.wrong_outside}, {"violations", e.violations}}}});

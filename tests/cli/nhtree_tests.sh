@@ -77,6 +77,15 @@ run_ok "$TMP/lens.txt" "$S" --csg "(A | B) & ~C" --svg "$TMP/lens.svg" --json "$
 expect_line "$TMP/lens.txt" "tree: max(0, min(1, 2))" "lens tree"
 expect_line "$TMP/lens.txt" "correct on every cell; tree correct" "lens evaluation"
 if grep -q "<svg" "$TMP/lens.svg" && [ "$(grep -o 'class="piece"' "$TMP/lens.svg" | wc -l)" -ge 3 ]; then pass; else fail "lens SVG"; fi
+P="$ROOT/data/counterexamples/nhrep/pentagram"
+run_ok "$TMP/star.txt" "$P.json" --csg "$P.csg" --json "$TMP/star.json" --svg "$TMP/star.svg"
+expect_line "$TMP/star.txt" "decomposed patch 0 into 10 11 (1 piece face-split, 1 link cut)" "pentagram decomposition"
+expect_line "$TMP/star.txt" "describable but the tree fails" "pentagram evaluation"
+if python3 -c "
+import json; d=json.load(open('$TMP/star.json'))
+halves=[p for ps in d['patch_pieces'].values() for p in ps if 'split_point' in p]
+assert len(halves)==2 and halves[0]['split_point']==halves[1]['split_point'], halves
+assert d['evaluation']['verdict']=='describable-fails'"; then pass; else fail "pentagram JSON split point"; fi
 run_ok "$TMP/union.txt" "$S" --csg "A | B"
 expect_line "$TMP/union.txt" "tree: min(0, 1)" "union of two disks"
 

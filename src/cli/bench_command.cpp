@@ -1,5 +1,9 @@
-// hsx bench [DIR...]: every method on every scene, timed in one run, reported as ratios to the graph cut.
+// hsx bench [DIR...]: every method on every scene, timed in one run, reported as ratios to the graph cut; with
+// --meshes, NH-Rep's stages on meshes, as ratios to reading the mesh.
 #include "algorithms/bsh/extract.hpp"
+#include "algorithms/nhrep/tree.hpp"
+#include "complex/boundary_from_mesh.hpp"
+#include "geometry/mesh3.hpp"
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
 
@@ -14,6 +18,7 @@ namespace {
 
 struct BenchOptions {
   std::vector<std::string> dirs{"data/scenes", "data/figures"};
+  std::vector<std::string> meshes;  ///< NH-Rep mode: .obj files, each with a .fea beside it
   long brute_force_limit = 200000;
   double time_limit = 60;
 };
@@ -96,6 +101,46 @@ void run_bench(const BenchOptions& o) {
             << " scenes (method columns are times relative to the graph cut of the same scene)\n";
 }
 
+/// NH-Rep on meshes: each stage timed in one run, as a ratio to reading and validating the mesh.
+void run_nhrep_bench(const BenchOptions& o) {
+  std::cout << std::left << std::setw(34) << "mesh" << std::right << std::setw(9) << "faces" << std::setw(9)
+            << "patches" << std::setw(11) << "read s" << std::setw(13) << "classify" << std::setw(13)
+            << "patch graph" << std::setw(13) << "algorithm 1" << std::setw(13) << "check" << std::setw(8)
+            << "decomp" << "\n";
+  for (const std::string& obj : o.meshes) {
+    std::filesystem::path fea = obj;
+    fea.replace_extension(".fea");
+    auto t = std::chrono::steady_clock::now();
+    const Mesh3 mesh = read_mesh3_file(obj);
+    const FeatureEdgeList features = read_fea_file(fea.string());
+    const double read = seconds_since(t);
+    t = std::chrono::steady_clock::now();
+    BoundarySurface surface = boundary_from_mesh(mesh, features);
+    const double classify = seconds_since(t);
+    t = std::chrono::steady_clock::now();
+    nhrep::PatchGraph graph = nhrep::build_patch_graph(std::move(surface));
+    const double patch_graph = seconds_since(t);
+    const std::size_t patches = graph.patches.size();
+    t = std::chrono::steady_clock::now();
+    const nhrep::BuildResult result = nhrep::build_tree(std::move(graph));
+    const double algorithm1 = seconds_since(t);
+    t = std::chrono::steady_clock::now();
+    const bool ok = nhrep::check_tree(result).empty();
+    const double check = seconds_since(t);
+    auto ratio = [&](double x) {
+      std::ostringstream cell;
+      cell << std::fixed << std::setprecision(3) << (read > 0 ? x / read : 0.0) << "x";
+      return cell.str();
+    };
+    std::cout << std::left << std::setw(34) << std::filesystem::path(obj).filename().string() << std::right
+              << std::setw(9) << mesh.faces.size() << std::setw(9) << patches << std::fixed << std::setprecision(4)
+              << std::setw(11) << read << std::setw(13) << ratio(classify) << std::setw(13) << ratio(patch_graph)
+              << std::setw(13) << ratio(algorithm1) << std::setw(13) << ratio(check) << std::setw(8)
+              << result.decompositions.size() << (ok ? "" : "  CHECK FAILED") << "\n";
+  }
+  std::cout << std::defaultfloat << "(stage columns are times relative to reading and validating the same mesh)\n";
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
@@ -104,7 +149,14 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("DIRS", o->dirs, "folders of scenes (default data/scenes data/figures)");
   cmd->add_option("--brute-force-limit", o->brute_force_limit, "skip the oracle above this many labellings");
   cmd->add_option("--time-limit", o->time_limit, "seconds per search before it stops (default 60)");
-  cmd->callback([o] { run_bench(*o); });
+  cmd->add_option("--meshes", o->meshes,
+                  "time NH-Rep's stages on these .obj files (each with its .fea) instead of the BSH methods");
+  cmd->callback([o] {
+    if (o->meshes.empty())
+      run_bench(*o);
+    else
+      run_nhrep_bench(*o);
+  });
 }
 
 }  // namespace hsx::cli

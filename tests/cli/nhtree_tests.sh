@@ -71,6 +71,11 @@ expect_line "$TMP/cube90.txt" "12 convex" "cube at 90 degrees"
 run_ok "$TMP/cube91.txt" "$M/cube.obj" --fea "$M/cube.fea" --sharp-angle 91
 expect_line "$TMP/cube91.txt" "12 smooth" "cube at 91 degrees"
 
+# the benchmark of NH-Rep's stages runs and reports every mesh with its decomposition count
+if "$HSX" bench --meshes "$M/cube.obj" "$M/lprism.obj" >"$TMP/bench.txt" 2>&1; then pass; else fail "bench --meshes exited $?"; fi
+expect_line "$TMP/bench.txt" "cube.obj" "bench cube"
+expect_line "$TMP/bench.txt" "lprism.obj" "bench lprism"
+
 # ---- 2D ----
 S="$ROOT/data/scenes/lens.json"
 run_ok "$TMP/lens.txt" "$S" --csg "(A | B) & ~C" --svg "$TMP/lens.svg" --json "$TMP/lens.json"

@@ -1,5 +1,7 @@
 #include "algorithms/bsh/graph_cut.hpp"
 
+#include "algorithms/flow_graph.hpp"
+
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/edmonds_karp_max_flow.hpp>
 
@@ -130,12 +132,8 @@ class numeric_limits<hsx::bsh::Capacity> {
 namespace hsx::bsh {
 namespace {
 
-using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
-using FlowGraph = boost::adjacency_list<
-    boost::vecS, boost::vecS, boost::directedS, boost::no_property,
-    boost::property<boost::edge_capacity_t, Capacity,
-                    boost::property<boost::edge_residual_capacity_t, Capacity,
-                                    boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>>;
+using Traits = FlowTraits;
+using FlowGraph = hsx::FlowGraph<Capacity>;
 
 /// The unary and binary terms of Eqs. 2-4 as plain data.
 struct Terms {

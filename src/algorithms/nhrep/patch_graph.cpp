@@ -1,5 +1,7 @@
 #include "algorithms/nhrep/patch_graph.hpp"
 
+#include "algorithms/flow_graph.hpp"
+
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/edmonds_karp_max_flow.hpp>
 
@@ -196,12 +198,8 @@ PatchGraph build_patch_graph(BoundarySurface surface, CurveRule rule) {
 
 namespace {
 
-using Traits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
-using FlowGraph = boost::adjacency_list<
-    boost::vecS, boost::vecS, boost::directedS, boost::no_property,
-    boost::property<boost::edge_capacity_t, long,
-                    boost::property<boost::edge_residual_capacity_t, long,
-                                    boost::property<boost::edge_reverse_t, Traits::edge_descriptor>>>>;
+using Traits = FlowTraits;
+using FlowGraph = hsx::FlowGraph<long>;
 
 /// Per piece of the patch: bit 1 if it lies on a convex feature link to another patch, bit 2 on a concave one.
 int terminal_kinds(const PatchGraph& graph, int patch, int piece, const std::vector<char>* scope) {

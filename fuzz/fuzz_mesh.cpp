@@ -8,6 +8,7 @@
 #include "complex/boundary_from_mesh.hpp"
 #include "geometry/mesh3.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <iostream>
@@ -93,9 +94,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   // NH-Rep's Algorithm 1 on every accepted mesh, both as the paper states it and as NH-Rep's tool runs it: it must
   // terminate with a tree that passes every structural check.
-  for (const bool tool : {false, true}) {
+  const bool nesting_known = std::all_of(surface.pieces.begin(), surface.pieces.end(),
+                                         [](const hsx::BoundaryPiece& p) { return p.region >= 0; });
+  for (const int mode : {0, 1, 2}) {  // the paper, NH-Rep's tool, the paper with nested cavities
+    const bool tool = mode == 1;
+    if (mode == 2 && !nesting_known) continue;
     hsx::nhrep::BuildOptions options;
     options.restart_after_decomposition = options.decompose_within_subgraph = tool;
+    options.nest_holes = mode == 2;
     options.max_decompositions = 1000;
     hsx::nhrep::BuildResult result;
     try {
@@ -109,7 +115,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       continue;
     }
     const auto violations = hsx::nhrep::check_tree(result);
-    if (!violations.empty()) finding(std::string(tool ? "tool mode: " : "") + "tree check: " + violations.front());
+    if (!violations.empty())
+      finding(std::string(mode == 1 ? "tool mode: " : mode == 2 ? "nested: " : "") + "tree check: " + violations.front());
   }
   return 0;
 }

@@ -79,6 +79,7 @@ struct SurveyOptions {
   int keep_count = 3;
   bool timings = false;
   bool verbose = false;
+  bool nest_holes = false;
 };
 
 // ---- deterministic random numbers ---------------------------------------------------------------------------------
@@ -277,10 +278,12 @@ struct Outcome {
   nhrep::Evaluation eval;
 };
 
-Outcome run_pipeline(const Arranged2& arranged, const std::vector<char>& solid) {
+Outcome run_pipeline(const Arranged2& arranged, const std::vector<char>& solid, bool nest_holes) {
   Outcome o;
   try {
-    o.built = nhrep::build_tree(nhrep::build_patch_graph(boundary_from_arrangement2(arranged, solid)));
+    nhrep::BuildOptions options;
+    options.nest_holes = nest_holes;
+    o.built = nhrep::build_tree(nhrep::build_patch_graph(boundary_from_arrangement2(arranged, solid)), options);
     for (const std::string& p : nhrep::check_tree(o.built)) o.problems.push_back("check_tree: " + p);
     o.eval = nhrep::evaluate_tree(o.built, arranged.complex, solid);
     o.evaluated = true;
@@ -416,9 +419,9 @@ class Survey {
       case Status::Done: break;
     }
     ++tally.solids;
-    const Outcome o = run_pipeline(c.arranged, c.solid);
+    const Outcome o = run_pipeline(c.arranged, c.solid, opt_.nest_holes);
     std::optional<Outcome> own;
-    if (c.own_arranged) own = run_pipeline(*c.own_arranged, c.own_solid);
+    if (c.own_arranged) own = run_pipeline(*c.own_arranged, c.own_solid, opt_.nest_holes);
     std::vector<std::string> problems = o.problems;
     if (own)
       for (const std::string& p : own->problems) problems.push_back("on the scene's own domain: " + p);
@@ -761,6 +764,8 @@ void add_nhsurvey_command(CLI::App& app) {
   cmd->add_option("--keep-count", o->keep_count, "keep the first K examples of each source (default 3)");
   cmd->add_flag("--timings", o->timings, "add seconds per source to the table");
   cmd->add_flag("-v,--verbose", o->verbose, "one line per solid");
+  cmd->add_flag("--nest-holes", o->nest_holes,
+                "extension: holes' trees intersected with their part's tree (hsx nhtree --nest-holes)");
   cmd->callback([o] {
     const int status = run_survey(*o);
     if (status != 0) throw CLI::RuntimeError(status);

@@ -29,6 +29,7 @@ namespace {
 struct NhtreeOptions {
   std::string input, fea_path, sharp_angle;  ///< empty: 0, or 20 with --nhrep-tool
   bool nhrep_tool = false;
+  bool nest_holes = false;
   SolidSource solid;
   std::string json_path, conf_path, svg_path, reference_conf, reference_face_patch, reference_graph;
   bool group = false;
@@ -106,6 +107,7 @@ nhrep::BuildOptions build_options(const NhtreeOptions& o) {
   nhrep::BuildOptions options;
   options.restart_after_decomposition = o.nhrep_tool;
   options.decompose_within_subgraph = o.nhrep_tool;
+  options.nest_holes = o.nest_holes;
   return options;
 }
 
@@ -115,6 +117,9 @@ nhrep::BuildResult run_algorithm1(nhrep::PatchGraph graph, const NhtreeOptions& 
   const nhrep::BuildOptions options = build_options(o);
   try {
     return nhrep::build_tree(std::move(graph), options);
+  } catch (const std::invalid_argument& e) {
+    if (!o.nest_holes) throw;
+    throw InputError(std::string("--nest-holes: ") + e.what());
   } catch (const std::runtime_error& e) {
     if (!o.nhrep_tool) throw;
     std::cout << "NH-Rep tool mode did not finish: " << e.what() << "\n";
@@ -303,12 +308,14 @@ int run_mesh(const NhtreeOptions& o) {
   nhrep::BuildResult r = run_algorithm1(std::move(original), o);
   out << o.input << ": " << mesh.vertices.size() << " vertices, " << mesh.faces.size() << " triangles, "
       << feature_count << " feature edges; sharpness angle " << sharp_text << " degrees"
-      << (o.nhrep_tool ? "; NH-Rep tool mode (majority vote per curve, scoped decomposition, restart)" : "") << "\n";
+      << (o.nhrep_tool ? "; NH-Rep tool mode (majority vote per curve, scoped decomposition, restart)" : "")
+      << (o.nest_holes ? "; cavities nested" : "") << "\n";
   for (const std::string& n : notes) out << "note: " << n << "\n";
   print_graph(r, {}, out);
   print_run(r, out);
   const int status = finish(o, r, {}, out);
-  nlohmann::json extra = {{"input", o.input}, {"sharp_angle", sharp_text}, {"nhrep_tool", o.nhrep_tool}};
+  nlohmann::json extra = {{"input", o.input}, {"sharp_angle", sharp_text}, {"nhrep_tool", o.nhrep_tool},
+                          {"nest_holes", o.nest_holes}};
   if (!o.reference_conf.empty()) extra["reference_equal"] = compare_reference(o, r, out);
   if (graph_differences) extra["reference_graph_differences"] = *graph_differences;
   std::unique_ptr<std::vector<std::vector<int>>> groups;
@@ -349,7 +356,7 @@ int run_planar(const NhtreeOptions& o) {
         << "\n";
     const int solid_parts = solid_components(arranged.complex, solid.cells);
     const int boundary_parts = patch_graph_components(r.graph);
-    if (boundary_parts > solid_parts)
+    if (boundary_parts > solid_parts && !o.nest_holes)
       out << "  the solid has holes: its boundary has " << boundary_parts << " components but the solid " << solid_parts
           << ", and the tree initialisation (Section 5.2) unites what should be intersected\n";
     else
@@ -411,6 +418,9 @@ void add_nhtree_command(CLI::App& app) {
   cmd->add_flag("--nhrep-tool", o->nhrep_tool,
                "behave like NH-Rep's own tool: sharpness angle 20 unless given, majority vote per feature curve, "
                "decomposition against the current cluster only, and a fresh tree after each decomposition");
+  cmd->add_flag("--nest-holes", o->nest_holes,
+               "extension: build each hole's or cavity's tree under its solid part's tree (intersected) instead of "
+               "uniting every boundary component as Section 5.2 does");
   cmd->add_option("--shape", o->solid.shape_path, "2D: the solid as an hsx-result/1 file computed from INPUT");
   cmd->add_option("--csg", o->solid.csg, "2D: the solid as a CSG expression over INPUT's halfspaces");
   cmd->add_option("--json", o->json_path, "write the tree, patch graph, decompositions and steps (hsx-nhtree/1)");

@@ -62,6 +62,8 @@ std::vector<int> split_piece(BoundarySurface& surface, int piece) {
     part.carrier = parent.carrier;
     part.carrier_complemented = parent.carrier_complemented;
     part.split_of = piece;
+    part.region = parent.region;
+    part.hole = parent.hole;
     part.kept_link = l;
     part.links.push_back(l);
     const int id = static_cast<int>(surface.pieces.size());

@@ -13,6 +13,9 @@
 //   deviation from flat below the sharpness angle). A single link is never Hybrid; curves are (see nhrep).
 // - `corners` of a link are its end points where it can continue into another link of the same feature curve
 //   (3D: the mesh edge's two vertex ids; 2D: none, a 2D feature curve is a single point).
+// - `region` / `hole` (optional) say which connected part of the solid a piece bounds and whether it bounds a
+//   hole or cavity of it; every piece of one boundary component has the same values. Section 5.2's tree
+//   initialisation ignores them; nhrep's `nest_holes` option uses them.
 // - `origin` ties a piece back to geometry (2D: arrangement edge index; 3D: triangle index). A piece made by
 //   split_piece keeps its parent's origin and records the one original link it kept in `kept_link`.
 #pragma once
@@ -43,6 +46,10 @@ struct BoundaryPiece {
   int split_of = -1;              ///< the piece this one was split from (-1: an original piece)
   int kept_link = -1;             ///< for a split piece: the parent's link it kept
   bool retired = false;           ///< replaced by split_piece; has no links and belongs to no patch
+  /// Nesting, when known: the connected part of the solid the piece bounds (-1: not known), and whether the
+  /// outside across the piece is bounded (a hole in 2D, a cavity in 3D) rather than reaching infinity.
+  int region = -1;
+  bool hole = false;
 };
 
 struct BoundarySurface {

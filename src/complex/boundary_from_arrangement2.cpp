@@ -19,6 +19,38 @@ FeatureType feature_type_of(CornerAngle angle) {
   return FeatureType::Smooth;
 }
 
+/// Connected components of the faces with solid[f] == want, adjacent across non-box edges; per face its component
+/// (-1 for the others), and per component whether it holds an outer face (reaches the domain box, hence infinity).
+std::vector<int> face_components(const Arrangement2& arr, const std::vector<char>& solid, char want,
+                                 std::vector<char>& touches_box) {
+  std::vector<int> component(arr.faces().size(), -1);
+  std::vector<std::vector<int>> neighbours(arr.faces().size());
+  for (const ArrEdge2& e : arr.edges())
+    if (e.left_face >= 0 && e.right_face >= 0) {
+      neighbours[static_cast<std::size_t>(e.left_face)].push_back(e.right_face);
+      neighbours[static_cast<std::size_t>(e.right_face)].push_back(e.left_face);
+    }
+  touches_box.clear();
+  for (std::size_t start = 0; start < arr.faces().size(); ++start) {
+    if (solid[start] != want || component[start] >= 0) continue;
+    const int id = static_cast<int>(touches_box.size());
+    touches_box.push_back(0);
+    std::vector<int> stack{static_cast<int>(start)};
+    component[start] = id;
+    while (!stack.empty()) {
+      const int f = stack.back();
+      stack.pop_back();
+      if (arr.faces()[static_cast<std::size_t>(f)].outer) touches_box[static_cast<std::size_t>(id)] = 1;
+      for (int g : neighbours[static_cast<std::size_t>(f)])
+        if (solid[static_cast<std::size_t>(g)] == want && component[static_cast<std::size_t>(g)] < 0) {
+          component[static_cast<std::size_t>(g)] = id;
+          stack.push_back(g);
+        }
+    }
+  }
+  return component;
+}
+
 }  // namespace
 
 BoundarySurface boundary_from_arrangement2(const Arranged2& arranged, const std::vector<char>& solid_cells) {
@@ -30,6 +62,40 @@ BoundarySurface boundary_from_arrangement2(const Arranged2& arranged, const std:
     throw std::invalid_argument("boundary_from_arrangement2: " + std::to_string(solid_cells.size()) +
                                 " solid flags for " + std::to_string(complex.cells.size()) + " cells");
   const SolidBoundary2 boundary = solid_boundary2(arr, solid_cells);
+
+  // Nesting. Solid parts and void components alternate outwards: rooted at the void that reaches the box, each
+  // solid part's parent is the void around it, and its other adjacent voids are its holes (an island in a hole
+  // of another part has that hole as its outside).
+  std::vector<char> part_touches_box, void_touches_box;
+  const std::vector<int> solid_part = face_components(arr, solid_cells, 1, part_touches_box);
+  const std::vector<int> void_part = face_components(arr, solid_cells, 0, void_touches_box);
+  const std::size_t parts = part_touches_box.size(), voids = void_touches_box.size();
+  std::vector<std::vector<int>> part_voids(parts), void_parts(voids);
+  for (const SolidBoundaryEdge2& b : boundary.edges) {
+    const ArrEdge2& e = arr.edges()[static_cast<std::size_t>(b.edge)];
+    const int p = solid_part.at(static_cast<std::size_t>(b.forward ? e.left_face : e.right_face));
+    const int v = void_part.at(static_cast<std::size_t>(b.forward ? e.right_face : e.left_face));
+    part_voids[static_cast<std::size_t>(p)].push_back(v);
+    void_parts[static_cast<std::size_t>(v)].push_back(p);
+  }
+  std::vector<int> outside_of(parts, -1);  // per solid part, the void component around it
+  std::vector<char> void_seen(voids, 0);
+  std::vector<int> queue;
+  for (std::size_t v = 0; v < voids; ++v)
+    if (void_touches_box[v]) {
+      void_seen[v] = 1;
+      queue.push_back(static_cast<int>(v));
+    }
+  for (std::size_t k = 0; k < queue.size(); ++k)
+    for (int p : void_parts[static_cast<std::size_t>(queue[k])]) {
+      if (outside_of[static_cast<std::size_t>(p)] >= 0) continue;
+      outside_of[static_cast<std::size_t>(p)] = queue[k];
+      for (int v : part_voids[static_cast<std::size_t>(p)])
+        if (!void_seen[static_cast<std::size_t>(v)]) {
+          void_seen[static_cast<std::size_t>(v)] = 1;
+          queue.push_back(v);
+        }
+    }
 
   BoundarySurface surface;
   surface.dimension = 2;
@@ -43,6 +109,9 @@ BoundarySurface boundary_from_arrangement2(const Arranged2& arranged, const std:
     const auto& inside = complex.cells.at(static_cast<std::size_t>(solid_cell)).inside;
     BoundaryPiece piece;
     piece.origin = b.edge;
+    const int void_cell = b.forward ? edge.right_face : edge.left_face;
+    piece.region = solid_part.at(static_cast<std::size_t>(solid_cell));
+    piece.hole = void_part.at(static_cast<std::size_t>(void_cell)) != outside_of.at(static_cast<std::size_t>(piece.region));
     piece.carrier = edge.halfspaces.front();
     piece.carrier_complemented = true;
     for (int h : edge.halfspaces)  // ascending

@@ -15,6 +15,11 @@
 //   through a vertex where the arrangement split it, stays inside one patch. `type` is the exact corner type
 //   (Convex below 180 degrees, cusps of 0 included; Concave above, 360-degree cusps included; Smooth at exactly
 //   180), set on every link, although BoundaryLink only promises it for feature links.
+// - Nesting: `region` is the connected component of solid cells (adjacent across edges) the piece bounds; `hole`
+//   is true when the non-solid component across the piece is not the one around that part. Solid parts and
+//   non-solid components alternate outwards from the one that reaches the domain box: each part's surrounding
+//   component is the one through which a search from the box reaches it first (an island inside a hole of another
+//   part is surrounded by that hole).
 #pragma once
 
 #include "complex/boundary.hpp"

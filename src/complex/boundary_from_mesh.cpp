@@ -13,6 +13,43 @@ FeatureType mesh_edge_type(const Mesh3& mesh, int edge, const SharpnessAngle& sh
   return FeatureType::Smooth;
 }
 
+namespace {
+
+/// Shells (components of triangles across edges) with their exact signed volumes: a shell of positive volume is an
+/// outer boundary, one of negative volume a cavity. With a single outer shell every cavity lies in it; with several,
+/// which one holds a cavity would need a point-in-mesh test, so cavities then keep region -1 (unknown).
+void set_mesh_nesting(const Mesh3& mesh, BoundarySurface& surface) {
+  const std::size_t n = mesh.faces.size();
+  std::vector<int> parent(n);
+  for (std::size_t f = 0; f < n; ++f) parent[f] = static_cast<int>(f);
+  auto find = [&](int x) {
+    while (parent[static_cast<std::size_t>(x)] != x)
+      x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+    return x;
+  };
+  for (const MeshEdge& e : mesh.edges) parent[static_cast<std::size_t>(find(e.face_ab))] = find(e.face_ba);
+  std::vector<Rational> volume(n);  // six times the signed volume, per shell root
+  for (std::size_t f = 0; f < n; ++f) {
+    const PointQ3& a = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][0])];
+    const PointQ3& b = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][1])];
+    const PointQ3& c = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][2])];
+    volume[static_cast<std::size_t>(find(static_cast<int>(f)))] +=
+        a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+  }
+  std::vector<int> region(n, -1);
+  int outer_shells = 0;
+  for (std::size_t f = 0; f < n; ++f)
+    if (find(static_cast<int>(f)) == static_cast<int>(f) && volume[f] > 0) region[f] = outer_shells++;
+  for (std::size_t f = 0; f < n; ++f) {
+    const std::size_t root = static_cast<std::size_t>(find(static_cast<int>(f)));
+    BoundaryPiece& piece = surface.pieces[f];
+    piece.hole = volume[root] < 0;
+    piece.region = piece.hole ? (outer_shells == 1 ? 0 : -1) : region[root];
+  }
+}
+
+}  // namespace
+
 BoundarySurface boundary_from_mesh(const Mesh3& mesh, const FeatureEdgeList& features,
                                    const Rational& sharp_angle_degrees, std::vector<std::string>* notes) {
   const SharpnessAngle sharpness(sharp_angle_degrees);
@@ -26,6 +63,7 @@ BoundarySurface boundary_from_mesh(const Mesh3& mesh, const FeatureEdgeList& fea
     piece.origin = static_cast<int>(f);
     piece.links.assign(mesh.face_edges[f].begin(), mesh.face_edges[f].end());
   }
+  set_mesh_nesting(mesh, surface);
   surface.links.resize(mesh.edges.size());
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) {
     const MeshEdge& edge = mesh.edges[e];

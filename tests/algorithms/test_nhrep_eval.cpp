@@ -2,6 +2,7 @@
 // (algorithms/nhrep/evaluate.hpp), on hand-checked solids, random scenes and the kept counterexamples.
 #include "algorithms/csg/describability.hpp"
 #include "algorithms/csg/expression.hpp"
+#include "algorithms/nhrep/compare.hpp"
 #include "algorithms/nhrep/evaluate.hpp"
 #include "complex/boundary_from_arrangement2.hpp"
 #include "io/csg_text.hpp"
@@ -37,21 +38,23 @@ struct Pipeline {
   Evaluation eval;
 };
 
-Pipeline run_cells(Arranged2 arranged, std::vector<char> solid) {
+Pipeline run_cells(Arranged2 arranged, std::vector<char> solid, bool nest_holes = false) {
   Pipeline p;
   p.arranged = std::move(arranged);
   p.solid = std::move(solid);
-  p.built = build_tree(build_patch_graph(boundary_from_arrangement2(p.arranged, p.solid)));
+  BuildOptions options;
+  options.nest_holes = nest_holes;
+  p.built = build_tree(build_patch_graph(boundary_from_arrangement2(p.arranged, p.solid)), options);
   p.tree_problems = check_tree(p.built);
   p.eval = evaluate_tree(p.built, p.arranged.complex, p.solid);
   return p;
 }
 
-Pipeline run(const Scene2& scene, const std::string& csg) {
+Pipeline run(const Scene2& scene, const std::string& csg, bool nest_holes = false) {
   Arranged2 arranged = arrange(scene);
   const auto expr = parse_csg_text(csg, arranged.complex.halfspace_names);
   std::vector<char> solid = csg::evaluate(*expr, arranged.complex);
-  return run_cells(std::move(arranged), std::move(solid));
+  return run_cells(std::move(arranged), std::move(solid), nest_holes);
 }
 
 Box2 box(int r) { return Box2{pt(q(std::to_string(-r)), q(std::to_string(-r))), pt(q(std::to_string(r)), q(std::to_string(r)))}; }
@@ -220,6 +223,31 @@ TEST_CASE("nheval: an annulus gets a min root over its two loops, which is the w
   CHECK(static_cast<long>(p.eval.wrong_outside.size()) == std::count(p.solid.begin(), p.solid.end(), 0));
 }
 
+TEST_CASE("nheval: with nest_holes, holes are intersected with their part and islands united", "[nheval]") {
+  const Scene2 s = make_scene(box(6), {disk("A", pt(q("0"), q("0")), q("3")), disk("B", pt(q("0"), q("0")), q("2")),
+                                       disk("C", pt(q("0"), q("0")), q("1")), x_le("X", "4"), x_ge("W", "-4"),
+                                       y_le("Y", "4"), y_ge("Z", "-4")});
+  SECTION("an annulus") {
+    const Pipeline p = run(s, "A - B", true);
+    require_consistent(p);
+    CHECK(p.built.tree.nodes[static_cast<std::size_t>(p.built.tree.root)].op == Op::Max);
+    CHECK(p.eval.verdict == Verdict::TreeCorrect);
+  }
+  SECTION("an annulus with an island in its hole") {
+    const Pipeline paper = run(s, "(A - B) | C");
+    require_consistent(paper);
+    CHECK(paper.eval.verdict == Verdict::DescribableButFails);
+    const Pipeline p = run(s, "(A - B) | C", true);
+    require_consistent(p);
+    CHECK(p.built.tree.nodes[static_cast<std::size_t>(p.built.tree.root)].op == Op::Min);
+    CHECK(p.eval.verdict == Verdict::TreeCorrect);
+  }
+  SECTION("a square with a round hole, and with a square hole") {
+    CHECK(run(s, "X & W & Y & Z - B", true).eval.verdict == Verdict::TreeCorrect);
+    CHECK(run(s, "X & W & Y & Z - B").eval.verdict == Verdict::DescribableButFails);
+  }
+}
+
 TEST_CASE("nheval: a wedge bitten by a disk is not describable by its patches' halfspaces", "[nheval]") {
   // y >= |x| minus the disk of radius 5/2 around (0, 3): the disk crosses both lines, so the wedge outside the
   // disk has two pieces with the same signs; the solid is the one at the apex.
@@ -360,6 +388,28 @@ TEST_CASE("nheval: on random solids the tree is valid and the classification con
     const std::vector<char> solid = gen_solid(a.complex);
     RC_PRE(std::any_of(solid.begin(), solid.end(), [](char c) { return c != 0; }));
     assert_consistent(run_cells(std::move(a), solid));
+  });
+}
+
+TEST_CASE("nheval: nest_holes keeps trees valid and changes nothing for solids without holes", "[nheval][property]") {
+  rc::prop("nested vs paper", [] {
+    const Scene2 scene = *test::gen_scene(eval_scenes());
+    Arranged2 a = arrange(scene);
+    const std::vector<char> solid = gen_solid(a.complex);
+    RC_PRE(std::any_of(solid.begin(), solid.end(), [](char c) { return c != 0; }));
+    const Pipeline paper = run_cells(a, solid);
+    const Pipeline nested = run_cells(std::move(a), solid, true);
+    assert_consistent(nested);
+    const auto& pieces = nested.built.graph.surface.pieces;
+    const bool holes = std::any_of(pieces.begin(), pieces.end(), [](const BoundaryPiece& b) { return b.hole; });
+    std::vector<int> identity(paper.built.graph.patches.size());
+    std::iota(identity.begin(), identity.end(), 0);
+    if (!holes) {
+      RC_ASSERT(canonical_form(paper.built.tree, identity) == canonical_form(nested.built.tree, identity));
+      RC_ASSERT(paper.eval.verdict == nested.eval.verdict);
+    }
+    RC_TAG(holes ? "holes" : "no holes");
+    RC_TAG(std::string("paper ") + verdict_key(paper.eval.verdict) + ", nested " + verdict_key(nested.eval.verdict));
   });
 }
 

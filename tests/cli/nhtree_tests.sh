@@ -56,7 +56,7 @@ dec=d['decompositions'][0]; assert dec['both_kinds_after']==dec['both_kinds_befo
 assert any(s['outcome']=='case 1: decompose' for s in d['steps']) and 'groups' in d"; then pass; else fail "open corner JSON"; fi
 
 # regression: the bundled meshes' trees, byte for byte (data/meshes/*.tree.conf, also the .conf fuzz seeds)
-for pair in cube:cube lprism:lprism lprism:lprism_open_corner; do
+for pair in cube:cube lprism:lprism lprism:lprism_open_corner hollow_cube:hollow_cube; do
   obj="${pair%%:*}"; fea="${pair##*:}"
   "$HSX" nhtree "$M/$obj.obj" --fea "$M/$fea.fea" --conf "$TMP/$fea.conf" >/dev/null 2>&1
   if cmp -s "$TMP/$fea.conf" "$M/$fea.tree.conf"; then pass; else fail "$fea: tree differs from $M/$fea.tree.conf"; fi
@@ -64,6 +64,17 @@ for pair in cube:cube lprism:lprism lprism:lprism_open_corner; do
   "$HSX" nhtree "$M/$obj.obj" --fea "$M/$fea.fea" --reference "$M/$fea.tree.conf" >"$TMP/$fea.ref.txt" 2>&1
   expect_line "$TMP/$fea.ref.txt" "same tree" "$fea --reference"
 done
+
+# a cavity: Section 5.2 unites the two shells (min root); --nest-holes intersects the cavity's tree with the outer's
+"$HSX" nhtree "$M/hollow_cube.obj" --fea "$M/hollow_cube.fea" --nest-holes --conf "$TMP/hollow.nested.conf" >/dev/null 2>&1
+if cmp -s "$TMP/hollow.nested.conf" "$M/hollow_cube.nested.tree.conf"; then pass; else fail "hollow cube --nest-holes tree"; fi
+expect_line "$M/hollow_cube.tree.conf" "flag_convex = 0" "hollow cube: the paper's min root"
+expect_line "$M/hollow_cube.nested.tree.conf" "flag_convex = 1" "hollow cube nested: a max root"
+P2="$ROOT/data/counterexamples/nhrep/annulus"
+run_ok "$TMP/annulus.txt" "$P2.json" --csg "$P2.csg"
+expect_line "$TMP/annulus.txt" "the solid has holes" "annulus diagnosis"
+run_ok "$TMP/annulus.nested.txt" "$P2.json" --csg "$P2.csg" --nest-holes
+expect_line "$TMP/annulus.nested.txt" "correct on every cell; tree correct" "annulus nested"
 
 # sharpness angle: the cube's 90-degree edges are smooth below a 91-degree threshold, sharp at exactly 90
 run_ok "$TMP/cube90.txt" "$M/cube.obj" --fea "$M/cube.fea" --sharp-angle 90

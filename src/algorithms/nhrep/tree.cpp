@@ -1,6 +1,7 @@
 #include "algorithms/nhrep/tree.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -60,9 +61,9 @@ class Builder {
   Builder(BuildResult& result, const BuildOptions& options) : result_(result), options_(options) {}
 
   /// ConstructTreeNode(G', r). `parent` is a node id, or -1 for the virtual root (op min).
-  void construct(std::vector<int> subgraph, int parent) {
+  /// `at_root`: r is the (virtual or real) root of tree initialisation, where Case 1's first subcase applies.
+  void construct(std::vector<int> subgraph, int parent, bool at_root) {
     const Op parent_op = parent < 0 ? Op::Min : result_.tree.nodes[at(parent)].op;
-    const bool at_root = parent < 0 || parent == result_.tree.root;
     for (;;) {
       PatchGraph& graph = result_.graph;
       TreeStep step;
@@ -81,19 +82,26 @@ class Builder {
         result_.steps.push_back(step);
         std::vector<int> rest;
         std::set_difference(subgraph.begin(), subgraph.end(), step.q.begin(), step.q.end(), std::back_inserter(rest));
-        for (auto& component : mc_subgraphs(graph, rest)) construct(std::move(component), node);
+        for (auto& component : mc_subgraphs(graph, rest)) construct(std::move(component), node, false);
         return;
       }
 
       const auto convex = touches(graph, subgraph, [](FeatureType t) {
         return t == FeatureType::Convex || t == FeatureType::Hybrid;
       });
-      const bool any_convex = std::any_of(subgraph.begin(), subgraph.end(), [&](int v) { return convex[at(v)]; });
-      if (at_root && parent_op == Op::Min && !any_convex) {
+      const auto concave = touches(graph, subgraph, [](FeatureType t) {
+        return t == FeatureType::Concave || t == FeatureType::Hybrid;
+      });
+      // the kind of edge that would make G' more than one op's leaves: convex under a min parent, concave under max
+      const auto& other = parent_op == Op::Min ? convex : concave;
+      const bool any_other = std::any_of(subgraph.begin(), subgraph.end(), [&](int v) { return other[at(v)]; });
+      if (at_root && !any_other) {
         // Case 1, first subcase (Fig. 5): no convex edges, so the solid is a union of its patches' halfspaces.
         // Every vertex has no convex edge, so all of G' are leaves of a min node; under a real min root they are
-        // the root's own leaves (a min child under a min node would break alternation).
-        step.outcome = "case 1: no convex edges";
+        // the root's own leaves (a min child under a min node would break alternation). The mirror case only
+        // arises for a hole nested under a max node (nest_holes): no concave edges, so its patches' halfspaces
+        // are intersected, as the max parent's own leaves.
+        step.outcome = parent_op == Op::Min ? "case 1: no convex edges" : "case 1: no concave edges (nested hole)";
         if (parent < 0) {
           step.node = add_node(Op::Min, subgraph, parent);
         } else {
@@ -107,9 +115,6 @@ class Builder {
       }
 
       // Case 1, second subcase: decompose the lowest patch of G' with both convex and concave edges in G'.
-      const auto concave = touches(graph, subgraph, [](FeatureType t) {
-        return t == FeatureType::Concave || t == FeatureType::Hybrid;
-      });
       const auto pick = std::find_if(subgraph.begin(), subgraph.end(), [&](int v) { return convex[at(v)] && concave[at(v)]; });
       if (pick == subgraph.end())
         throw std::logic_error("Algorithm 1: Q is empty but no patch has both convex and concave edges");
@@ -135,20 +140,140 @@ class Builder {
     }
   }
 
+  /// A node under `parent`; with parent -1 (the virtual root) it is the root of what construct builds, recorded
+  /// in `top_`.
   int add_node(Op op, std::vector<int> leaves, int parent) {
     const int id = static_cast<int>(result_.tree.nodes.size());
     result_.tree.nodes.push_back(TreeNode{op, std::move(leaves), {}});
     if (parent < 0)
-      result_.tree.root = id;
+      top_ = id;
     else
       result_.tree.nodes[at(parent)].children.push_back(id);
     return id;
   }
 
+  /// ConstructTreeNode under the virtual root; returns the node it made the top of the subtree.
+  int construct_top(std::vector<int> subgraph) {
+    top_ = -1;
+    construct(std::move(subgraph), -1, true);
+    return top_;
+  }
+
  private:
   BuildResult& result_;
   const BuildOptions& options_;
+  int top_ = -1;
 };
+
+/// The nesting extension (BuildOptions::nest_holes): one subtree per connected part of the solid, the trees of its
+/// holes intersected with the tree of its outer boundary, parts united under a min root.
+int build_nested(Builder& builder, BuildResult& result, const std::vector<std::vector<int>>& components) {
+  const PatchGraph& graph = result.graph;
+  std::map<int, std::pair<std::vector<int>, std::vector<int>>> parts;  // region -> (outer components, holes)
+  for (std::size_t k = 0; k < components.size(); ++k) {
+    // A component is a hole only if all of it faces a hole: where the solid touches itself at a point, one
+    // boundary cycle can run along the outside and a hole.
+    int region = -1;
+    bool hole = true;
+    for (int p : components[k])
+      for (int piece_id : graph.patches[at(p)].pieces) {
+        const BoundaryPiece& piece = graph.surface.pieces[at(piece_id)];
+        region = piece.region;
+        hole = hole && piece.hole;
+      }
+    if (region < 0)
+      throw std::invalid_argument("nesting: patch " + std::to_string(components[k].front()) +
+                                  " has no known solid part (e.g. a cavity in a mesh with several outer shells)");
+    auto& part = parts[region];
+    (hole ? part.second : part.first).push_back(static_cast<int>(k));
+  }
+  std::vector<int> part_nodes;
+  for (auto& [region, part] : parts) {
+    if (part.first.size() != 1)
+      throw std::invalid_argument("nesting: solid part " + std::to_string(region) + " has " +
+                                  std::to_string(part.first.size()) + " outer boundary components, expected 1");
+    int node = builder.construct_top(components[at(part.first.front())]);
+    if (!part.second.empty()) {
+      if (result.tree.nodes[at(node)].op == Op::Min) {  // intersect: a max node above the outer boundary's tree
+        const int max_node = builder.add_node(Op::Max, {}, -1);
+        result.tree.nodes[at(max_node)].children.push_back(node);
+        node = max_node;
+      }
+      for (int hole : part.second) builder.construct(components[at(hole)], node, true);
+    }
+    part_nodes.push_back(node);
+  }
+  if (part_nodes.size() == 1) return part_nodes.front();
+  const int root = builder.add_node(Op::Min, {}, -1);
+  for (int node : part_nodes) {
+    TreeNode& n = result.tree.nodes[at(node)];
+    TreeNode& r = result.tree.nodes[at(root)];
+    if (n.op == Op::Max) {
+      r.children.push_back(node);
+    } else {  // a union part joins the root's union (alternation)
+      r.leaves.insert(r.leaves.end(), n.leaves.begin(), n.leaves.end());
+      r.children.insert(r.children.end(), n.children.begin(), n.children.end());
+      n.leaves.clear();
+      n.children.clear();
+    }
+  }
+  std::sort(result.tree.nodes[at(root)].leaves.begin(), result.tree.nodes[at(root)].leaves.end());
+  return root;
+}
+
+/// Drops nodes the root does not reach (left behind when nesting merges a union part into the root) and renumbers
+/// the others in creation order; steps follow.
+void compact(BuildResult& result) {
+  Tree& tree = result.tree;
+  std::vector<char> reached(tree.nodes.size(), 0);
+  std::vector<int> stack{tree.root};
+  while (!stack.empty()) {
+    const int n = stack.back();
+    stack.pop_back();
+    reached[at(n)] = 1;
+    for (int c : tree.nodes[at(n)].children) stack.push_back(c);
+  }
+  std::vector<int> new_id(tree.nodes.size(), -1);
+  std::vector<TreeNode> nodes;
+  for (std::size_t n = 0; n < tree.nodes.size(); ++n)
+    if (reached[n]) {
+      new_id[n] = static_cast<int>(nodes.size());
+      nodes.push_back(tree.nodes[n]);
+    }
+  if (nodes.size() == tree.nodes.size()) return;
+  for (TreeNode& n : nodes)
+    for (int& c : n.children) c = new_id[at(c)];
+  tree.root = new_id[at(tree.root)];
+  tree.nodes = std::move(nodes);
+  for (TreeStep& step : result.steps)
+    if (step.node >= 0) step.node = new_id[at(step.node)];
+}
+
+/// With nesting, a child may hold several components (a solid part: its outer boundary and its holes): every
+/// component must lie in exactly one child, and the components of one child must share their region.
+bool unions_of_components(const PatchGraph& graph, const std::set<std::vector<int>>& components,
+                          const std::set<std::vector<int>>& children) {
+  std::map<int, int> child_of;
+  int index = 0;
+  for (const auto& child : children) {
+    for (int p : child) child_of[p] = index;
+    ++index;
+  }
+  std::map<int, int> region_of_child;
+  for (const auto& component : components) {
+    const int child = child_of.count(component.front()) ? child_of[component.front()] : -1;
+    if (child < 0) return false;
+    for (int p : component)
+      if (!child_of.count(p) || child_of[p] != child) return false;
+    const int region =
+        graph.surface.pieces[at(graph.patches[at(component.front())].pieces.front())].region;
+    auto [it, fresh] = region_of_child.emplace(child, region);
+    if (!fresh && it->second != region) return false;
+  }
+  std::size_t covered = 0;
+  for (const auto& component : components) covered += component.size();
+  return covered == child_of.size();
+}
 
 }  // namespace
 
@@ -178,11 +303,16 @@ BuildResult build_tree(PatchGraph graph, const BuildOptions& options) {
     try {
       auto components = mc_subgraphs(result.graph, result.graph.live_patches());
       if (components.size() == 1) {
-        builder.construct(std::move(components.front()), -1);  // the virtual root vanishes
+        result.tree.root = builder.construct_top(std::move(components.front()));  // the virtual root vanishes
+      } else if (options.nest_holes) {
+        result.tree.root = build_nested(builder, result, components);
+        result.nested = true;
       } else {
         const int root = builder.add_node(Op::Min, {}, -1);   // tree initialisation: a min root over the components
-        for (auto& component : components) builder.construct(std::move(component), root);
+        for (auto& component : components) builder.construct(std::move(component), root, true);
+        result.tree.root = root;
       }
+      compact(result);
       return result;
     } catch (const Restart&) {
       result.tree = Tree{};
@@ -235,7 +365,7 @@ std::vector<std::string> check_tree(const BuildResult& result) {
     std::set<std::vector<int>> expected, actual;
     for (auto& component : mc_subgraphs(graph, rest)) expected.insert(component);
     for (int child : node.children) actual.insert(tree.subtree_leaves(child));
-    if (expected != actual)
+    if (expected != actual && !(result.nested && unions_of_components(graph, expected, actual)))
       problems.push_back(name + ": its children are not the connected components of its subgraph without its leaves");
   }
   for (std::size_t d = 0; d < result.decompositions.size(); ++d) {

@@ -57,6 +57,11 @@ struct BuildOptions {
   bool restart_after_decomposition = false;
   /// ... and separate only the decomposed patch's curves to patches of the current subgraph G'.
   bool decompose_within_subgraph = false;
+  /// An extension, not the paper: Section 5.2's initialisation takes several boundary components for several
+  /// volume components and unites them, which is wrong for holes and cavities (proofs/nhrep.md, Finding 5.2).
+  /// With this set, components are grouped by BoundaryPiece::region; each part's hole components are built under
+  /// (intersected with) its outer component's tree, and parts are united. Needs the nesting on the pieces.
+  bool nest_holes = false;
 };
 
 struct BuildResult {
@@ -66,6 +71,7 @@ struct BuildResult {
   std::vector<Decomposition> decompositions;
   std::vector<TreeStep> steps;
   int rounds = 1;                 ///< tree constructions run (more than 1 only with restart_after_decomposition)
+  bool nested = false;            ///< built with nest_holes over several components (check_tree allows parts)
 };
 
 /// Tree initialisation and ConstructTreeNode (Algorithm 1) on `graph`.

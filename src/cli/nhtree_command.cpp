@@ -13,6 +13,7 @@
 #include "io/json_values.hpp"
 #include "io/files.hpp"
 #include "io/nhrep_json.hpp"
+#include "io/nhrep_mesh.hpp"
 #include "io/nhrep_svg.hpp"
 
 #include <algorithm>
@@ -32,6 +33,7 @@ struct NhtreeOptions {
   bool nest_holes = false;
   SolidSource solid;
   std::string json_path, conf_path, svg_path, reference_conf, reference_face_patch, reference_graph;
+  std::string decomposed_prefix;  ///< mesh: write PREFIX.obj, PREFIX.fea, PREFIX.face-patch.txt
   bool group = false;
   int max_group = 6;
   bool quiet_steps = false;
@@ -321,11 +323,21 @@ int run_mesh(const NhtreeOptions& o) {
   std::unique_ptr<std::vector<std::vector<int>>> groups;
   if (o.group) groups = std::make_unique<std::vector<std::vector<int>>>(nhrep::group_patches(r.graph, o.max_group));
   write_outputs(o, r, groups.get(), extra);
+  if (!o.decomposed_prefix.empty()) {
+    const DecomposedMesh d = write_decomposed_mesh(mesh, r.graph, nhtree_conf_ids(r.graph));
+    write_file_atomically(o.decomposed_prefix + ".obj", d.obj);
+    write_file_atomically(o.decomposed_prefix + ".fea", d.fea);
+    write_file_atomically(o.decomposed_prefix + ".face-patch.txt", d.face_patch);
+    out << "decomposed mesh " << o.decomposed_prefix << ".obj: " << d.faces << " triangles (" << d.split_faces
+        << (d.split_faces == 1 ? " input triangle" : " input triangles") << " split), " << d.feature_edges
+        << " feature edges\n";
+  }
   return status;
 }
 
 int run_planar(const NhtreeOptions& o) {
   if (!o.fea_path.empty()) throw InputError("nhtree: --fea belongs to a mesh (.obj) input");
+  if (!o.decomposed_prefix.empty()) throw InputError("nhtree: --decomposed writes meshes; use --json for 2D");
   const LoadedInput in = load_input(o.input);
   if (!in.arranged)
     throw InputError(o.input + ": nhtree needs a scene, not a complex: corner angles need the geometry");
@@ -426,6 +438,9 @@ void add_nhtree_command(CLI::App& app) {
   cmd->add_option("--json", o->json_path, "write the tree, patch graph, decompositions and steps (hsx-nhtree/1)");
   cmd->add_option("--conf", o->conf_path, "write the tree in NH-Rep's .conf form");
   cmd->add_option("--svg", o->svg_path, "2D: draw the patches coloured by tree node");
+  cmd->add_option("--decomposed", o->decomposed_prefix,
+                  "mesh: write the decomposed mesh as PREFIX.obj, PREFIX.fea and PREFIX.face-patch.txt (NH-Rep's "
+                  "form; patch ids as in --conf)");
   cmd->add_flag("--group", o->group, "group non-adjacent patches by graph colouring (NH-Rep Section 6)");
   cmd->add_option("--max-group", o->max_group, "at most this many patches per group (default 6)");
   cmd->add_option("--reference", o->reference_conf, "compare with a tree written by NH-Rep's tool (.conf)");

@@ -56,7 +56,7 @@ dec=d['decompositions'][0]; assert dec['both_kinds_after']==dec['both_kinds_befo
 assert any(s['outcome']=='case 1: decompose' for s in d['steps']) and 'groups' in d"; then pass; else fail "open corner JSON"; fi
 
 # regression: the bundled meshes' trees, byte for byte (data/meshes/*.tree.conf, also the .conf fuzz seeds)
-for pair in cube:cube lprism:lprism lprism:lprism_open_corner hollow_cube:hollow_cube; do
+for pair in cube:cube lprism:lprism lprism:lprism_open_corner hollow_cube:hollow_cube lprism_split:lprism_split; do
   obj="${pair%%:*}"; fea="${pair##*:}"
   "$HSX" nhtree "$M/$obj.obj" --fea "$M/$fea.fea" --conf "$TMP/$fea.conf" >/dev/null 2>&1
   if cmp -s "$TMP/$fea.conf" "$M/$fea.tree.conf"; then pass; else fail "$fea: tree differs from $M/$fea.tree.conf"; fi
@@ -64,6 +64,17 @@ for pair in cube:cube lprism:lprism lprism:lprism_open_corner hollow_cube:hollow
   "$HSX" nhtree "$M/$obj.obj" --fea "$M/$fea.fea" --reference "$M/$fea.tree.conf" >"$TMP/$fea.ref.txt" 2>&1
   expect_line "$TMP/$fea.ref.txt" "same tree" "$fea --reference"
 done
+
+# face-splitting: one triangle lies on a convex and a concave edge; the decomposed mesh is a valid closed mesh
+# whose own tree needs no further decomposition
+run_ok "$TMP/split.txt" "$M/lprism_split.obj" --fea "$M/lprism_split.fea" --decomposed "$TMP/split.dec"
+expect_line "$TMP/split.txt" "(1 piece face-split, 2 links cut)" "face-splitting"
+expect_line "$TMP/split.txt" "22 triangles (1 input triangle split), 19 feature edges" "decomposed mesh"
+if [ "$(wc -l <"$TMP/split.dec.face-patch.txt")" -eq 22 ]; then pass; else fail "face-patch lines"; fi
+run_ok "$TMP/split2.txt" "$TMP/split.dec.obj" --fea "$TMP/split.dec.fea"
+expect_line "$TMP/split2.txt" "termination): ok" "decomposed mesh re-read"
+if grep -q "decomposed patch" "$TMP/split2.txt"; then fail "the decomposed mesh needed another decomposition"; else pass; fi
+run_bad 2 "--decomposed" "$TMP/x.json" "$ROOT/data/scenes/lens.json" --csg A --decomposed "$TMP/x" --json "$TMP/x.json"
 
 # a cavity: Section 5.2 unites the two shells (min root); --nest-holes intersects the cavity's tree with the outer's
 "$HSX" nhtree "$M/hollow_cube.obj" --fea "$M/hollow_cube.fea" --nest-holes --conf "$TMP/hollow.nested.conf" >/dev/null 2>&1

@@ -70,6 +70,16 @@ has "$out/$m.tool.txt" "63 edges, 0 differences" && pass "$m: tool mode, same pa
 has "$out/$m.tool.txt" "same tree up to original patches" && pass "$m: tool mode, same tree" || fail "$m: tool mode tree"
 cmp -s "$out/$m.tool.conf" "$ref/$m.decomposed.tree.conf" && pass "$m: tool mode, identical .conf" \
   || fail "$m: tool mode .conf"
+# ... and the same decomposition: the decomposed mesh's face-patch file equals the tool's line by line, it has the
+# tool's 1114 feature edges, and our own tree of it is the tool's tree.
+"$hsx" nhtree "$data/$m.obj" --fea "$data/$m.fea" --nhrep-tool --decomposed "$out/$m.dec" > /dev/null
+cmp -s "$out/$m.dec.face-patch.txt" "$ref/$m.decomposed.face-patch.txt" && pass "$m: tool mode, identical face-patch" \
+  || fail "$m: tool mode face-patch"
+[ "$(head -1 "$out/$m.dec.fea")" = "$(head -1 "$ref/$m.decomposed.fea")" ] && pass "$m: tool mode, same feature count" \
+  || fail "$m: tool mode feature count"
+"$hsx" nhtree "$out/$m.dec.obj" --fea "$out/$m.dec.fea" --sharp-angle 20 --conf "$out/$m.dec.again.conf" > /dev/null
+cmp -s "$out/$m.dec.again.conf" "$ref/$m.decomposed.tree.conf" && pass "$m: our decomposed mesh gives the tool's tree" \
+  || fail "$m: tree of our decomposed mesh"
 
 # 5. On the tool's own decomposed mesh, Algorithm 1 with the tool's angle needs no decomposition and gives its tree.
 "$hsx" nhtree "$ref/$m.decomposed.obj" --fea "$ref/$m.decomposed.fea" --sharp-angle 20 --conf "$out/$m.dec.conf" \

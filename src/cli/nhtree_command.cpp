@@ -345,6 +345,10 @@ int run_planar(const NhtreeOptions& o) {
   const Arranged2& arranged = *in.arranged;
   if (std::none_of(solid.cells.begin(), solid.cells.end(), [](char c) { return c; }))
     throw InputError("the solid is empty: it has no boundary patches");
+  for (std::size_t c = 0; c < solid.cells.size(); ++c)
+    if (solid.cells[c] && arranged.complex.cells[c].outer)
+      throw InputError("the solid reaches the domain's boundary (cell " + std::to_string(c) +
+                       " touches it): NH-Rep needs a bounded solid inside the domain");
   nhrep::BuildResult r = run_algorithm1(
       nhrep::build_patch_graph(boundary_from_arrangement2(arranged, solid.cells),
                                o.nhrep_tool ? nhrep::CurveRule::Majority : nhrep::CurveRule::Paper),

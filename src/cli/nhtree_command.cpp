@@ -75,6 +75,28 @@ void print_graph(const nhrep::BuildResult& r, const std::vector<std::string>& pa
         << (g.surface.dimension == 3 ? " mesh edge" : " corner") << (c.links.size() == 1 ? "" : "s") << ")\n";
 }
 
+/// Interior points of up to `max` cells, as "(x, y)" with 6 significant digits (a pointer, not a proof: the cells
+/// are exact).
+std::string witnesses(const Complex& complex, const std::vector<int>& cells, std::size_t max = 6) {
+  std::string s;
+  for (std::size_t i = 0; i < cells.size() && i < max; ++i) {
+    const auto& w = complex.cells.at(static_cast<std::size_t>(cells[i])).witness;
+    s += (i ? ", (" : "(") + decimal_string(w[0], 6) + ", " + decimal_string(w[1], 6) + ")";
+  }
+  if (cells.size() > max) s += ", ... (" + std::to_string(cells.size()) + " cells)";
+  return s.empty() ? "none" : s;
+}
+
+/// Exact interior points of cells (of the whole-plane arrangement, whose cell ids mean nothing to the caller).
+nlohmann::json witness_json(const Complex& complex, const std::vector<int>& cells) {
+  nlohmann::json points = nlohmann::json::array();
+  for (int c : cells) {
+    const auto& w = complex.cells.at(static_cast<std::size_t>(c)).witness;
+    points.push_back({exact_string(w[0]), exact_string(w[1])});
+  }
+  return points;
+}
+
 /// Connected components of the solid's cells, adjacent across patches.
 int solid_components(const Complex& complex, const std::vector<char>& solid) {
   std::vector<int> parent(complex.cells.size());
@@ -362,14 +384,19 @@ int run_planar(const NhtreeOptions& o) {
   }
   print_graph(r, names, out);
   print_run(r, out);
-  const nhrep::Evaluation e = nhrep::evaluate_tree(r, arranged.complex, solid.cells);
-  out << "exact evaluation with natural halfspaces on " << arranged.complex.cells.size() << " cells: "
+  // Evaluate on the whole plane: the scene in a domain holding every vertex, so that every sign vector of the
+  // plane is some cell's (the tree's leaves name halfspaces, which are the same there).
+  const Arranged2 whole = arrange(whole_plane_scene(*in.scene));
+  const std::vector<char> whole_solid = carry_to_whole_plane(arranged, solid.cells, whole);
+  const nhrep::Evaluation e = nhrep::evaluate_tree(r, whole.complex, whole_solid);
+  out << "exact evaluation with natural halfspaces on the whole plane (" << whole.complex.cells.size()
+      << " cells of a domain holding every vertex): "
       << (e.correct ? "correct on every cell"
                     : std::to_string(e.wrong_inside.size() + e.wrong_outside.size()) + " cells wrong")
       << "; " << nhrep::verdict_name(e.verdict) << "\n";
   if (e.verdict == nhrep::Verdict::DescribableButFails) {
-    out << "  solid cells the tree misses: " << join(e.wrong_inside) << "; cells it adds: " << join(e.wrong_outside)
-        << "\n";
+    out << "  solid points the tree misses: " << witnesses(whole.complex, e.wrong_inside)
+        << "; points it adds: " << witnesses(whole.complex, e.wrong_outside) << "\n";
     const int solid_parts = solid_components(arranged.complex, solid.cells);
     const int boundary_parts = patch_graph_components(r.graph);
     if (boundary_parts > solid_parts && !o.nest_holes)
@@ -406,8 +433,10 @@ int run_planar(const NhtreeOptions& o) {
                  {"natural_halfspaces", leaves},
                  {"patch_pieces", where},
                  {"evaluation", {{"verdict", nhrep::verdict_key(e.verdict)}, {"correct", e.correct},
-                                 {"describable", e.describable}, {"wrong_inside", e.wrong_inside},
-                                 {"wrong_outside", e.wrong_outside}, {"violations", e.violations}}}});
+                                 {"describable", e.describable}, {"cells", whole.complex.cells.size()},
+                                 {"wrong_inside", witness_json(whole.complex, e.wrong_inside)},
+                                 {"wrong_outside", witness_json(whole.complex, e.wrong_outside)},
+                                 {"violations", e.violations}}}});
   if (!o.svg_path.empty())
     write_file_atomically(o.svg_path, nhrep_svg(*in.scene, arranged, solid.cells, r.graph.surface, r.graph.piece_patch,
                                                 leaf_nodes(r), "NH-Rep tree: " + nhtree_text(r.tree)));

@@ -16,8 +16,9 @@ FeatureType mesh_edge_type(const Mesh3& mesh, int edge, const SharpnessAngle& sh
 namespace {
 
 /// Shells (components of triangles across edges) with their exact signed volumes: a shell of positive volume is an
-/// outer boundary, one of negative volume a cavity. With a single outer shell every cavity lies in it; with several,
-/// which one holds a cavity would need a point-in-mesh test, so cavities then keep region -1 (unknown).
+/// outer boundary, one of negative volume a cavity. A cavity belongs to the smallest outer shell that contains one
+/// of its vertices (exact ray parity, geometry/mesh3.hpp); when none does, or the vertex lies on another shell,
+/// its region stays -1 (unknown).
 void set_mesh_nesting(const Mesh3& mesh, BoundarySurface& surface) {
   const std::size_t n = mesh.faces.size();
   std::vector<int> parent(n);
@@ -29,22 +30,41 @@ void set_mesh_nesting(const Mesh3& mesh, BoundarySurface& surface) {
   };
   for (const MeshEdge& e : mesh.edges) parent[static_cast<std::size_t>(find(e.face_ab))] = find(e.face_ba);
   std::vector<Rational> volume(n);  // six times the signed volume, per shell root
+  std::vector<std::vector<int>> shell_faces(n);
   for (std::size_t f = 0; f < n; ++f) {
     const PointQ3& a = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][0])];
     const PointQ3& b = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][1])];
     const PointQ3& c = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][2])];
-    volume[static_cast<std::size_t>(find(static_cast<int>(f)))] +=
-        a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+    const std::size_t root = static_cast<std::size_t>(find(static_cast<int>(f)));
+    volume[root] += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+    shell_faces[root].push_back(static_cast<int>(f));
   }
+  std::vector<int> outer_roots;
   std::vector<int> region(n, -1);
-  int outer_shells = 0;
-  for (std::size_t f = 0; f < n; ++f)
-    if (find(static_cast<int>(f)) == static_cast<int>(f) && volume[f] > 0) region[f] = outer_shells++;
+  for (std::size_t r = 0; r < n; ++r)
+    if (!shell_faces[r].empty() && volume[r] > 0) {
+      region[r] = static_cast<int>(outer_roots.size());
+      outer_roots.push_back(static_cast<int>(r));
+    }
+  for (std::size_t r = 0; r < n; ++r) {
+    if (shell_faces[r].empty() || volume[r] > 0) continue;
+    const PointQ3& probe = mesh.vertices[static_cast<std::size_t>(mesh.faces[static_cast<std::size_t>(shell_faces[r].front())][0])];
+    int best = -1;
+    for (int o : outer_roots) {
+      const std::optional<bool> inside = point_inside_faces(mesh, shell_faces[static_cast<std::size_t>(o)], probe);
+      if (!inside) {  // the cavity touches that shell: nesting unknown
+        best = -1;
+        break;
+      }
+      if (*inside && (best < 0 || volume[static_cast<std::size_t>(o)] < volume[static_cast<std::size_t>(best)])) best = o;
+    }
+    region[r] = best < 0 ? -1 : region[static_cast<std::size_t>(best)];
+  }
   for (std::size_t f = 0; f < n; ++f) {
     const std::size_t root = static_cast<std::size_t>(find(static_cast<int>(f)));
     BoundaryPiece& piece = surface.pieces[f];
     piece.hole = volume[root] < 0;
-    piece.region = piece.hole ? (outer_shells == 1 ? 0 : -1) : region[root];
+    piece.region = region[root];
   }
 }
 

@@ -28,8 +28,8 @@ namespace hsx {
 ///           only on feature links, so callers can see what an unmarked edge would be.
 ///   corner_count = V
 ///   nesting: piece.hole = its shell (component of triangles) has negative signed volume (a cavity);
-///           piece.region = the index of its outer shell, or for a cavity 0 when there is one outer shell and -1
-///           (unknown) when there are several
+///           piece.region = the index of its outer shell (outer shells numbered by lowest triangle); for a cavity,
+///           that of the smallest outer shell containing it (exact ray parity), -1 when none does or it touches one
 /// Throws InputError for feature entries that are out of range or not mesh edges, and for a bad angle.
 BoundarySurface boundary_from_mesh(const Mesh3& mesh, const FeatureEdgeList& features,
                                    const Rational& sharp_angle_degrees = Rational(0),

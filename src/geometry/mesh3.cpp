@@ -136,6 +136,53 @@ PointQ3 triangle_normal(const PointQ3& a, const PointQ3& b, const PointQ3& c) {
 
 Rational dot3(const PointQ3& u, const PointQ3& v) { return u.x * v.x + u.y * v.y + u.z * v.z; }
 
+namespace {
+
+/// sign of det(b - a, c - a, d - a)
+int orient3d(const PointQ3& a, const PointQ3& b, const PointQ3& c, const PointQ3& d) {
+  return sgn(dot3(triangle_normal(a, b, c), minus(d, a)));
+}
+
+}  // namespace
+
+std::optional<bool> point_inside_faces(const Mesh3& mesh, const std::vector<int>& faces, const PointQ3& p) {
+  // Directions (1, k, k^2 + 1), k = 1, 2, ...: each degenerate event below (the ray parallel to a plane, or through
+  // a given edge or vertex) holds for at most two k, so some k is free of all of them.
+  for (long k = 1;; ++k) {
+    const PointQ3 d{Rational(1), Rational(k), Rational(k * k + 1)};
+    const PointQ3 q{p.x + d.x, p.y + d.y, p.z + d.z};
+    bool degenerate = false;
+    long crossings = 0;
+    for (int f : faces) {
+      const auto& t = mesh.faces[static_cast<std::size_t>(f)];
+      const PointQ3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
+      const PointQ3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
+      const PointQ3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
+      const PointQ3 n = triangle_normal(a, b, c);
+      const int side = sgn(dot3(n, minus(a, p)));  // 0: p lies in the triangle's plane
+      const int toward = sgn(dot3(n, d));          // 0: the ray is parallel to the plane
+      if (side == 0) {
+        const bool in_triangle = sgn(dot3(n, triangle_normal(p, a, b))) >= 0 &&
+                                 sgn(dot3(n, triangle_normal(p, b, c))) >= 0 &&
+                                 sgn(dot3(n, triangle_normal(p, c, a))) >= 0;
+        if (in_triangle) return std::nullopt;  // p is on the surface
+        if (toward != 0) continue;             // the line leaves the plane at p, outside the triangle
+        degenerate = true;                     // the ray runs in the triangle's plane
+        break;
+      }
+      if (toward == 0) continue;  // parallel to the plane and off it: no crossing
+      const int s1 = orient3d(p, q, a, b), s2 = orient3d(p, q, b, c), s3 = orient3d(p, q, c, a);
+      if ((s1 > 0 || s2 > 0 || s3 > 0) && (s1 < 0 || s2 < 0 || s3 < 0)) continue;  // the line misses it
+      if (s1 == 0 || s2 == 0 || s3 == 0) {  // the line meets the triangle's boundary: an edge or a vertex
+        degenerate = true;
+        break;
+      }
+      if (side == toward) ++crossings;  // the crossing lies ahead of p
+    }
+    if (!degenerate) return crossings % 2 == 1;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Readers
 

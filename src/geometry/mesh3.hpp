@@ -150,6 +150,12 @@ class SharpnessAngle {
 /// A mesh edge's type under a sharpness angle: Flat when the edge is Flat or smooth under `sharpness`.
 EdgeShape classify_edge(const Mesh3& mesh, int edge, const SharpnessAngle& sharpness);
 
+/// Whether point `p` lies inside the closed surface made of `faces` (triangle ids of `mesh` forming one or more
+/// closed shells), by the exact parity of crossings of a ray from p. Rays that meet an edge or a vertex, or lie in
+/// a triangle's plane, are replaced by the next of a fixed sequence of directions (finitely many are degenerate,
+/// so this ends). Returns nullopt when p lies on the surface.
+std::optional<bool> point_inside_faces(const Mesh3& mesh, const std::vector<int>& faces, const PointQ3& p);
+
 /// Exact geometric helpers (public for tests).
 PointQ3 triangle_normal(const PointQ3& a, const PointQ3& b, const PointQ3& c);  ///< (b-a) x (c-a)
 Rational dot3(const PointQ3& u, const PointQ3& v);

@@ -710,3 +710,69 @@ TEST_CASE("measure the shared NH-Rep models", "[.measure]") {
     }
   }
 }
+
+namespace {
+
+/// Boxes [lo, hi]^3 (outward, or reversed for a cavity) as .obj text, vertex ids continuing from `first`.
+std::string box_obj(long lo, long hi, bool reversed, int first, std::string& faces) {
+  std::string v;
+  for (long z : {lo, hi})
+    for (const auto& [x, y] : std::vector<std::pair<long, long>>{{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}})
+      v += "v " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z) + "\n";
+  // the unit cube's triangulation (data/meshes/cube.obj), vertex order 0..7 as above
+  const int tris[12][3] = {{0, 2, 1}, {0, 3, 2}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+                           {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}};
+  for (const auto& t : tris) {
+    const int a = first + t[0] + 1, b = first + (reversed ? t[2] : t[1]) + 1, c = first + (reversed ? t[1] : t[2]) + 1;
+    faces += "f " + std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + "\n";
+  }
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("point in mesh: exact ray parity agrees with the box test, on the surface too", "[mesh][property]") {
+  std::string faces;
+  const Mesh3 cube = mesh_of(box_obj(0, 3, false, 0, faces) + faces);
+  std::vector<int> all(cube.faces.size());
+  std::iota(all.begin(), all.end(), 0);
+  // Points on a grid of halves around the box: many lie on face planes, edge lines and vertex rays.
+  rc::prop("agrees with 0 < x, y, z < 3", [&] {
+    const auto c = *rc::gen::container<std::vector<int>>(3, rc::gen::inRange(-3, 10));
+    const PointQ3 p{Rational(c[0], 2), Rational(c[1], 2), Rational(c[2], 2)};
+    const std::optional<bool> inside = point_inside_faces(cube, all, p);
+    auto in = [](int v) { return v > 0 && v < 6; };
+    auto on = [](int v) { return v == 0 || v == 6; };
+    const bool strictly = in(c[0]) && in(c[1]) && in(c[2]);
+    const bool closed = (in(c[0]) || on(c[0])) && (in(c[1]) || on(c[1])) && (in(c[2]) || on(c[2]));
+    if (closed && !strictly)
+      RC_ASSERT(!inside.has_value());
+    else
+      RC_ASSERT(inside.has_value() && *inside == strictly);
+  });
+}
+
+TEST_CASE("nesting: cavities belong to the smallest outer shell around them", "[mesh]") {
+  // A box [0,9]^3 with a cavity [1,8]^3 holding an island box [2,7]^3 with its own cavity [3,6]^3; beside it a
+  // separate box [20,23]^3 with a cavity [21,22]^3.
+  std::string faces, verts;
+  int first = 0;
+  const std::vector<std::tuple<long, long, bool>> boxes{{0, 9, false}, {1, 8, true}, {2, 7, false},
+                                                        {3, 6, true}, {20, 23, false}, {21, 22, true}};
+  for (const auto& [lo, hi, cavity] : boxes) {
+    verts += box_obj(lo, hi, cavity, first, faces);
+    first += 8;
+  }
+  const Mesh3 m = mesh_of(verts + faces);
+  REQUIRE(m.shells == 6);
+  const BoundarySurface s = boundary_from_mesh(m, std::vector<std::pair<int, int>>{});
+  // pieces 12k..12k+11 are box k; outer shells are numbered 0, 1, 2 (boxes 0, 2, 4)
+  auto region = [&](int box) { return s.pieces[static_cast<std::size_t>(12 * box)].region; };
+  auto hole = [&](int box) { return s.pieces[static_cast<std::size_t>(12 * box)].hole; };
+  CHECK((region(0) == 0 && !hole(0)));
+  CHECK((region(1) == 0 && hole(1)));
+  CHECK((region(2) == 1 && !hole(2)));
+  CHECK((region(3) == 1 && hole(3)));
+  CHECK((region(4) == 2 && !hole(4)));
+  CHECK((region(5) == 2 && hole(5)));
+}

@@ -216,33 +216,6 @@ csg::ExprPtr from_json(const JsonField& f, const std::unordered_map<std::string,
            " (expected union, intersection, difference, complement, empty or full)");
 }
 
-/// Post-order fold without recursion (see algorithms/csg/expression.cpp).
-template <class R, class F>
-R fold(const csg::Expr& root, F combine) {
-  struct Frame {
-    const csg::Expr* node;
-    std::size_t next;
-  };
-  std::vector<Frame> frames{{&root, 0}};
-  std::vector<R> values;
-  while (!frames.empty()) {
-    Frame& top = frames.back();
-    if (top.next < top.node->children.size()) {
-      const csg::Expr* child = top.node->children[top.next++].get();
-      if (!child) throw std::invalid_argument("csg: null child in an expression");
-      frames.push_back({child, 0});
-      continue;
-    }
-    const csg::Expr* node = top.node;
-    frames.pop_back();
-    const std::size_t k = node->children.size();
-    std::vector<R> args(std::make_move_iterator(values.end() - static_cast<std::ptrdiff_t>(k)),
-                        std::make_move_iterator(values.end()));
-    values.resize(values.size() - k);
-    values.push_back(combine(*node, std::move(args)));
-  }
-  return std::move(values.back());
-}
 
 /// A tree of depth kCsgMaxDepth nests two JSON levels per node (the object and its "args"), plus the wrapper.
 JsonLimits csg_json_limits() {
@@ -277,7 +250,7 @@ csg::ExprPtr csg_from_json(const json& value, const std::vector<std::string>& na
 }
 
 json csg_to_json(const csg::Expr& e, const std::vector<std::string>& names) {
-  return fold<json>(e, [&](const csg::Expr& n, std::vector<json> v) -> json {
+  return csg::fold<json>(e, [&](const csg::Expr& n, std::vector<json> v) -> json {
     auto op = [&](const char* name) {
       json out = json::object();
       out["op"] = name;

@@ -24,4 +24,10 @@ struct Describability {
 /// `solid`: per cell, 1 inside.
 Describability describability(const Complex& complex, const std::vector<char>& solid);
 
+/// Describability by a subset of the halfspaces: a term is the set of cells with one sign vector over
+/// `halfspaces` (indices into the complex's halfspaces); MixedTerm::signs has one entry per element of
+/// `halfspaces`, in that order. With every halfspace, this is the function above.
+Describability describability(const Complex& complex, const std::vector<char>& solid,
+                              const std::vector<int>& halfspaces);
+
 }  // namespace hsx::csg

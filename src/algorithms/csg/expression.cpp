@@ -44,34 +44,6 @@ void check_not_null(const ExprPtr& e, const char* where) {
   if (!e) throw std::invalid_argument(std::string("csg::") + where + ": null expression");
 }
 
-/// Post-order fold without recursion: `combine(node, child_results)` is called once per node occurrence (a
-/// shared subtree is visited once per parent), children first, left to right.
-template <class R, class F>
-R fold(const Expr& root, F combine) {
-  struct Frame {
-    const Expr* node;
-    std::size_t next;
-  };
-  std::vector<Frame> frames{{&root, 0}};
-  std::vector<R> values;
-  while (!frames.empty()) {
-    Frame& top = frames.back();
-    if (top.next < top.node->children.size()) {
-      const Expr* child = top.node->children[top.next++].get();
-      if (!child) throw std::invalid_argument("csg: null child in an expression");
-      frames.push_back({child, 0});
-      continue;
-    }
-    const Expr* node = top.node;
-    frames.pop_back();
-    const std::size_t k = node->children.size();
-    std::vector<R> args(std::make_move_iterator(values.end() - static_cast<std::ptrdiff_t>(k)),
-                        std::make_move_iterator(values.end()));
-    values.resize(values.size() - k);
-    values.push_back(combine(*node, std::move(args)));
-  }
-  return std::move(values.back());
-}
 
 void check_arity(const Expr& e) {
   switch (e.op) {

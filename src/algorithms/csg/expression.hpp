@@ -10,7 +10,9 @@
 
 #include "complex/complex.hpp"
 
+#include <iterator>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,5 +57,35 @@ ExprStats stats(const Expr& e);
 /// Compact text: names joined by `|` (union), `&` (intersection), `-` (difference), `~` (complement), with
 /// parentheses where needed; "empty" and "full" for the constants. Names that are not identifiers are quoted.
 std::string to_text(const Expr& e, const std::vector<std::string>& names);
+
+/// Post-order fold without recursion (expressions may be deeper than the stack allows): `combine(node,
+/// child_results)` is called once per node occurrence (a shared subtree is visited once per parent), children
+/// first, left to right. Throws std::invalid_argument on a null child.
+template <class R, class F>
+R fold(const Expr& root, F combine) {
+  struct Frame {
+    const Expr* node;
+    std::size_t next;
+  };
+  std::vector<Frame> frames{{&root, 0}};
+  std::vector<R> values;
+  while (!frames.empty()) {
+    Frame& top = frames.back();
+    if (top.next < top.node->children.size()) {
+      const Expr* child = top.node->children[top.next++].get();
+      if (!child) throw std::invalid_argument("csg: null child in an expression");
+      frames.push_back({child, 0});
+      continue;
+    }
+    const Expr* node = top.node;
+    frames.pop_back();
+    const std::size_t k = node->children.size();
+    std::vector<R> args(std::make_move_iterator(values.end() - static_cast<std::ptrdiff_t>(k)),
+                        std::make_move_iterator(values.end()));
+    values.resize(values.size() - k);
+    values.push_back(combine(*node, std::move(args)));
+  }
+  return std::move(values.back());
+}
 
 }  // namespace hsx::csg

@@ -1,7 +1,8 @@
 #include "algorithms/nhrep/evaluate.hpp"
 
+#include "algorithms/csg/describability.hpp"
+
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 
 namespace hsx::nhrep {
@@ -116,24 +117,9 @@ Evaluation evaluate_tree(const BuildResult& result, const Complex& complex, cons
   e.correct = e.wrong_inside.empty() && e.wrong_outside.empty();
 
   // Canonical terms over the natural halfspaces.
-  std::map<std::vector<char>, NaturalMixedTerm> terms;
-  for (std::size_t k = 0; k < complex.cells.size(); ++k) {
-    std::vector<char> signs;
-    signs.reserve(e.natural_halfspaces.size());
-    for (int h : e.natural_halfspaces) signs.push_back(complex.cells[k].inside.at(at(h)) ? 1 : 0);
-    NaturalMixedTerm& term = terms[signs];
-    (solid[k] ? term.inside_cells : term.outside_cells).push_back(static_cast<int>(k));
-  }
-  e.terms = static_cast<int>(terms.size());
-  for (auto& [signs, term] : terms)
-    if (!term.inside_cells.empty() && !term.outside_cells.empty()) {
-      term.signs = signs;
-      e.mixed.push_back(std::move(term));
-    }
-  std::sort(e.mixed.begin(), e.mixed.end(), [](const NaturalMixedTerm& a, const NaturalMixedTerm& b) {
-    return std::min(a.inside_cells.front(), a.outside_cells.front()) <
-           std::min(b.inside_cells.front(), b.outside_cells.front());
-  });
+  csg::Describability d = csg::describability(complex, solid, e.natural_halfspaces);
+  e.terms = d.terms;
+  e.mixed = std::move(d.mixed);
   e.describable = e.mixed.empty();
 
   if (e.correct && !e.describable)

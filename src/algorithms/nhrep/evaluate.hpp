@@ -15,15 +15,16 @@
 // - The natural halfspace set is the set of carriers of live patches (ascending, each once, complementation
 //   forgotten: a canonical term does not care about orientation). Describability (Shapiro-Vossler) w.r.t. that set:
 //   a canonical term is the set of cells with one sign vector over those halfspaces; the solid is describable iff
-//   no term holds both a solid and a non-solid cell. This is the exact sign-vector check, written directly (it
-//   agrees with csg::describability on the complex restricted to those halfspaces: tests/algorithms).
+//   no term holds both a solid and a non-solid cell: csg::describability over that subset (tests/algorithms
+//   compares it with csg::describability on a complex restricted to those halfspaces).
 // - Correctness and describability are about the cells of the complex, i.e. the domain. A region outside the
 //   domain whose sign vector no cell has is not seen: evaluate on a complex whose domain contains every vertex of
-//   the arrangement (hsx nhsurvey enlarges the domain for that), then every sign vector of the plane is some cell's.
+//   the arrangement (hsx nhsurvey and hsx nhtree enlarge the domain for that), then every sign vector of the plane is some cell's.
 // - A tree that is correct on every cell is a Boolean function of the natural halfspaces that equals the solid, so
 //   the solid is describable by them: correct && !describable is a violated check (a bug), never a verdict.
 #pragma once
 
+#include "algorithms/csg/describability.hpp"
 #include "algorithms/nhrep/tree.hpp"
 #include "complex/complex.hpp"
 
@@ -49,13 +50,6 @@ const char* verdict_name(Verdict verdict);
 /// "correct", "describable-fails", "not-describable" (for tables and file names).
 const char* verdict_key(Verdict verdict);
 
-/// A canonical term (over the natural halfspaces) holding solid and non-solid cells.
-struct NaturalMixedTerm {
-  std::vector<char> signs;          ///< per natural halfspace (Evaluation::natural_halfspaces order): 1 inside
-  std::vector<int> inside_cells;    ///< its solid cells, ascending
-  std::vector<int> outside_cells;   ///< its non-solid cells, ascending
-};
-
 struct Evaluation {
   std::vector<NaturalHalfspace> leaf_halfspace;  ///< per patch id of result.graph (dead patches: halfspace -1)
   std::vector<int> natural_halfspaces;           ///< the natural halfspace set, ascending, each once
@@ -65,7 +59,9 @@ struct Evaluation {
   bool correct = false;                          ///< wrong_inside and wrong_outside are empty
   bool describable = false;                      ///< by natural_halfspaces, Shapiro-Vossler
   int terms = 0;                                 ///< non-empty canonical terms over natural_halfspaces
-  std::vector<NaturalMixedTerm> mixed;           ///< ordered by their smallest cell
+  /// Canonical terms over natural_halfspaces holding solid and non-solid cells (signs in natural_halfspaces
+  /// order), ordered by their smallest cell.
+  std::vector<csg::MixedTerm> mixed;
   Verdict verdict = Verdict::NotDescribable;
   /// Violated checks (empty: all hold): leaves without a usable carrier, pieces of one patch disagreeing on their
   /// carrier, a tree that is correct on a non-describable solid.

@@ -56,10 +56,7 @@ void add_check_command(CLI::App& app) {
   cmd->add_option("--brute-force-limit", o->brute_force_limit,
                   "largest number of labellings the oracle may enumerate (default 200000; larger: skipped)");
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons");
-  cmd->callback([o] {
-    const int status = run_check(*o);
-    if (status != 0) throw CLI::RuntimeError(status);
-  });
+  run_with_status(cmd, o, &run_check);
 }
 
 }  // namespace hsx::cli

@@ -4,7 +4,19 @@
 
 #include <CLI/CLI.hpp>
 
+#include <memory>
+
 namespace hsx::cli {
+
+/// Makes `cmd` run `run(*options)`; a non-zero status (e.g. 3, a failed check) becomes the program's exit code
+/// (main.cpp catches CLI::RuntimeError).
+template <class Options>
+void run_with_status(CLI::App* cmd, std::shared_ptr<Options> options, int (*run)(const Options&)) {
+  cmd->callback([options, run] {
+    const int status = run(*options);
+    if (status != 0) throw CLI::RuntimeError(status);
+  });
+}
 
 void add_arrange_command(CLI::App& app);
 void add_extract_command(CLI::App& app);

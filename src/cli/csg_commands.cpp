@@ -532,14 +532,6 @@ int run_corpus(const CorpusOptions& o) {
   return ok == static_cast<long>(rows.size()) ? 0 : 3;
 }
 
-template <typename Options>
-void set_status_callback(CLI::App* cmd, std::shared_ptr<Options> o, int (*run)(const Options&)) {
-  cmd->callback([o, run] {
-    const int status = run(*o);
-    if (status != 0) throw CLI::RuntimeError(status);
-  });
-}
-
 }  // namespace
 
 void add_csg_commands(CLI::App& app) {
@@ -551,7 +543,7 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON");
     cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)");
-    set_status_callback(cmd, o, &run_describe);
+    run_with_status(cmd, o, &run_describe);
   }
   {
     auto o = std::make_shared<CsgOptions>();
@@ -564,7 +556,7 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--svg", o->svg_path, "draw the solid");
     cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact)");
     cmd->add_option("--circle-segments", o->circle_segments, "OpenSCAD $fn for circles (default 96)");
-    set_status_callback(cmd, o, &run_csg);
+    run_with_status(cmd, o, &run_csg);
   }
   {
     auto o = std::make_shared<ConvertOptions>();
@@ -576,7 +568,7 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--out", o->out_path, "the BSH scene to write")->required();
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
     cmd->add_option("--json", o->json_path, "write sample counts and bounds as JSON");
-    set_status_callback(cmd, o, &run_convert);
+    run_with_status(cmd, o, &run_convert);
   }
   {
     auto o = std::make_shared<SamplesOptions>();
@@ -590,7 +582,7 @@ void add_csg_commands(CLI::App& app) {
                     "compute the true minimum when the boundary has at most this many patches (default 14)");
     cmd->add_option("--out", o->out_path, "write the scene with the generated samples");
     cmd->add_option("--json", o->json_path, "write counts as JSON");
-    set_status_callback(cmd, o, &run_samples);
+    run_with_status(cmd, o, &run_samples);
   }
   {
     auto o = std::make_shared<CorpusOptions>();
@@ -602,7 +594,7 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--limit", o->limit, "run at most N programs");
     cmd->add_option("--search", o->search, "beam (default) or best-first for the conversion");
     cmd->add_option("--json", o->json_path, "write one row per program as JSON");
-    set_status_callback(cmd, o, &run_corpus);
+    run_with_status(cmd, o, &run_corpus);
   }
 }
 

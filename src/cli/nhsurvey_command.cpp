@@ -731,10 +731,7 @@ void add_nhsurvey_command(CLI::App& app) {
   cmd->add_flag("-v,--verbose", o->verbose, "one line per solid");
   cmd->add_flag("--nest-holes", o->nest_holes,
                 "extension: holes' trees intersected with their part's tree (hsx nhtree --nest-holes)");
-  cmd->callback([o] {
-    const int status = run_survey(*o);
-    if (status != 0) throw CLI::RuntimeError(status);
-  });
+  run_with_status(cmd, o, &run_survey);
 }
 
 }  // namespace hsx::cli

@@ -97,36 +97,6 @@ nlohmann::json witness_json(const Complex& complex, const std::vector<int>& cell
   return points;
 }
 
-/// Connected components of the solid's cells, adjacent across patches.
-int solid_components(const Complex& complex, const std::vector<char>& solid) {
-  std::vector<int> parent(complex.cells.size());
-  for (std::size_t c = 0; c < parent.size(); ++c) parent[c] = static_cast<int>(c);
-  auto find = [&](int x) {
-    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-    return x;
-  };
-  for (const Patch& p : complex.patches)
-    if (solid[static_cast<std::size_t>(p.inside_cell)] && solid[static_cast<std::size_t>(p.outside_cell)])
-      parent[static_cast<std::size_t>(find(p.inside_cell))] = find(p.outside_cell);
-  int count = 0;
-  for (std::size_t c = 0; c < parent.size(); ++c) count += solid[c] && find(static_cast<int>(c)) == static_cast<int>(c);
-  return count;
-}
-
-/// Connected components of the live patch graph (the tree initialisation's MC subgraphs).
-int patch_graph_components(const nhrep::PatchGraph& g) {
-  std::vector<int> parent(g.patches.size());
-  for (std::size_t p = 0; p < parent.size(); ++p) parent[p] = static_cast<int>(p);
-  auto find = [&](int x) {
-    while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-    return x;
-  };
-  for (const nhrep::Curve& c : g.curves) parent[static_cast<std::size_t>(find(c.patch_a))] = find(c.patch_b);
-  int count = 0;
-  for (int p : g.live_patches()) count += find(p) == p;
-  return count;
-}
-
 nhrep::BuildOptions build_options(const NhtreeOptions& o) {
   nhrep::BuildOptions options;
   options.restart_after_decomposition = o.nhrep_tool;
@@ -252,8 +222,7 @@ int compare_reference_graph(const std::string& path, const nhrep::PatchGraph& or
   for (const nhrep::Curve& c : original.curves) {
     const int a = conf_id[static_cast<std::size_t>(c.patch_a)], b = conf_id[static_cast<std::size_t>(c.patch_b)];
     auto [it, fresh] = ours.emplace(std::make_pair(std::min(a, b), std::max(a, b)), c.type);
-    if (!fresh && it->second != c.type)
-      it->second = (it->second == FeatureType::Smooth) ? c.type : (c.type == FeatureType::Smooth ? it->second : FeatureType::Hybrid);
+    if (!fresh) it->second = combine_feature_types(it->second, c.type);
   }
   const char* names[] = {"smooth", "convex", "concave"};
   int differences = 0;
@@ -376,18 +345,24 @@ int run_planar(const NhtreeOptions& o) {
                                o.nhrep_tool ? nhrep::CurveRule::Majority : nhrep::CurveRule::Paper),
       o);
   std::ostream& out = std::cout;
-  // the halfspace each patch lies on, as its natural halfspace (~ for complemented)
+  // each patch's natural halfspace by name (~ for complemented)
   std::vector<std::string> names(r.graph.patches.size());
+  const auto natural = nhrep::natural_halfspaces(r.graph, arranged.complex.halfspace_count());
   for (int p : r.graph.live_patches()) {
-    const auto& piece = r.graph.surface.pieces[static_cast<std::size_t>(r.graph.patches[static_cast<std::size_t>(p)].pieces.front())];
-    names[static_cast<std::size_t>(p)] = (piece.carrier_complemented ? "~" : "") + in.scene->halfspaces[static_cast<std::size_t>(piece.carrier)].name;
+    const nhrep::NaturalHalfspace& h = natural[static_cast<std::size_t>(p)];
+    names[static_cast<std::size_t>(p)] =
+        (h.complemented ? "~" : "") + arranged.complex.halfspace_names[static_cast<std::size_t>(h.halfspace)];
   }
   print_graph(r, names, out);
   print_run(r, out);
   // Evaluate on the whole plane: the scene in a domain holding every vertex, so that every sign vector of the
   // plane is some cell's (the tree's leaves name halfspaces, which are the same there).
-  const Arranged2 whole = arrange(whole_plane_scene(*in.scene));
-  const std::vector<char> whole_solid = carry_to_whole_plane(arranged, solid.cells, whole);
+  const Scene2 whole_scene = whole_plane_scene(*in.scene);
+  const bool same_domain = whole_scene.domain.min == in.scene->domain.min && whole_scene.domain.max == in.scene->domain.max;
+  std::optional<Arranged2> larger;  // only when the scene's own domain hides some vertex
+  if (!same_domain) larger = arrange(whole_scene);
+  const Arranged2& whole = larger ? *larger : arranged;
+  const std::vector<char> whole_solid = larger ? carry_to_whole_plane(arranged, solid.cells, whole) : solid.cells;
   const nhrep::Evaluation e = nhrep::evaluate_tree(r, whole.complex, whole_solid);
   out << "exact evaluation with natural halfspaces on the whole plane (" << whole.complex.cells.size()
       << " cells of a domain holding every vertex): "
@@ -397,11 +372,11 @@ int run_planar(const NhtreeOptions& o) {
   if (e.verdict == nhrep::Verdict::DescribableButFails) {
     out << "  solid points the tree misses: " << witnesses(whole.complex, e.wrong_inside)
         << "; points it adds: " << witnesses(whole.complex, e.wrong_outside) << "\n";
-    const int solid_parts = solid_components(arranged.complex, solid.cells);
-    const int boundary_parts = patch_graph_components(r.graph);
-    if (boundary_parts > solid_parts && !o.nest_holes)
-      out << "  the solid has holes: its boundary has " << boundary_parts << " components but the solid " << solid_parts
-          << ", and the tree initialisation (Section 5.2) unites what should be intersected\n";
+    const auto& pieces = r.graph.surface.pieces;
+    const bool holes = std::any_of(pieces.begin(), pieces.end(), [](const BoundaryPiece& p) { return p.hole; });
+    if (holes && !o.nest_holes)
+      out << "  the solid has holes, and the tree initialisation (Section 5.2) unites its boundary components where "
+             "holes should be intersected (see --nest-holes)\n";
     else
       out << "  NH-Rep needs extended surfaces here (Appendix B)\n";
   }
@@ -481,10 +456,7 @@ void add_nhtree_command(CLI::App& app) {
                   "compare the original patch graph with NH-Rep's 'edge: a-b : t' listing");
   cmd->add_option("--reference-face-patch", o->reference_face_patch,
                   "the reference's patch id per triangle, to compare through decompositions");
-  cmd->callback([o] {
-    const int status = run_nhtree(*o);
-    if (status != 0) throw CLI::RuntimeError(status);
-  });
+  run_with_status(cmd, o, &run_nhtree);
 }
 
 }  // namespace hsx::cli

@@ -14,6 +14,13 @@ const char* feature_type_name(FeatureType type) {
   return "?";
 }
 
+FeatureType combine_feature_types(FeatureType a, FeatureType b) {
+  if (a == b) return a;
+  if (a == FeatureType::Smooth) return b;
+  if (b == FeatureType::Smooth) return a;
+  return FeatureType::Hybrid;
+}
+
 std::vector<std::string> check_boundary(const BoundarySurface& surface) {
   std::vector<std::string> problems;
   const int piece_count = static_cast<int>(surface.pieces.size());

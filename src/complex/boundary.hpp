@@ -30,6 +30,10 @@ enum class FeatureType : char { Smooth = 0, Convex = 1, Concave = 2, Hybrid = 3 
 /// "smooth", "convex", "concave", "hybrid".
 const char* feature_type_name(FeatureType type);
 
+/// The type of a curve made of parts of types a and b (Guo et al., Section 3): smooth adds nothing, convex with
+/// concave (or anything with hybrid) is hybrid.
+FeatureType combine_feature_types(FeatureType a, FeatureType b);
+
 struct BoundaryLink {
   int piece_a = -1, piece_b = -1;
   bool feature = false;

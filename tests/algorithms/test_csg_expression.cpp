@@ -5,6 +5,8 @@
 #include "complex/from_arrangement2.hpp"
 #include "support/random_scenes.hpp"
 
+#include "support/random_expressions.hpp"
+
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -17,20 +19,15 @@ using namespace hsx::csg;
 
 namespace {
 
+using hsx::test::random_expr;
+using hsx::test::raw;
+
 const std::vector<std::string> kNames = {"A", "B", "C", "D", "E"};
 
 ExprPtr A() { return leaf(0); }
 ExprPtr B() { return leaf(1); }
 ExprPtr C() { return leaf(2); }
 ExprPtr D() { return leaf(3); }
-
-/// A node built without the constructors' simplifications.
-ExprPtr raw(Op op, std::vector<ExprPtr> children) {
-  auto e = std::make_shared<Expr>();
-  e->op = op;
-  e->children = std::move(children);
-  return e;
-}
 
 /// Independent oracle: the set semantics, written directly on a membership function.
 bool oracle(const Expr& e, const std::function<bool(int)>& in) {
@@ -50,28 +47,6 @@ bool oracle(const Expr& e, const std::function<bool(int)>& in) {
       return true;
   }
   return false;
-}
-
-/// Random expression over n halfspaces, built with the constructors (simplified) or raw (`raw_nodes`).
-ExprPtr random_expr(int n, int depth, bool raw_nodes) {
-  const int kind = *rc::gen::inRange(0, depth > 0 ? 10 : 4);
-  if (kind <= 2) return leaf(*rc::gen::inRange(0, n));
-  if (kind == 3) return *rc::gen::inRange(0, 8) == 0 ? (*rc::gen::arbitrary<bool>() ? empty() : full())
-                                                     : leaf(*rc::gen::inRange(0, n));
-  if (kind == 4) {
-    ExprPtr a = random_expr(n, depth - 1, raw_nodes);
-    return raw_nodes ? raw(Op::Complement, {a}) : complement(a);
-  }
-  if (kind <= 7) {
-    const int k = *rc::gen::inRange(2, 4);
-    std::vector<ExprPtr> children;
-    for (int i = 0; i < k; ++i) children.push_back(random_expr(n, depth - 1, raw_nodes));
-    const Op op = kind <= 5 ? Op::Union : Op::Intersection;
-    if (raw_nodes) return raw(op, children);
-    return op == Op::Union ? unite(children) : intersect(children);
-  }
-  ExprPtr a = random_expr(n, depth - 1, raw_nodes), b = random_expr(n, depth - 1, raw_nodes);
-  return raw_nodes ? raw(Op::Difference, {a, b}) : difference(a, b);
 }
 
 std::vector<char> sign_vector(unsigned mask, int n) {

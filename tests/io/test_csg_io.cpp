@@ -12,6 +12,8 @@
 #include "io/openscad.hpp"
 #include "io/scene_json.hpp"
 
+#include "support/random_expressions.hpp"
+
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
@@ -28,6 +30,9 @@ using namespace hsx::csg;
 
 namespace {
 
+using hsx::test::random_expr;
+using hsx::test::raw;
+
 const std::vector<std::string> kNames = {"A", "B", "C", "D", "E"};
 
 Rational R(long n, long d = 1) { return make_rational(Integer(n), Integer(d)); }
@@ -38,34 +43,6 @@ bool same_tree(const Expr& a, const Expr& b) {
   for (std::size_t i = 0; i < a.children.size(); ++i)
     if (!same_tree(*a.children[i], *b.children[i])) return false;
   return true;
-}
-
-ExprPtr raw(Op op, std::vector<ExprPtr> children) {
-  auto e = std::make_shared<Expr>();
-  e->op = op;
-  e->children = std::move(children);
-  return e;
-}
-
-ExprPtr random_expr(int n, int depth, bool raw_nodes) {
-  const int kind = *rc::gen::inRange(0, depth > 0 ? 10 : 4);
-  if (kind <= 2) return leaf(*rc::gen::inRange(0, n));
-  if (kind == 3) return *rc::gen::inRange(0, 8) == 0 ? (*rc::gen::arbitrary<bool>() ? empty() : full())
-                                                     : leaf(*rc::gen::inRange(0, n));
-  if (kind == 4) {
-    ExprPtr a = random_expr(n, depth - 1, raw_nodes);
-    return raw_nodes ? raw(Op::Complement, {a}) : complement(a);
-  }
-  if (kind <= 7) {
-    const int k = *rc::gen::inRange(2, 4);
-    std::vector<ExprPtr> children;
-    for (int i = 0; i < k; ++i) children.push_back(random_expr(n, depth - 1, raw_nodes));
-    const Op op = kind <= 5 ? Op::Union : Op::Intersection;
-    if (raw_nodes) return raw(op, children);
-    return op == Op::Union ? unite(children) : intersect(children);
-  }
-  ExprPtr a = random_expr(n, depth - 1, raw_nodes), b = random_expr(n, depth - 1, raw_nodes);
-  return raw_nodes ? raw(Op::Difference, {a, b}) : difference(a, b);
 }
 
 bool same_truth_table(const Expr& a, const Expr& b, int n) {

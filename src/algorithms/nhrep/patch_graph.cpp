@@ -23,13 +23,6 @@ int find_root(std::vector<int>& parent, int x) {
   return x;
 }
 
-FeatureType combine(FeatureType a, FeatureType b) {
-  if (a == b) return a;
-  if (a == FeatureType::Smooth) return b;
-  if (b == FeatureType::Smooth) return a;
-  return FeatureType::Hybrid;  // convex with concave, or anything with hybrid
-}
-
 bool is_convexish(FeatureType t) { return t == FeatureType::Convex || t == FeatureType::Hybrid; }
 bool is_concaveish(FeatureType t) { return t == FeatureType::Concave || t == FeatureType::Hybrid; }
 
@@ -150,7 +143,7 @@ void rebuild_curves(PatchGraph& graph) {
       curve.patch_b = b;
       curve.type = surface.links[at(l)].type;
     } else {
-      curve.type = combine(curve.type, surface.links[at(l)].type);
+      curve.type = combine_feature_types(curve.type, surface.links[at(l)].type);
     }
     curve.links.push_back(l);  // feature_links is ascending, so each curve's links are too
   }

@@ -8,6 +8,7 @@
 #include "complex/complex.hpp"
 #include "complex/from_arrangement2.hpp"
 #include "kernel/measure.hpp"
+#include "support/random_labellings.hpp"
 #include "support/random_scenes.hpp"
 
 #include <catch2/catch.hpp>
@@ -116,46 +117,8 @@ void check_against_oracle(const Problem& problem, const ExtractResult& r, const 
     RC_ASSERT(static_cast<std::size_t>(r.ties.count) == bf.optimal.size());
 }
 
-/// The implications of orientation preservation (problem.hpp), per support with cells a, b: only a-inside
-/// allowed: label(b) = 1 => label(a) = 1; only b-inside: label(a) = 1 => label(b) = 1; neither: equal labels
-/// (both ways); both: no constraint.
-std::vector<std::vector<int>> implications(const Problem& problem) {
-  std::vector<std::vector<int>> implies(problem.cell_count());
-  for (const SupportTerm& s : problem.supports()) {
-    if (!s.allow_b_inside) implies[s.cell_b].push_back(s.cell_a);
-    if (!s.allow_a_inside) implies[s.cell_a].push_back(s.cell_b);
-  }
-  return implies;
-}
-
-/// A random orientation-preserving labelling: random seed cells, each closed under the implications; seeds whose
-/// closure reaches an outer cell are dropped. A union of closed sets is closed.
-Labelling random_op_labelling(const Problem& problem) {
-  const int n = problem.cell_count();
-  const auto implies = implications(problem);
-  const int density = *rc::gen::inRange(1, 6);
-  Labelling l(n, 0);
-  for (int seed = 0; seed < n; ++seed) {
-    if (*rc::gen::inRange(0, density) != 0) continue;
-    std::vector<char> in(n, 0);
-    std::vector<int> stack{seed};
-    in[seed] = 1;
-    bool outer = false;
-    while (!stack.empty()) {
-      const int x = stack.back();
-      stack.pop_back();
-      outer = outer || problem.complex().cells[x].outer;
-      for (int y : implies[x])
-        if (!in[y]) {
-          in[y] = 1;
-          stack.push_back(y);
-        }
-    }
-    if (outer) continue;
-    for (int k = 0; k < n; ++k) l[k] = l[k] || in[k];
-  }
-  return l;
-}
+/// A random orientation-preserving labelling (tests/support/random_labellings.hpp).
+Labelling random_op_labelling(const Problem& problem) { return test::random_closure(problem, 6); }
 
 Labelling random_labelling(int n) {
   Labelling l(n, 0);

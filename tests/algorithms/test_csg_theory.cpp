@@ -18,6 +18,7 @@
 #include "complex/from_arrangement2.hpp"
 #include "io/csg_text.hpp"
 #include "io/scene_json.hpp"
+#include "support/random_labellings.hpp"
 #include "support/random_scenes.hpp"
 
 #include <catch2/catch.hpp>
@@ -476,40 +477,8 @@ TEST_CASE("csg theory 3: BSH Fig. 2 - shapes 1-4 describable by A and B, shapes 
 
 namespace {
 
-/// A random orientation-preserving labelling (problem.hpp's convention, as implications between the two cells of
-/// each support): random seed cells, each closed under the implications; seeds whose closure reaches an outer
-/// cell are dropped. A union of closed sets is closed.
-bsh::Labelling random_closure(const bsh::Problem& problem) {
-  const int n = problem.cell_count();
-  std::vector<std::vector<int>> implies(n);
-  for (const bsh::SupportTerm& s : problem.supports()) {
-    // Only "a inside" allowed: b inside => a inside; only "b inside": the converse; neither: equal labels.
-    if (!s.allow_b_inside) implies[s.cell_b].push_back(s.cell_a);
-    if (!s.allow_a_inside) implies[s.cell_a].push_back(s.cell_b);
-  }
-  const int density = *rc::gen::inRange(1, 5);
-  bsh::Labelling l(n, 0);
-  for (int seed = 0; seed < n; ++seed) {
-    if (*rc::gen::inRange(0, density) != 0) continue;
-    std::vector<char> in(n, 0);
-    std::vector<int> stack{seed};
-    in[seed] = 1;
-    bool outer = false;
-    while (!stack.empty()) {
-      const int x = stack.back();
-      stack.pop_back();
-      outer = outer || problem.complex().cells[x].outer;
-      for (int y : implies[x])
-        if (!in[y]) {
-          in[y] = 1;
-          stack.push_back(y);
-        }
-    }
-    if (outer) continue;
-    for (int k = 0; k < n; ++k) l[k] = l[k] || in[k];
-  }
-  return l;
-}
+/// A random orientation-preserving labelling (tests/support/random_labellings.hpp).
+bsh::Labelling random_closure(const bsh::Problem& problem) { return test::random_closure(problem, 5); }
 
 /// Patches on the boundary of `l` with their halfspace's orientation (inside cell 1, outside cell 0), counted here.
 bool on_boundary(const Patch& p, const bsh::Labelling& l) { return l[p.inside_cell] && !l[p.outside_cell]; }

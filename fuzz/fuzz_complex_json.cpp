@@ -1,7 +1,7 @@
 // Bytes -> hsx-complex/1 import. Bad input must end in InputError; a complex that imports must pass
 // check_complex (the importer runs it) and export again.
-#include "io/complex_json.hpp"
-#include "io/exact_json.hpp"
+#include <hsx/io/complex_json.hpp>
+#include <hsx/io/exact_json.hpp>
 
 #include <cstdint>
 

@@ -1,8 +1,8 @@
 // Bytes -> NH-Rep `.conf` tree (io/nhrep_json.hpp, read_nhtree_conf) and the same bytes as a face-patch file. Bad
 // input must end in InputError; anything else (crash, sanitizer report, other exception, hang) is a finding. On
 // every accepted tree: ops alternate with depth, the canonical form is stable, and a tree compares equal to itself.
-#include "algorithms/nhrep/compare.hpp"
-#include "io/nhrep_json.hpp"
+#include <hsx/algorithms/nhrep/compare.hpp>
+#include <hsx/io/nhrep_json.hpp>
 
 #include <algorithm>
 #include <cstdint>

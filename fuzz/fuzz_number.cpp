@@ -1,5 +1,5 @@
 // Bytes -> exact rational. Accepted text must round-trip through exact_string; nothing may crash or run long.
-#include "kernel/rational.hpp"
+#include <hsx/kernel/rational.hpp>
 
 #include <cstdint>
 #include <cstdlib>

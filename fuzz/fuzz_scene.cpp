@@ -1,10 +1,10 @@
 // Bytes -> scene (hsx-scene/1) -> exact arrangement -> complex -> JSON and SVG. Bad input must end in InputError;
 // anything else (crash, sanitizer report, other exception, hang) is a finding. The size bounds keep one input's
 // arrangement small: correctness, not scale, is what this target explores.
-#include "complex/from_arrangement2.hpp"
-#include "io/complex_json.hpp"
-#include "io/scene_json.hpp"
-#include "io/svg.hpp"
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/complex_json.hpp>
+#include <hsx/io/scene_json.hpp>
+#include <hsx/io/svg.hpp>
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,27 +1,72 @@
 #!/usr/bin/env bash
-# The layers of src/ (README "Layout"): each may include only itself and the layers before it, and only kernel/ and
-# geometry/ may include CGAL. Usage: layering.sh SOURCE_DIR. Prints every offending include and fails if any.
+# The layers (README "Layout"): kernel -> geometry -> complex -> algorithms -> io -> cli. Public headers live in
+# include/hsx/<layer>/ (included as <hsx/<layer>/x.hpp>), sources and private headers in src/<layer>/ (private
+# headers included as "<layer>/x.hpp"). Rules checked on every include of every file:
+#   1. a file of one layer includes only its own layer and the layers before it;
+#   2. only kernel/ and geometry/ include CGAL;
+#   3. no public header includes a private one (everything it includes must itself be public);
+#   4. src/cli includes only public headers of the library (and its own cli/ headers);
+#   5. a public header is spelled <hsx/...>, never "layer/x.hpp".
+# Usage: layering.sh SOURCE_DIR [EXTRA_FILE...]. Prints every offending include and fails if any. Extra files
+# (for testing this script) are checked as if they were at the path named by the first line "// layering-path: P".
 set -u
-src="${1:?usage: layering.sh SOURCE_DIR}/src"
+root="${1:?usage: layering.sh SOURCE_DIR}"
+shift
 layers=(kernel geometry complex algorithms io cli)
 bad=0
-for i in "${!layers[@]}"; do
-  layer="${layers[$i]}"
-  later=("${layers[@]:$((i + 1))}")
-  while IFS= read -r file; do
-    while IFS= read -r line; do
-      inc="$(sed -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]([^>"]+)[>"].*/\1/' <<<"$line")"
-      for l in "${later[@]}"; do
-        if [[ "$inc" == "$l/"* ]]; then
-          echo "${file#$src/}: includes $inc (layer $l comes after $layer)"; bad=$((bad + 1))
-        fi
-      done
-      if [[ "$inc" == CGAL/* ]] && [[ "$layer" != kernel && "$layer" != geometry ]]; then
-        echo "${file#$src/}: includes $inc (only kernel/ and geometry/ may use CGAL)"; bad=$((bad + 1))
+layer_index() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
+
+check_file() {  # check_file FILE LOGICAL_PATH (relative to root: include/hsx/<layer>/... or src/<layer>/...)
+  local file="$1" path="$2" public=0 layer rest
+  case "$path" in
+    include/hsx/*) public=1; rest="${path#include/hsx/}" ;;
+    src/*) rest="${path#src/}" ;;
+    *) return ;;
+  esac
+  layer="${rest%%/*}"
+  local li; li=$(layer_index "$layer")
+  [ "$li" -ge 0 ] || return
+  while IFS= read -r line; do
+    local inc quote
+    inc="$(sed -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]([^>"]+)[>"].*/\1/' <<<"$line")"
+    quote=0; [[ "$line" =~ \#[[:space:]]*include[[:space:]]*\" ]] && quote=1
+    local target="$inc" is_hsx=0
+    if [[ "$inc" == hsx/* ]]; then target="${inc#hsx/}"; is_hsx=1; fi
+    local tl="${target%%/*}" ti
+    ti=$(layer_index "$tl")
+    if [ "$ti" -ge 0 ] && [[ "$target" == */* ]]; then
+      if [ "$ti" -gt "$li" ]; then
+        echo "$path: includes $inc (layer $tl comes after $layer)"; bad=$((bad + 1))
       fi
-    done < <(grep -E '^[[:space:]]*#[[:space:]]*include' "$file")
-  done < <(find "$src/$layer" -type f \( -name '*.hpp' -o -name '*.cpp' \) | sort)
+      if [ "$is_hsx" -eq 1 ] && [ ! -f "$root/include/hsx/$target" ]; then
+        echo "$path: includes $inc, which is not a public header"; bad=$((bad + 1))
+      fi
+      if [ "$is_hsx" -eq 0 ] && [ "$quote" -eq 1 ]; then
+        if [ -f "$root/include/hsx/$target" ]; then
+          echo "$path: includes public header \"$inc\" as private; spell it <hsx/$target>"; bad=$((bad + 1))
+        elif [ "$public" -eq 1 ]; then
+          echo "$path: public header includes private header $inc"; bad=$((bad + 1))
+        elif [ "$layer" = cli ] && [ "$tl" != cli ]; then
+          echo "$path: the CLI includes private header $inc (use the public API)"; bad=$((bad + 1))
+        fi
+      fi
+    fi
+    if [[ "$inc" == CGAL/* ]] && [[ "$layer" != kernel && "$layer" != geometry ]]; then
+      echo "$path: includes $inc (only kernel/ and geometry/ may use CGAL)"; bad=$((bad + 1))
+    fi
+    if [[ "$inc" == CGAL/* || "$inc" == boost/* ]] && [ "$public" -eq 1 ]; then
+      echo "$path: public header includes $inc (CGAL and Boost stay inside the library)"; bad=$((bad + 1))
+    fi
+  done < <(grep -E '^[[:space:]]*#[[:space:]]*include' "$file")
+}
+
+count=0
+while IFS= read -r f; do
+  check_file "$f" "${f#$root/}"; count=$((count + 1))
+done < <(find "$root/include/hsx" "$root/src" -type f \( -name '*.hpp' -o -name '*.cpp' \) | sort)
+for extra in "$@"; do
+  logical="$(sed -nE '1s|^// layering-path: (.*)$|\1|p' "$extra")"
+  check_file "$extra" "${logical:?$extra: first line must be // layering-path: P}"; count=$((count + 1))
 done
-count=$(find "$src" -type f \( -name '*.hpp' -o -name '*.cpp' \) | wc -l)
 if [ "$bad" -ne 0 ]; then echo "$bad layering violations in $count files"; exit 1; fi
 echo "layering holds in $count files"

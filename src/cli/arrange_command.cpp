@@ -1,10 +1,10 @@
 // hsx arrange SCENE [--svg FILE] [--json FILE]: the exact arrangement of a scene and its complex.
 #include "cli/commands.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "io/complex_json.hpp"
-#include "io/files.hpp"
-#include "io/scene_json.hpp"
-#include "io/svg.hpp"
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/complex_json.hpp>
+#include <hsx/io/files.hpp>
+#include <hsx/io/scene_json.hpp>
+#include <hsx/io/svg.hpp>
 
 #include <iomanip>
 #include <iostream>

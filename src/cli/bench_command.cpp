@@ -1,9 +1,9 @@
 // hsx bench [DIR...]: every method on every scene, timed in one run, reported as ratios to the graph cut; with
 // --meshes, NH-Rep's stages on meshes, as ratios to reading the mesh.
-#include "algorithms/bsh/extract.hpp"
-#include "algorithms/nhrep/tree.hpp"
-#include "complex/boundary_from_mesh.hpp"
-#include "geometry/mesh3.hpp"
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/nhrep/tree.hpp>
+#include <hsx/complex/boundary_from_mesh.hpp>
+#include <hsx/geometry/mesh3.hpp>
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
 

@@ -1,8 +1,8 @@
 // hsx check INPUT: every applicable proposition checker, as a table with witnesses.
-#include "algorithms/bsh/checks.hpp"
+#include <hsx/algorithms/bsh/checks.hpp>
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
-#include "io/files.hpp"
+#include <hsx/io/files.hpp>
 
 #include <iomanip>
 #include <iostream>

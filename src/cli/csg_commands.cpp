@@ -1,17 +1,17 @@
 // hsx describe / csg / convert / samples / corpus: Halfspace CSG (Shapiro-Vossler, BHC) and the conversion of
 // solids to BSH (BSH paper, Section 6).
-#include "algorithms/bsh/samples.hpp"
-#include "algorithms/csg/bhc.hpp"
+#include <hsx/algorithms/bsh/samples.hpp>
+#include <hsx/algorithms/csg/bhc.hpp>
 #include "cli/commands.hpp"
 #include "cli/solid.hpp"
 #include "geometry/planar_points.hpp"
-#include "io/csg_text.hpp"
-#include "io/csgnet.hpp"
-#include "io/files.hpp"
-#include "io/json_values.hpp"
-#include "io/openscad.hpp"
-#include "io/scene_json.hpp"
-#include "io/svg.hpp"
+#include <hsx/io/csg_text.hpp>
+#include <hsx/io/csgnet.hpp>
+#include <hsx/io/files.hpp>
+#include <hsx/io/json_values.hpp>
+#include <hsx/io/openscad.hpp>
+#include <hsx/io/scene_json.hpp>
+#include <hsx/io/svg.hpp>
 
 #include <chrono>
 #include <fstream>

@@ -1,10 +1,10 @@
 // hsx extract INPUT --method graphcut|beam|best-first|brute-force: the BSH shape (paper, Sections 3 and 5).
-#include "algorithms/bsh/extract.hpp"
+#include <hsx/algorithms/bsh/extract.hpp>
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
-#include "io/files.hpp"
-#include "io/result_json.hpp"
-#include "io/svg.hpp"
+#include <hsx/io/files.hpp>
+#include <hsx/io/result_json.hpp>
+#include <hsx/io/svg.hpp>
 
 #include <iostream>
 #include <memory>

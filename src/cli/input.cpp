@@ -1,7 +1,7 @@
 #include "cli/input.hpp"
 
-#include "io/exact_json.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/io/exact_json.hpp>
+#include <hsx/io/scene_json.hpp>
 
 namespace hsx::cli {
 

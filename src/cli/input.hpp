@@ -2,9 +2,9 @@
 // elsewhere). Dispatch is on the document's "format" field.
 #pragma once
 
-#include "complex/from_arrangement2.hpp"
-#include "io/complex_json.hpp"
-#include "io/result_json.hpp"
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/complex_json.hpp>
+#include <hsx/io/result_json.hpp>
 
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 // hsx: exact-arithmetic research and verification engine for halfspace-based solid modelling.
 #include "cli/commands.hpp"
-#include "geometry/scene.hpp"
+#include <hsx/geometry/scene.hpp>
 
 #include <iostream>
 

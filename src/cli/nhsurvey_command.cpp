@@ -33,17 +33,17 @@
 // (for scenes with their own domain) the verdicts that change when evaluated on that domain instead.
 // Exit status: 0 when every structural check holds (check_tree, the evaluation's consistency, no pipeline error),
 // 3 when one fails, 2 for bad input. Output is deterministic; `--timings` adds seconds.
-#include "algorithms/bsh/extract.hpp"
-#include "algorithms/csg/bhc.hpp"
-#include "algorithms/csg/expression.hpp"
-#include "algorithms/nhrep/evaluate.hpp"
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/csg/bhc.hpp>
+#include <hsx/algorithms/csg/expression.hpp>
+#include <hsx/algorithms/nhrep/evaluate.hpp>
 #include "cli/commands.hpp"
 #include "cli/solid.hpp"
-#include "complex/boundary_from_arrangement2.hpp"
-#include "io/csgnet.hpp"
-#include "io/exact_json.hpp"
-#include "io/files.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/io/csgnet.hpp>
+#include <hsx/io/exact_json.hpp>
+#include <hsx/io/files.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <algorithm>
 #include <chrono>

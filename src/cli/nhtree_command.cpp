@@ -1,20 +1,20 @@
 // `hsx nhtree`: NH-Rep's Boolean tree (Guo et al. 2022, Section 5) of a 2D solid or a 3D mesh, with the patch
 // graph, the cross-checks, and optional comparison with a tree written by NH-Rep's own tool.
-#include "algorithms/nhrep/compare.hpp"
-#include "algorithms/nhrep/evaluate.hpp"
-#include "algorithms/nhrep/tree.hpp"
+#include <hsx/algorithms/nhrep/compare.hpp>
+#include <hsx/algorithms/nhrep/evaluate.hpp>
+#include <hsx/algorithms/nhrep/tree.hpp>
 #include "cli/commands.hpp"
 #include "cli/input.hpp"
 #include "cli/solid.hpp"
-#include "complex/boundary_from_arrangement2.hpp"
-#include "complex/boundary_from_mesh.hpp"
-#include "geometry/mesh3.hpp"
+#include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/complex/boundary_from_mesh.hpp>
+#include <hsx/geometry/mesh3.hpp>
 #include "geometry/planar_corners.hpp"
-#include "io/json_values.hpp"
-#include "io/files.hpp"
-#include "io/nhrep_json.hpp"
-#include "io/nhrep_mesh.hpp"
-#include "io/nhrep_svg.hpp"
+#include <hsx/io/json_values.hpp>
+#include <hsx/io/files.hpp>
+#include <hsx/io/nhrep_json.hpp>
+#include <hsx/io/nhrep_mesh.hpp>
+#include <hsx/io/nhrep_svg.hpp>
 
 #include <algorithm>
 #include <iostream>

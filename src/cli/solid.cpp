@@ -1,8 +1,8 @@
 #include "cli/solid.hpp"
 
-#include "algorithms/csg/describability.hpp"
-#include "io/csg_text.hpp"
-#include "io/exact_json.hpp"
+#include <hsx/algorithms/csg/describability.hpp>
+#include <hsx/io/csg_text.hpp>
+#include <hsx/io/exact_json.hpp>
 
 #include <algorithm>
 #include <set>

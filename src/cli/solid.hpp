@@ -2,7 +2,7 @@
 // 2D separators that make a non-describable solid describable.
 #pragma once
 
-#include "algorithms/csg/bhc.hpp"
+#include <hsx/algorithms/csg/bhc.hpp>
 #include "cli/input.hpp"
 
 #include <string>

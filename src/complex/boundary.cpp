@@ -1,4 +1,4 @@
-#include "complex/boundary.hpp"
+#include <hsx/complex/boundary.hpp>
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
 // A 2D solid's boundary as a BoundarySurface: see boundary_from_arrangement2.hpp.
-#include "complex/boundary_from_arrangement2.hpp"
+#include <hsx/complex/boundary_from_arrangement2.hpp>
 
 #include "geometry/planar_corners.hpp"
 

@@ -1,6 +1,6 @@
 // Mesh -> BoundarySurface. The numbering is the identity (piece = triangle, link = edge) so that NH-Rep's patch
 // numbering by lowest face index carries over unchanged.
-#include "complex/boundary_from_mesh.hpp"
+#include <hsx/complex/boundary_from_mesh.hpp>
 
 namespace hsx {
 

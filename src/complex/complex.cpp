@@ -1,4 +1,4 @@
-#include "complex/complex.hpp"
+#include <hsx/complex/complex.hpp>
 
 #include <algorithm>
 #include <set>

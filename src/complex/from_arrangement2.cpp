@@ -1,4 +1,4 @@
-#include "complex/from_arrangement2.hpp"
+#include <hsx/complex/from_arrangement2.hpp>
 
 #include <algorithm>
 #include <map>

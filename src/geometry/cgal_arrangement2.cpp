@@ -1,6 +1,6 @@
 // The only translation unit that instantiates CGAL's 2D arrangement (it takes ~20 s and ~1.2 GB to compile: keep
 // CGAL out of every other file). Everything it hands out is plain data (geometry/arrangement2.hpp).
-#include "geometry/arrangement2.hpp"
+#include <hsx/geometry/arrangement2.hpp>
 #include "geometry/planar_measures.hpp"
 
 #include <CGAL/Arr_circle_segment_traits_2.h>

@@ -10,7 +10,7 @@
 //   internal limit, not an input error). cos^2(delta) is algebraic and cos^2(theta) a rational of bounded size,
 //   so the gap is positive; inputs that need more than 2^20 bits would have to approximate cos^2(delta) to
 //   ~300,000 digits.
-#include "geometry/mesh3.hpp"
+#include <hsx/geometry/mesh3.hpp>
 
 #include <algorithm>
 #include <cstdint>

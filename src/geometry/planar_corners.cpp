@@ -2,7 +2,7 @@
 #include "geometry/planar_corners.hpp"
 
 #include "geometry/planar_points.hpp"
-#include "kernel/measure.hpp"
+#include <hsx/kernel/measure.hpp>
 
 #include <algorithm>
 #include <map>

@@ -25,7 +25,7 @@
 //   is decided exactly.
 #pragma once
 
-#include "geometry/arrangement2.hpp"
+#include <hsx/geometry/arrangement2.hpp>
 
 #include <vector>
 

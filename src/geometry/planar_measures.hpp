@@ -1,7 +1,7 @@
 // Exact measures of 2D arrangement pieces (CGAL-free, so io/ can recompute them from serialised geometry).
 #pragma once
 
-#include "geometry/arrangement2.hpp"
+#include <hsx/geometry/arrangement2.hpp>
 
 #include <utility>
 #include <vector>

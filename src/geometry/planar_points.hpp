@@ -1,7 +1,7 @@
 // Exact rational points placed on arrangement edges (samples written back into scenes must be exact `at` points).
 #pragma once
 
-#include "geometry/arrangement2.hpp"
+#include <hsx/geometry/arrangement2.hpp>
 
 namespace hsx {
 

@@ -3,7 +3,7 @@
 // Limits (documented in docs/scene-format.md):
 // - a polygon has at most kMaxPolygonVertices vertices and all polygons together at most kMaxTotalPolygonVertices:
 //   the simplicity test is a bounding-box sweep with filtered exact predicates, quadratic in the worst case.
-#include "geometry/scene.hpp"
+#include <hsx/geometry/scene.hpp>
 
 #include <mpfr.h>
 

@@ -1,9 +1,9 @@
 // The hsx-complex/1 document: see complex_json.hpp.
-#include "io/complex_json.hpp"
+#include <hsx/io/complex_json.hpp>
 
 #include "geometry/planar_measures.hpp"
-#include "io/exact_json.hpp"
-#include "kernel/interval.hpp"
+#include <hsx/io/exact_json.hpp>
+#include <hsx/kernel/interval.hpp>
 
 #include <mpfr.h>
 

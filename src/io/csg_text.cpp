@@ -1,5 +1,5 @@
 // CSG text and JSON forms: see csg_text.hpp.
-#include "io/csg_text.hpp"
+#include <hsx/io/csg_text.hpp>
 
 #include <cstdio>
 #include <filesystem>

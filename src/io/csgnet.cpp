@@ -1,5 +1,5 @@
 // CSGNet programs: see csgnet.hpp.
-#include "io/csgnet.hpp"
+#include <hsx/io/csgnet.hpp>
 
 #include <algorithm>
 #include <utility>

@@ -7,7 +7,7 @@
 // unchanged). The SAX handler counts number events in the same order and substitutes the original text. The first
 // pass only replaces tokens that match the JSON number grammar exactly, so it never turns invalid JSON into valid
 // JSON, and on valid JSON its tokens are exactly the lexer's.
-#include "io/exact_json.hpp"
+#include <hsx/io/exact_json.hpp>
 
 #include <cctype>
 #include <cerrno>

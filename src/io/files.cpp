@@ -1,6 +1,6 @@
-#include "io/files.hpp"
+#include <hsx/io/files.hpp>
 
-#include "geometry/scene.hpp"
+#include <hsx/geometry/scene.hpp>
 
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "io/json_values.hpp"
+#include <hsx/io/json_values.hpp>
 
 namespace hsx {
 

@@ -1,4 +1,4 @@
-#include "io/nhrep_json.hpp"
+#include <hsx/io/nhrep_json.hpp>
 
 #include <algorithm>
 #include <climits>

@@ -1,4 +1,4 @@
-#include "io/nhrep_mesh.hpp"
+#include <hsx/io/nhrep_mesh.hpp>
 
 #include <algorithm>
 #include <map>

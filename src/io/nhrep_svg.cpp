@@ -1,8 +1,8 @@
 // SVG of a 2D NH-Rep patch layout: see nhrep_svg.hpp.
-#include "io/nhrep_svg.hpp"
+#include <hsx/io/nhrep_svg.hpp>
 
 #include "geometry/planar_corners.hpp"
-#include "io/svg.hpp"
+#include <hsx/io/svg.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // OpenSCAD export: see openscad.hpp.
-#include "io/openscad.hpp"
+#include <hsx/io/openscad.hpp>
 
 #include <stdexcept>
 #include <vector>

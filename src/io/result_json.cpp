@@ -1,7 +1,7 @@
-#include "io/result_json.hpp"
+#include <hsx/io/result_json.hpp>
 
-#include "io/json_values.hpp"
-#include "geometry/scene.hpp"
+#include <hsx/io/json_values.hpp>
+#include <hsx/geometry/scene.hpp>
 
 namespace hsx {
 

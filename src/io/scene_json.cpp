@@ -1,5 +1,5 @@
 // Scene files: see scene_json.hpp and docs/scene-format.md.
-#include "io/scene_json.hpp"
+#include <hsx/io/scene_json.hpp>
 
 #include <unordered_map>
 #include <utility>

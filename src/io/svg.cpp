@@ -1,7 +1,7 @@
 // SVG pictures: see svg.hpp.
-#include "io/svg.hpp"
+#include <hsx/io/svg.hpp>
 
-#include "kernel/measure.hpp"
+#include <hsx/kernel/measure.hpp>
 
 #include <algorithm>
 #include <cmath>

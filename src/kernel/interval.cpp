@@ -1,7 +1,7 @@
 // Certified MPFR intervals: lower ends rounded toward -inf (MPFR_RNDD), upper ends toward +inf (MPFR_RNDU).
 // Every operation is monotone in each argument on the region used, or evaluated at all end-point combinations, so
 // the exact result of the operation on any points of the operands lies in the result (see proofs/measures.md).
-#include "kernel/interval.hpp"
+#include <hsx/kernel/interval.hpp>
 
 #include <algorithm>
 #include <stdexcept>

@@ -8,7 +8,7 @@
 // 1, a prime (u < 1009^2, or a deterministic Miller-Rabin test for u < 2^64), or below 1009^3 and not a square
 // (then u = p*q with distinct primes p, q >= 1009). Two distinct proven-square-free radicands never have a square
 // product, so a new proven radicand only has to be checked against the (rare) unproven ones, kept in unsure_.
-#include "kernel/measure.hpp"
+#include <hsx/kernel/measure.hpp>
 
 #include <algorithm>
 #include <cmath>

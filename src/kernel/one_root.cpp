@@ -1,6 +1,6 @@
 // One-root numbers a0 + a1*sqrt(root): exact sign and comparison by squaring with sign cases
 // (see proofs/measures.md, "One-root numbers").
-#include "kernel/one_root.hpp"
+#include <hsx/kernel/one_root.hpp>
 
 #include <stdexcept>
 

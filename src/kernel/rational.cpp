@@ -6,7 +6,7 @@
 //   trailing zeros (like printf's %g), and uses plain notation when the rounded magnitude m satisfies
 //   1e-6 <= m < 1e21 (the same switch points as JavaScript's Number.prototype.toString), otherwise scientific
 //   notation "1.5e-40" / "1e21" (no '+' sign in the exponent; parse_rational accepts both spellings).
-#include "kernel/rational.hpp"
+#include <hsx/kernel/rational.hpp>
 
 #include <algorithm>
 #include <cctype>

@@ -1,13 +1,13 @@
 // Property tests of the BSH extraction layer (algorithms/bsh) on random 2D scenes with degeneracies
 // (tests/support/random_scenes.hpp), small enough for the exhaustive oracle (brute_force). Each property is one
 // statement of the paper or of proofs/bsh.md; the comments say which.
-#include "algorithms/bsh/checks.hpp"
-#include "algorithms/bsh/extract.hpp"
-#include "algorithms/bsh/graph_cut.hpp"
-#include "algorithms/bsh/problem.hpp"
-#include "complex/complex.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "kernel/measure.hpp"
+#include <hsx/algorithms/bsh/checks.hpp>
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/bsh/graph_cut.hpp>
+#include <hsx/algorithms/bsh/problem.hpp>
+#include <hsx/complex/complex.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/kernel/measure.hpp>
 #include "support/random_labellings.hpp"
 #include "support/random_scenes.hpp"
 

@@ -3,13 +3,13 @@
 // computed by hand in the comments; an exhaustive enumeration of all 2^cells labellings (`exhaustive`) is the
 // independent oracle for the constrained graph cut. The last tests build three small scenes (non-generic
 // junctions) through the arrangement. See proofs/bsh.md for what each test stands for.
-#include "algorithms/bsh/checks.hpp"
-#include "algorithms/bsh/extract.hpp"
-#include "algorithms/bsh/graph_cut.hpp"
-#include "algorithms/bsh/problem.hpp"
-#include "complex/complex.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "kernel/measure.hpp"
+#include <hsx/algorithms/bsh/checks.hpp>
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/bsh/graph_cut.hpp>
+#include <hsx/algorithms/bsh/problem.hpp>
+#include <hsx/complex/complex.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/kernel/measure.hpp>
 #include "support/random_scenes.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,8 +1,8 @@
 // CSG expressions (algorithms/csg/expression.hpp): constructors and their simplifications, evaluation on sign
 // vectors and on complexes (against an independent per-cell oracle: exact side tests of each cell's witness
 // point), statistics, and the text form's minimal parentheses.
-#include "algorithms/csg/expression.hpp"
-#include "complex/from_arrangement2.hpp"
+#include <hsx/algorithms/csg/expression.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
 #include "support/random_scenes.hpp"
 
 #include "support/random_expressions.hpp"

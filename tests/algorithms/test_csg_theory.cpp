@@ -8,16 +8,16 @@
 //      inputs, with the counts' bounds; non-generic inputs are skipped and counted (see proofs/csg.md, Section 5),
 //      targets running along a coincident patch reversed are checked too (a bug once, fixed; see theory 4 [bug]).
 //   Hidden tests ("[.explore...]") are the searches that found it and tools to study one input round by round.
-#include "algorithms/bsh/extract.hpp"
-#include "algorithms/bsh/problem.hpp"
-#include "algorithms/bsh/samples.hpp"
-#include "algorithms/csg/bhc.hpp"
-#include "algorithms/csg/describability.hpp"
-#include "algorithms/csg/expression.hpp"
-#include "complex/complex.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "io/csg_text.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/bsh/problem.hpp>
+#include <hsx/algorithms/bsh/samples.hpp>
+#include <hsx/algorithms/csg/bhc.hpp>
+#include <hsx/algorithms/csg/describability.hpp>
+#include <hsx/algorithms/csg/expression.hpp>
+#include <hsx/complex/complex.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/csg_text.hpp>
+#include <hsx/io/scene_json.hpp>
 #include "support/random_labellings.hpp"
 #include "support/random_scenes.hpp"
 

@@ -1,5 +1,5 @@
 // NH-Rep patch graphs, Algorithm 1 and patch decomposition on hand-built boundaries (no geometry).
-#include "algorithms/nhrep/tree.hpp"
+#include <hsx/algorithms/nhrep/tree.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

@@ -1,13 +1,13 @@
 // Cross-check 2 of issue 5: NH-Rep trees with natural halfspaces evaluated exactly on every cell of 2D solids
 // (algorithms/nhrep/evaluate.hpp), on hand-checked solids, random scenes and the kept counterexamples.
-#include "algorithms/csg/describability.hpp"
-#include "algorithms/csg/expression.hpp"
-#include "algorithms/nhrep/compare.hpp"
-#include "algorithms/nhrep/evaluate.hpp"
-#include "complex/boundary_from_arrangement2.hpp"
-#include "io/csg_text.hpp"
-#include "io/nhrep_json.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/algorithms/csg/describability.hpp>
+#include <hsx/algorithms/csg/expression.hpp>
+#include <hsx/algorithms/nhrep/compare.hpp>
+#include <hsx/algorithms/nhrep/evaluate.hpp>
+#include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/io/csg_text.hpp>
+#include <hsx/io/nhrep_json.hpp>
+#include <hsx/io/scene_json.hpp>
 #include "support/random_scenes.hpp"
 
 #include <catch2/catch.hpp>

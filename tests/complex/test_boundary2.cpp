@@ -4,9 +4,9 @@
 // corner, horns between internally tangent circles) and properties over random scenes and solids: invariance under
 // translation, permutation of the halfspaces and mirroring; a brute-force oracle with exact rational pseudo-angles
 // for straight-edged scenes; and the turning number of rectilinear boundary cycles.
-#include "complex/boundary.hpp"
-#include "complex/boundary_from_arrangement2.hpp"
-#include "complex/from_arrangement2.hpp"
+#include <hsx/complex/boundary.hpp>
+#include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
 #include "geometry/planar_corners.hpp"
 #include "support/random_scenes.hpp"
 

@@ -1,11 +1,11 @@
 // Tests of complex/ (the complex built from a 2D arrangement): structural invariants, invariance under
 // permutation of the halfspaces and under integer translation, exact patch lengths, on random scenes with forced
 // degeneracies (tests/support/random_scenes.hpp), plus hand-computed cases.
-#include "complex/complex.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "geometry/arrangement2.hpp"
-#include "geometry/scene.hpp"
-#include "kernel/measure.hpp"
+#include <hsx/complex/complex.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/geometry/arrangement2.hpp>
+#include <hsx/geometry/scene.hpp>
+#include <hsx/kernel/measure.hpp>
 #include "support/random_scenes.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,8 +1,8 @@
 // Tests of geometry/arrangement2: Euler's relation, face classification, exact point location and exact areas on
 // random scenes with forced degeneracies (tests/support/random_scenes.hpp), plus hand-computed cases.
-#include "geometry/arrangement2.hpp"
-#include "geometry/scene.hpp"
-#include "kernel/measure.hpp"
+#include <hsx/geometry/arrangement2.hpp>
+#include <hsx/geometry/scene.hpp>
+#include <hsx/kernel/measure.hpp>
 #include "support/random_scenes.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,8 +2,8 @@
 // input rejected with its line, edge or vertex), orientation, the exact convex/concave sign, the sharpness angle
 // at special angles and against a long-double oracle, invariance under translation and renumbering, and the
 // shared NH-Rep models when they are present.
-#include "complex/boundary_from_mesh.hpp"
-#include "geometry/mesh3.hpp"
+#include <hsx/complex/boundary_from_mesh.hpp>
+#include <hsx/geometry/mesh3.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

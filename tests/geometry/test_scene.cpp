@@ -1,6 +1,6 @@
 // Tests of geometry/scene: side tests, validation, sample resolution and the chosen domain.
-#include "geometry/scene.hpp"
-#include "kernel/measure.hpp"
+#include <hsx/geometry/scene.hpp>
+#include <hsx/kernel/measure.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

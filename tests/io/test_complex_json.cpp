@@ -1,6 +1,6 @@
-#include "complex/from_arrangement2.hpp"
-#include "io/complex_json.hpp"
-#include "io/exact_json.hpp"
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/complex_json.hpp>
+#include <hsx/io/exact_json.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

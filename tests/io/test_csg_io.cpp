@@ -5,12 +5,12 @@
 // the environment variable HSX_CSGNET_CORPUS). When the file is absent it does NOT pass silently: it emits
 // WARN("... skipped: corpus not present") and returns without any assertion, which Catch2 reports as a test case
 // with no assertions (visible with -w NoAssertions, which makes it fail).
-#include "algorithms/csg/expression.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "io/csg_text.hpp"
-#include "io/csgnet.hpp"
-#include "io/openscad.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/algorithms/csg/expression.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/csg_text.hpp>
+#include <hsx/io/csgnet.hpp>
+#include <hsx/io/openscad.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include "support/random_expressions.hpp"
 

@@ -1,10 +1,10 @@
 // Tests of io/nhrep_svg: one path per live piece, one dot per feature link (split edges included), deterministic
 // output, rejected inputs.
-#include "complex/boundary.hpp"
-#include "complex/boundary_from_arrangement2.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "io/nhrep_svg.hpp"
-#include "io/svg.hpp"
+#include <hsx/complex/boundary.hpp>
+#include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/nhrep_svg.hpp>
+#include <hsx/io/svg.hpp>
 #include "support/random_scenes.hpp"
 
 #include <catch2/catch.hpp>

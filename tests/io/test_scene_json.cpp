@@ -1,7 +1,7 @@
 // Tests of io/exact_json and io/scene_json: exact numbers, the field reader, every class of bad input, limits and
 // the write -> read round trip.
-#include "io/exact_json.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/io/exact_json.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

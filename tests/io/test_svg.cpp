@@ -1,5 +1,5 @@
-#include "complex/from_arrangement2.hpp"
-#include "io/svg.hpp"
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/svg.hpp>
 
 #include <catch2/catch.hpp>
 

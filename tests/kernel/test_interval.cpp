@@ -1,6 +1,6 @@
 // Certified intervals (containment of exact results) and one-root numbers (exact sign and comparison).
-#include "kernel/interval.hpp"
-#include "kernel/one_root.hpp"
+#include <hsx/kernel/interval.hpp>
+#include <hsx/kernel/one_root.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

@@ -1,5 +1,5 @@
 // Measures: exact algebraic sums of square roots, denesting, nested radicals and arc angles.
-#include "kernel/measure.hpp"
+#include <hsx/kernel/measure.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

@@ -1,5 +1,5 @@
 // Exact rationals: parsing (accept/reject tables, hostile input), exact and decimal printing.
-#include "kernel/rational.hpp"
+#include <hsx/kernel/rational.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>

@@ -1,9 +1,9 @@
 // data/complexes holds hsx-complex/1 documents (fuzz seeds for fuzz_complex_json, and regression inputs): each
 // must import, pass check_complex, and describe the same arrangement as the scene it was exported from.
-#include "algorithms/bsh/extract.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "io/complex_json.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/complex_json.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // Every kept counterexample (data/counterexamples) must still be detected by `hsx check`'s checkers, and hsx must
 // never claim a wrong optimum on it.
-#include "algorithms/bsh/checks.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/algorithms/bsh/checks.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
 

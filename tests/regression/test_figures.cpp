@@ -6,14 +6,14 @@
 // connectedness, optimality, the optimal shape(s) as cells located from interior points, their areas, and the
 // optional figure-specific fields (beam steps, corners, cut cost, CSG describability, rejected candidates).
 // The expected values were derived independently of hsx (see the expected.json description).
-#include "algorithms/bsh/extract.hpp"
-#include "algorithms/bsh/graph_cut.hpp"
-#include "algorithms/bsh/problem.hpp"
-#include "complex/from_arrangement2.hpp"
-#include "io/complex_json.hpp"
-#include "io/scene_json.hpp"
-#include "kernel/measure.hpp"
-#include "kernel/rational.hpp"
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/bsh/graph_cut.hpp>
+#include <hsx/algorithms/bsh/problem.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/complex_json.hpp>
+#include <hsx/io/scene_json.hpp>
+#include <hsx/kernel/measure.hpp>
+#include <hsx/kernel/rational.hpp>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

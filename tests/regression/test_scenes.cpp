@@ -2,9 +2,9 @@
 // the counts with tests/regression/expected.json. Every expectation there was verified by hand (see the
 // "reasoning" field of each entry). A scene without an expectation fails, so new data is never silently untested;
 // an expectation without a scene fails too.
-#include "complex/from_arrangement2.hpp"
-#include "io/files.hpp"
-#include "io/scene_json.hpp"
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/files.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -2,7 +2,7 @@
 // inside a property).
 #pragma once
 
-#include "algorithms/csg/expression.hpp"
+#include <hsx/algorithms/csg/expression.hpp>
 
 #include <vector>
 

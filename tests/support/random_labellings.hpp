@@ -2,7 +2,7 @@
 // property).
 #pragma once
 
-#include "algorithms/bsh/problem.hpp"
+#include <hsx/algorithms/bsh/problem.hpp>
 
 #include <vector>
 

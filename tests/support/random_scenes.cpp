@@ -1,7 +1,7 @@
 // Random valid 2D scenes for property tests: see random_scenes.hpp.
 #include "support/random_scenes.hpp"
 
-#include "io/scene_json.hpp"
+#include <hsx/io/scene_json.hpp>
 
 #include <algorithm>
 #include <numeric>

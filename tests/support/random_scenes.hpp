@@ -20,8 +20,8 @@
 // Scenes are small (at most max_halfspaces halfspaces): one arrangement takes a few milliseconds.
 #pragma once
 
-#include "geometry/arrangement2.hpp"
-#include "geometry/scene.hpp"
+#include <hsx/geometry/arrangement2.hpp>
+#include <hsx/geometry/scene.hpp>
 
 #include <rapidcheck.h>
 

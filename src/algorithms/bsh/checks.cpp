@@ -1,6 +1,6 @@
-#include "algorithms/bsh/checks.hpp"
+#include <hsx/algorithms/bsh/checks.hpp>
 
-#include "algorithms/bsh/samples.hpp"
+#include <hsx/algorithms/bsh/samples.hpp>
 
 #include <algorithm>
 #include <map>

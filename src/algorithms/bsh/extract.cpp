@@ -1,4 +1,4 @@
-#include "algorithms/bsh/extract.hpp"
+#include <hsx/algorithms/bsh/extract.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "algorithms/bsh/graph_cut.hpp"
+#include <hsx/algorithms/bsh/graph_cut.hpp>
 
 #include "algorithms/flow_graph.hpp"
 

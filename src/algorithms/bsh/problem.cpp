@@ -1,4 +1,4 @@
-#include "algorithms/bsh/problem.hpp"
+#include <hsx/algorithms/bsh/problem.hpp>
 
 #include <algorithm>
 #include <map>

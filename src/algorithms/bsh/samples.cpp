@@ -1,4 +1,4 @@
-#include "algorithms/bsh/samples.hpp"
+#include <hsx/algorithms/bsh/samples.hpp>
 
 #include <algorithm>
 #include <limits>

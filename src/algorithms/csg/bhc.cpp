@@ -1,4 +1,4 @@
-#include "algorithms/csg/bhc.hpp"
+#include <hsx/algorithms/csg/bhc.hpp>
 
 #include <algorithm>
 #include <numeric>

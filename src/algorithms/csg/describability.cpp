@@ -1,4 +1,4 @@
-#include "algorithms/csg/describability.hpp"
+#include <hsx/algorithms/csg/describability.hpp>
 
 #include <algorithm>
 #include <map>

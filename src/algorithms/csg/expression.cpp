@@ -10,7 +10,7 @@
 //   difference: a - empty = a, a - full = empty, empty - b = empty, full - b = ~b.
 // Nothing else is rewritten: repeated children and repeated halfspaces are kept, so a tree read from a file or a
 // CSGNet program keeps its shape.
-#include "algorithms/csg/expression.hpp"
+#include <hsx/algorithms/csg/expression.hpp>
 
 #include <algorithm>
 #include <map>

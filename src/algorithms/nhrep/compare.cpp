@@ -1,4 +1,4 @@
-#include "algorithms/nhrep/compare.hpp"
+#include <hsx/algorithms/nhrep/compare.hpp>
 
 #include <algorithm>
 #include <map>

@@ -1,6 +1,6 @@
-#include "algorithms/nhrep/evaluate.hpp"
+#include <hsx/algorithms/nhrep/evaluate.hpp>
 
-#include "algorithms/csg/describability.hpp"
+#include <hsx/algorithms/csg/describability.hpp>
 
 #include <algorithm>
 #include <stdexcept>

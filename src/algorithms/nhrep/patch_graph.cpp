@@ -1,4 +1,4 @@
-#include "algorithms/nhrep/patch_graph.hpp"
+#include <hsx/algorithms/nhrep/patch_graph.hpp>
 
 #include "algorithms/flow_graph.hpp"
 

@@ -1,4 +1,4 @@
-#include "algorithms/nhrep/tree.hpp"
+#include <hsx/algorithms/nhrep/tree.hpp>
 
 #include <algorithm>
 #include <map>

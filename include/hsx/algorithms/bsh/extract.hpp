@@ -1,0 +1,99 @@
+// EXTRACT-BOUNDARY (BSH paper, Fig. 9): the sample-connected BSH boundary by search over graph cuts, plus the
+// exhaustive oracle that checks it on small inputs.
+#pragma once
+
+#include <hsx/algorithms/bsh/graph_cut.hpp>
+#include <hsx/algorithms/bsh/problem.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hsx::bsh {
+
+enum class Method {
+  GraphCut,   ///< Section 5.1 only: optimal without sample-connectedness
+  Beam,       ///< Fig. 9 with the queue pruned to K states (the paper's practical setting, K = 1)
+  BestFirst,  ///< Fig. 9, complete (Prop. 5.2)
+  BruteForce  ///< every orientation-preserving labelling: the oracle
+};
+const char* to_string(Method m);
+std::optional<Method> method_from_string(const std::string& name);
+
+struct SearchProgress {
+  long states_expanded = 0;
+  long queue_size = 0;
+  long graph_cuts = 0;
+  std::optional<Energy> best_energy;  ///< best sample-connected energy found so far
+};
+
+struct ExtractOptions {
+  Method method = Method::Beam;
+  int beam_width = 1;
+  long max_states = 0;          ///< expanded states before stopping (0: no limit)
+  double time_limit = 0;        ///< seconds before stopping (0: no limit)
+  bool enumerate_ties = true;   ///< complete methods: find every optimal boundary (up to max_ties)
+  int max_ties = 16;
+  long brute_force_limit = 1L << 22;  ///< labellings the oracle may enumerate before refusing
+  /// Best-first on a complex with non-generic junctions (where Prop. 5.2 is not proven) is certified by the
+  /// oracle when it needs at most this many labellings; 0 disables it.
+  long certify_limit = 200000;
+  CompareOptions compare;
+  bool record_states = false;   ///< keep the labelling of every expanded state (ExtractResult::expanded)
+  /// Called about twice a second during long searches (the CLI prints it on stderr); may be empty.
+  std::function<void(const SearchProgress&)> progress;
+};
+
+struct Ties {
+  int count = 1;           ///< optimal boundaries found (>= 1)
+  bool checked = false;    ///< the method looked for other optimal boundaries (complete methods only)
+  bool certified = true;   ///< every tie is proven (exactly equal energies); false: some only unseparated
+  bool capped = false;     ///< enumeration stopped at ExtractOptions::max_ties: there may be more
+};
+
+struct SearchStats {
+  long graph_cuts = 0;
+  long uncertified_cuts = 0;
+  long states_expanded = 0;
+  long states_created = 0;
+  long max_queue = 0;
+  long labellings_enumerated = 0;  ///< brute force
+  double seconds = 0;
+};
+
+struct ExtractResult {
+  Method method = Method::Beam;
+  bool optimal = false;          ///< proven: the least-energy orientation-preserving sample-connected boundary
+  Labelling labelling;
+  Energy energy;
+  bool sample_connected = false;
+  std::vector<char> removed;     ///< per support: removed in the returned state (searches)
+  /// Beam search: the removed sets of the states along the path to the result (BSH Fig. 10).
+  std::vector<std::vector<int>> steps;
+  Ties ties;
+  std::vector<Labelling> tied;   ///< the other optimal labellings when ties.count > 1
+  std::string stopped_by;        ///< "" (finished), "max-states", "time-limit"
+  std::string optimality_note;   ///< how optimality was decided when the search alone could not prove it
+  std::vector<Labelling> expanded;  ///< with ExtractOptions::record_states: every expanded state's boundary
+  SearchStats stats;
+};
+
+/// Runs `options.method` on the problem. Never fails on valid input: a limit returns the best sample-connected
+/// boundary found so far with optimal = false (the empty boundary is always sample-connected).
+/// Throws std::runtime_error when brute force would exceed options.brute_force_limit.
+ExtractResult extract(const Problem& problem, const ExtractOptions& options);
+
+/// The oracle: every orientation-preserving labelling (closed sets of "outside cell inside => inside cell
+/// inside"), enumerated without visiting all 2^cells; returns the least-energy sample-connected ones (all ties).
+/// `connectivity` false: ignore sample-connectedness (to check the graph cut).
+struct BruteForceResult {
+  std::vector<Labelling> optimal;   ///< every least-energy labelling (ties), in enumeration order
+  Energy energy;
+  bool certified = true;            ///< every comparison that picked them was proven
+  long enumerated = 0;
+};
+BruteForceResult brute_force(const Problem& problem, bool connectivity, long limit = 1L << 22,
+                             const CompareOptions& compare = {});
+
+}  // namespace hsx::bsh

@@ -1,0 +1,43 @@
+// Section 5.1: the BSH boundary without sample-connectedness, as a minimum s-t cut (Eqs. 2-4), computed exactly
+// and certified.
+//
+// Graph (Fig. 8): one vertex per cell, plus s and t. Label 1 (inside) = s side.
+//   s -> c  weight h_c(0) = samples on patches whose inside cell is c      (c labelled 0 misses them)
+//   c -> t  weight h_c(1) = samples on patches whose outside cell is c     (c labelled 1 misses them);
+//           infinite for outer cells (they are always outside)
+//   a -> b  weight h_ab(1,0) = sum of the measures of the supports between a and b whose inside cell is a, each
+//           counted once; infinite if any support between them forbids a=1, b=0 (reversed orientation, removed,
+//           or coincident halfspaces that disagree)
+// Weights are pairs (samples, measure) ordered lexicographically: that is lambda > total measure, exactly.
+#pragma once
+
+#include <hsx/algorithms/bsh/problem.hpp>
+
+namespace hsx::bsh {
+
+struct CutResult {
+  Labelling labelling;
+  Energy energy;                 ///< of `labelling`, computed from the labelling itself
+  /// The optimality certificate: the max flow is feasible (0 <= flow <= capacity on every edge, conserved at
+  /// every cell) and its value equals `energy` - which by weak duality proves no labelling is cheaper.
+  bool certified = false;
+  std::string certificate_note;  ///< why not certified (a comparison that did not separate), empty if certified
+  long augmentations = 0;
+};
+
+/// Constraints on one graph cut.
+struct CutConstraints {
+  std::vector<char> removed;       ///< per support: 1 = may not lie on the boundary (|p| = infinity); empty: none
+  std::vector<signed char> forced; ///< per cell: -1 free, 0 or 1 fixed (used to enumerate ties); empty: none
+};
+
+/// Minimum-energy orientation-preserving labelling under `constraints`. When the constraints admit no finite
+/// labelling, `energy.missing_samples` is -1 and `certified` is false.
+CutResult graph_cut(const Problem& problem, const CutConstraints& constraints);
+
+/// The cost of the s-t cut that corresponds to `labelling` in the graph above, summed edge by edge (infinite
+/// when the labelling breaks a constraint). Used to check that cut cost == energy (Eqs. 2-4).
+/// Returns false if infinite.
+bool cut_cost(const Problem& problem, const CutConstraints& constraints, const Labelling& labelling, Energy* cost);
+
+}  // namespace hsx::bsh

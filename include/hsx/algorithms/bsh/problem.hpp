@@ -1,0 +1,109 @@
+// The BSH labelling problem on a complex (BSH paper, Sections 3 and 5).
+//
+// Conventions (owned here):
+// - A labelling gives every cell 1 (inside the shape) or 0 (outside); outer cells are always 0.
+// - The boundary b of a labelling is the set of supports (groups of coincident patches, complex/complex.hpp)
+//   whose two cells have different labels; a patch is on b when its support is.
+// - Orientation-preserving (Def. 3.1): a support may lie on b only with an orientation (which of its two cells
+//   is labelled 1) that one of its halfspaces has. On coincident boundaries (Def. 3.1 leaves them open) hsx adds:
+//   a patch of halfspace i "is on b" only where b has i's orientation, and a sampled patch may not be used
+//   reversed (a sample of i says "this boundary, with i's inside"). So a halfspace given twice behaves like one,
+//   two squares sharing an edge line can use it either way, and a disk and its complement both sampled on the
+//   same arc keep that arc off b. Equivalently, per support: an orientation is allowed iff some halfspace has it
+//   and no sampled patch has the other; as implications: "cell b inside => cell a inside" when only a-inside is
+//   allowed, and equal labels when neither is.
+// - A sample is covered when its patch is on b (with its halfspace's orientation). Energy (Eq. 1) is the pair
+//   (missing samples, measure of b) compared lexicographically: no lambda constant. The measure counts each
+//   support once.
+// - Sample-connected (Def. 3.2): for every halfspace i, every connected component of b ∩ b_i (patches of i on b
+//   with i's orientation, connected through shared junctions) holds a sample of i.
+#pragma once
+
+#include <hsx/complex/complex.hpp>
+#include <hsx/kernel/measure.hpp>
+
+#include <string>
+#include <vector>
+
+namespace hsx::bsh {
+
+using Labelling = std::vector<char>;  ///< per cell: 1 inside the shape, 0 outside
+
+/// E(b) as the pair (|S \ b|, |b|).
+struct Energy {
+  long missing_samples = 0;
+  Measure measure;
+};
+/// Lexicographic and certified: Less/Greater/Equal are proofs, Tie means the measures did not separate.
+Order compare(const Energy& a, const Energy& b, const CompareOptions& options = {});
+
+/// One support group seen by the labelling problem.
+struct SupportTerm {
+  int cell_a = -1, cell_b = -1;  ///< the two cells, in the first patch's inside/outside order
+  bool allow_a_inside = false;   ///< may lie on b with cell_a = 1, cell_b = 0
+  bool allow_b_inside = false;   ///< may lie on b with cell_b = 1, cell_a = 0
+  bool allows(int inside) const { return inside == cell_a ? allow_a_inside : allow_b_inside; }
+  std::vector<int> patches;
+  long samples = 0;       ///< samples on all its patches
+  Measure measure;        ///< counted once
+};
+
+/// Precomputed, read-only view of a complex for the BSH algorithms.
+class Problem {
+ public:
+  explicit Problem(const Complex& complex);
+  const Complex& complex() const { return complex_; }
+  const std::vector<SupportTerm>& supports() const { return supports_; }
+  int cell_count() const { return static_cast<int>(complex_.cells.size()); }
+  int support_count() const { return static_cast<int>(supports_.size()); }
+  long total_samples() const { return total_samples_; }
+  /// Supports adjacent to each support (sharing a junction through any of their patches), ascending.
+  const std::vector<std::vector<int>>& support_neighbours() const { return support_neighbours_; }
+  /// Junctions where the paper's genericity assumption fails (Section 3.1: then an orientation-preserving
+  /// boundary may be non-manifold, Prop. 5.1 may fail, and best-first is not proven complete). A junction is
+  /// generic when its patches lie on exactly two boundaries (coincident patches count as one) that cross: two
+  /// ends each and four distinct cells around it (a tangency has three). Junctions whose patches all separate
+  /// outer cells are ignored: no boundary can use them. Ascending.
+  const std::vector<int>& non_generic_junctions() const { return non_generic_junctions_; }
+  /// Rigorous double enclosure [lo, hi] of each support's measure (fast comparisons before exact ones).
+  const std::vector<std::pair<double, double>>& support_enclosures() const { return support_enclosures_; }
+
+ private:
+  const Complex& complex_;
+  std::vector<SupportTerm> supports_;
+  std::vector<std::vector<int>> support_neighbours_;
+  std::vector<std::pair<double, double>> support_enclosures_;
+  std::vector<int> non_generic_junctions_;
+  long total_samples_ = 0;
+};
+
+/// Supports on the boundary of `labelling`, ascending.
+std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling);
+/// True when every outer cell is 0 and every support on b has its inside cell labelled 1. When false and `why`
+/// is given, names the first offending cell or support.
+bool is_orientation_preserving(const Problem& problem, const Labelling& labelling, std::string* why = nullptr);
+Energy energy(const Problem& problem, const Labelling& labelling);
+
+/// A connected component of b ∩ b_i.
+struct Component {
+  int halfspace = -1;
+  std::vector<int> patches;   ///< ascending
+  bool has_sample = false;
+};
+
+struct SampleConnectivity {
+  std::vector<Component> components;  ///< ordered by halfspace, then smallest patch
+  std::vector<int> islands;           ///< indices into components without a sample of their halfspace
+  bool sample_connected() const { return islands.empty(); }
+};
+SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& labelling);
+
+/// Removable sets of b (Section 5.2) as sets of supports: each island, and each single support on b adjacent to
+/// an island (outside it). Deduplicated, in a deterministic order.
+std::vector<std::vector<int>> removable_sets(const Problem& problem, const Labelling& labelling,
+                                             const SampleConnectivity& connectivity);
+
+/// Area (2D) or volume (3D) of the cells labelled 1.
+Measure inside_measure(const Complex& complex, const Labelling& labelling);
+
+}  // namespace hsx::bsh

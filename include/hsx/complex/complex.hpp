@@ -1,0 +1,81 @@
+// The complex: a dimension-free combinatorial arrangement. Every algorithm (bsh, csg, nhrep) works on this and
+// nothing else, so it can be built from geometry (from_arrangement2.hpp), read from JSON (io/complex_json.hpp),
+// or written by hand in a test.
+//
+// Conventions (owned here):
+// - Cells are the open d-dimensional regions of the arrangement inside the domain. `inside[i]` is the cell's
+//   side of halfspace i (1 inside, 0 outside). Outer cells touch the domain's boundary and are always outside
+//   any shape.
+// - A patch is a maximal connected piece of ONE halfspace's boundary that no other boundary crosses. It
+//   separates two cells: `inside_cell` lies inside its halfspace, `outside_cell` outside.
+// - Coincident boundaries (a halfspace given twice, a half-plane containing a polygon edge, a disk and its
+//   complement) give one patch per halfspace over the same point set; such patches form a `support` group. They
+//   separate the same two cells, and those cells differ in exactly the group's halfspaces. A measure of a set of
+//   patches counts each support once (see measure_of).
+// - Patch pieces lying on the domain's boundary are not patches (both of their sides cannot be cells).
+// - Junctions are where patches meet: vertices in 2D, edges in 3D. Two patches are adjacent iff they share a
+//   junction; a closed patch with no junction (a lone circle) has no neighbours.
+// - Samples sit on patches of their own halfspace.
+#pragma once
+
+#include <hsx/kernel/measure.hpp>
+#include <hsx/kernel/rational.hpp>
+
+#include <string>
+#include <vector>
+
+namespace hsx {
+
+struct Cell {
+  bool outer = false;
+  std::vector<Rational> witness;  ///< exact interior point, `dimension` coordinates
+  std::vector<char> inside;       ///< per halfspace: 1 inside, 0 outside
+  Measure measure;                ///< area (2D) or volume (3D)
+};
+
+struct Patch {
+  int halfspace = -1;
+  int inside_cell = -1, outside_cell = -1;
+  Measure measure;                ///< length (2D) or area (3D)
+  std::vector<int> samples;       ///< indices into Complex::samples, ascending
+  int support = -1;               ///< index into Complex::supports
+  std::vector<int> junctions;     ///< junctions this patch ends at (2D: its two end vertices; none when closed)
+  std::vector<int> pieces;        ///< geometry pieces in order (2D: arrangement edges); empty when not known
+};
+
+struct Junction {
+  std::vector<int> patches;       ///< patches that end here, ascending
+  int piece = -1;                 ///< geometry piece (2D: arrangement vertex), -1 when not known
+};
+
+struct SampleSite {
+  int halfspace = -1;
+  int patch = -1;
+};
+
+struct Complex {
+  int dimension = 2;
+  std::vector<std::string> halfspace_names;
+  std::vector<Cell> cells;
+  std::vector<Patch> patches;
+  std::vector<std::vector<int>> supports;  ///< groups of coincident patches; every patch in exactly one group
+  std::vector<Junction> junctions;
+  std::vector<SampleSite> samples;
+
+  int halfspace_count() const { return static_cast<int>(halfspace_names.size()); }
+  int outer_cell_count() const;
+  /// Patches sharing a junction with p (p excluded), ascending, for every patch.
+  std::vector<std::vector<int>> patch_neighbours() const;
+  /// Patches bounding each cell, ascending.
+  std::vector<std::vector<int>> cell_patches() const;
+  /// The measure of a set of patches as a point set: each support group counted once.
+  Measure measure_of(const std::vector<int>& patches) const;
+};
+
+/// Every structural invariant of a complex, checked exactly. Returns human-readable violations (empty: valid):
+/// indices in range, each patch's cells distinct and on the right sides of its halfspace, the two cells of a
+/// patch differ exactly in the halfspaces of its support group, support groups share cells, junction lists and
+/// patch junction lists agree, samples sit on patches of their own halfspace.
+std::vector<std::string> check_complex(const Complex& complex);
+
+}  // namespace hsx

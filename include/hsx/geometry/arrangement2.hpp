@@ -1,0 +1,97 @@
+// The exact planar arrangement of a 2D scene's boundaries inside its domain box, as plain data (no CGAL types).
+//
+// Conventions (owned here):
+// - Built by CGAL's circle-segment traits over exact rationals (geometry/cgal_arrangement2.cpp). Circles are split
+//   by CGAL into x-monotone arcs at their leftmost and rightmost points; polygon corners are vertices. Those
+//   degree-2 vertices are real vertices of this structure (so Euler's relation holds), but patches (complex/)
+//   run through them.
+// - The domain box is part of the arrangement: its four sides are edges with `on_box == true`. The unbounded
+//   face outside the box is not a face here; face index -1 means "outside the domain".
+// - Faces are the bounded faces (the cells). A face is `outer` iff it shares an edge with the box.
+// - Edge orientation: an edge runs from `source` to `target`; `left_face`/`right_face` are the faces on its left
+//   and right when walking that way. For an arc, `ccw` tells whether that walk is counter-clockwise around the
+//   circle.
+// - `inside[f][i]` is face f's side of halfspace i (complement applied): 1 inside, 0 outside. Faces are open
+//   sets, so the side is never "on".
+#pragma once
+
+#include <hsx/geometry/scene.hpp>
+#include <hsx/kernel/measure.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace hsx {
+
+struct ArrVertex2 {
+  OneRootPoint point;
+  int degree = 0;  ///< number of incident edges
+};
+
+enum class EdgeShape2 { Segment, Arc };
+
+struct ArrEdge2 {
+  int source = -1, target = -1;   ///< vertex indices
+  std::vector<int> halfspaces;    ///< halfspaces whose boundary contains this edge, ascending (coincident: >1)
+  bool on_box = false;            ///< lies on the domain box
+  int left_face = -1, right_face = -1;
+  EdgeShape2 shape = EdgeShape2::Segment;
+  PointQ2 center;                 ///< arc only: supporting circle
+  Rational radius;                ///< arc only
+  bool ccw = false;               ///< arc only: source -> target runs counter-clockwise
+  /// segment only: the supporting line a*x + b*y + c = 0 with rational coefficients (all zero when unknown,
+  /// e.g. read from a document)
+  Rational line_a, line_b, line_c;
+  Measure length;
+};
+
+struct ArrFace2 {
+  bool outer = false;
+  PointQ2 interior;               ///< an exact rational point strictly inside the face
+  std::vector<char> inside;       ///< per halfspace: 1 inside, 0 outside
+  Measure area;
+  /// Boundary walks, each a cycle of (edge, forward) with the face on the left; the first is the outer
+  /// boundary, the rest are holes.
+  std::vector<std::vector<std::pair<int, bool>>> boundary;
+};
+
+struct PointLocation2 {
+  enum Kind { Face, Edge, Vertex, Outside } kind = Outside;
+  int index = -1;
+};
+
+class Arrangement2 {
+ public:
+  /// Builds the arrangement of every halfspace boundary of `scene` (validated, see validate_and_resolve) with
+  /// the domain box, classifies faces, measures edges and faces, and places samples.
+  /// Throws InputError when a sample lies on a vertex where two boundaries meet.
+  static Arrangement2 build(const Scene2& scene);
+
+  const Box2& domain() const { return domain_; }
+  int halfspace_count() const { return halfspace_count_; }
+  const std::vector<ArrVertex2>& vertices() const { return vertices_; }
+  const std::vector<ArrEdge2>& edges() const { return edges_; }
+  const std::vector<ArrFace2>& faces() const { return faces_; }
+  /// For each scene sample, the edge that holds it (an edge carrying the sample's halfspace). A sample on a
+  /// degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is given one of the two
+  /// edges.
+  const std::vector<int>& sample_edges() const { return sample_edges_; }
+  /// Number of connected components of the edge graph (for Euler's relation V - E + F = 1 + C, F counting the
+  /// unbounded face).
+  int connected_components() const;
+
+  /// Exact point location of a rational point.
+  PointLocation2 locate(const PointQ2& p) const;
+
+ private:
+  struct Impl;
+  std::shared_ptr<const Impl> impl_;
+  Box2 domain_;
+  int halfspace_count_ = 0;
+  std::vector<ArrVertex2> vertices_;
+  std::vector<ArrEdge2> edges_;
+  std::vector<ArrFace2> faces_;
+  std::vector<int> sample_edges_;
+};
+
+}  // namespace hsx

@@ -5,7 +5,7 @@
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/geometry/mesh3.hpp>
 #include "cli/commands.hpp"
-#include "cli/input.hpp"
+#include <hsx/io/input.hpp>
 
 #include <chrono>
 #include <filesystem>

@@ -1,7 +1,7 @@
 // hsx check INPUT: every applicable proposition checker, as a table with witnesses.
 #include <hsx/algorithms/bsh/checks.hpp>
 #include "cli/commands.hpp"
-#include "cli/input.hpp"
+#include <hsx/io/input.hpp>
 #include <hsx/io/files.hpp>
 
 #include <iomanip>

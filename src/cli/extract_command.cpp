@@ -1,7 +1,7 @@
 // hsx extract INPUT --method graphcut|beam|best-first|brute-force: the BSH shape (paper, Sections 3 and 5).
 #include <hsx/algorithms/bsh/extract.hpp>
 #include "cli/commands.hpp"
-#include "cli/input.hpp"
+#include <hsx/io/input.hpp>
 #include <hsx/io/files.hpp>
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/svg.hpp>

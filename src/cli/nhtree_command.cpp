@@ -4,7 +4,7 @@
 #include <hsx/algorithms/nhrep/evaluate.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include "cli/commands.hpp"
-#include "cli/input.hpp"
+#include <hsx/io/input.hpp>
 #include "cli/solid.hpp"
 #include <hsx/complex/boundary_from_arrangement2.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <hsx/algorithms/csg/bhc.hpp>
-#include "cli/input.hpp"
+#include <hsx/io/input.hpp>
 
 #include <string>
 #include <vector>

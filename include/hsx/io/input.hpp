@@ -1,5 +1,5 @@
-// What a command reads: an hsx-scene/1 file (arranged here) or an hsx-complex/1 file (an arrangement computed
-// elsewhere). Dispatch is on the document's "format" field.
+// What a command or a program reads: an hsx-scene/1 file (arranged here) or an hsx-complex/1 file (an arrangement
+// computed elsewhere). Dispatch is on the document's "format" field.
 #pragma once
 
 #include <hsx/complex/from_arrangement2.hpp>
@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-namespace hsx::cli {
+namespace hsx {
 
 struct LoadedInput {
   std::string path;
@@ -24,4 +24,4 @@ struct LoadedInput {
 /// Throws InputError naming the file and field.
 LoadedInput load_input(const std::string& path);
 
-}  // namespace hsx::cli
+}  // namespace hsx

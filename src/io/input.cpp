@@ -1,9 +1,9 @@
-#include "cli/input.hpp"
+#include <hsx/io/input.hpp>
 
 #include <hsx/io/exact_json.hpp>
 #include <hsx/io/scene_json.hpp>
 
-namespace hsx::cli {
+namespace hsx {
 
 PlanarPieces LoadedInput::pieces() const {
   if (arranged) return {&arranged->arrangement.vertices(), &arranged->arrangement.edges()};
@@ -33,4 +33,4 @@ LoadedInput load_input(const std::string& path) {
   return in;
 }
 
-}  // namespace hsx::cli
+}  // namespace hsx

@@ -14,7 +14,9 @@ root="${1:?usage: layering.sh SOURCE_DIR}"
 shift
 layers=(kernel geometry complex algorithms io cli)
 bad=0
-layer_index() { local i; for i in "${!layers[@]}"; do [ "${layers[$i]}" = "$1" ] && { echo "$i"; return; }; done; echo -1; }
+declare -A index_of
+for i in "${!layers[@]}"; do index_of[${layers[$i]}]=$i; done
+include_re='^[[:space:]]*#[[:space:]]*include[[:space:]]*([<"])([^>"]+)[>"]'
 
 check_file() {  # check_file FILE LOGICAL_PATH (relative to root: include/hsx/<layer>/... or src/<layer>/...)
   local file="$1" path="$2" public=0 layer rest
@@ -24,16 +26,16 @@ check_file() {  # check_file FILE LOGICAL_PATH (relative to root: include/hsx/<l
     *) return ;;
   esac
   layer="${rest%%/*}"
-  local li; li=$(layer_index "$layer")
+  local li="${index_of[$layer]:--1}"
   [ "$li" -ge 0 ] || return
   while IFS= read -r line; do
-    local inc quote
-    inc="$(sed -E 's/^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]([^>"]+)[>"].*/\1/' <<<"$line")"
-    quote=0; [[ "$line" =~ \#[[:space:]]*include[[:space:]]*\" ]] && quote=1
+    local inc quote=0
+    [[ "$line" =~ $include_re ]] || continue
+    inc="${BASH_REMATCH[2]}"; [ "${BASH_REMATCH[1]}" = '"' ] && quote=1
     local target="$inc" is_hsx=0
     if [[ "$inc" == hsx/* ]]; then target="${inc#hsx/}"; is_hsx=1; fi
     local tl="${target%%/*}" ti
-    ti=$(layer_index "$tl")
+    ti="${index_of[$tl]:--1}"
     if [ "$ti" -ge 0 ] && [[ "$target" == */* ]]; then
       if [ "$ti" -gt "$li" ]; then
         echo "$path: includes $inc (layer $tl comes after $layer)"; bad=$((bad + 1))

@@ -1,0 +1,75 @@
+// The front door (<hsx/hsx.hpp>) on the bundled scenes: each call agrees with the layer functions it stands for,
+// and bad input is an InputError.
+#include <hsx/hsx.hpp>
+#include <hsx/io/csg_text.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+
+using namespace hsx;
+
+namespace {
+std::string scene_path(const std::string& name) { return std::string(HSX_SOURCE_DIR) + "/data/scenes/" + name; }
+}  // namespace
+
+TEST_CASE("facade: extract_shape is bsh::extract on the complex", "[facade]") {
+  for (const char* name : {"lens.json", "concurrent.json", "tangencies.json"}) {
+    const LoadedInput in = load_input(scene_path(name));
+    bsh::ExtractOptions options;
+    options.method = bsh::Method::BestFirst;
+    const bsh::ExtractResult a = extract_shape(in.complex(), options);
+    const bsh::Problem problem(in.complex());
+    const bsh::ExtractResult b = bsh::extract(problem, options);
+    CHECK(a.labelling == b.labelling);
+    CHECK(compare(a.energy, b.energy) == Order::Equal);
+    // The optimum grades optimal; the empty shape does not unless it is optimal itself.
+    const bsh::Grade g = grade_labelling(in.complex(), a.labelling);
+    CHECK(g.optimal() == a.optimal);
+    const bsh::Grade empty = grade_labelling(in.complex(), bsh::Labelling(in.complex().cells.size(), 0));
+    CHECK(empty.orientation_preserving);
+    CHECK((empty.optimal() == (compare(empty.energy, a.energy) == Order::Equal)));
+  }
+  const LoadedInput in = load_input(scene_path("lens.json"));
+  CHECK_THROWS_AS(grade_labelling(in.complex(), bsh::Labelling(3, 0)), InputError);
+}
+
+TEST_CASE("facade: CSG solids, BHC trees and NH-Rep trees", "[facade]") {
+  const LoadedInput in = load_input(scene_path("lens.json"));
+  const Complex& c = in.complex();
+  const std::vector<char> solid = solid_from_csg(c, "(A | B) & ~C");
+  CHECK(solid == csg::evaluate(*parse_csg_text("(A | B) & ~C", c.halfspace_names), c));
+  CHECK(std::count(solid.begin(), solid.end(), 1) > 0);
+  CHECK_THROWS_AS(solid_from_csg(c, "A & nosuchname"), InputError);
+
+  const csg::BhcResult tree = csg_tree(in, solid);
+  REQUIRE(tree.describable);
+  CHECK(tree.verified);
+  CHECK(csg::evaluate(*tree.tree, c) == solid);
+
+  const nhrep::BuildResult nh = nhrep_tree(*in.arranged, solid);
+  CHECK(nhrep::check_tree(nh).empty());
+  CHECK_THROWS_AS(nhrep_tree(*in.arranged, std::vector<char>(c.cells.size() + 1, 0)), InputError);
+}
+
+TEST_CASE("facade: NH-Rep tree of a bundled mesh", "[facade]") {
+  const std::string dir = std::string(HSX_SOURCE_DIR) + "/data/meshes/";
+  const nhrep::BuildResult r = nhrep_tree_of_mesh(dir + "lprism.obj", dir + "lprism_open_corner.fea");
+  CHECK(nhrep::check_tree(r).empty());
+  CHECK(r.graph.live_patches().size() >= 2);
+  CHECK_THROWS_AS(nhrep_tree_of_mesh(dir + "no-such.obj", dir + "lprism_open_corner.fea"), InputError);
+}
+
+TEST_CASE("facade: the JSON writers round-trip through the readers", "[facade]") {
+  const LoadedInput in = load_input(scene_path("lens.json"));
+  const std::string complex_text = complex_json_text(in);
+  const Complex back = complex_from_json(nlohmann::json::parse(complex_text));
+  CHECK(back.cells.size() == in.complex().cells.size());
+  CHECK(back.patches.size() == in.complex().patches.size());
+  const bsh::ExtractResult shape = extract_shape(in.complex());
+  const std::string result_text = result_json_text(in.complex(), shape, in.pieces());
+  CHECK(read_result_labelling(nlohmann::json::parse(result_text), static_cast<int>(in.complex().cells.size())) ==
+        shape.labelling);
+  CHECK(result_text == result_json_text(in.complex(), shape, in.pieces()));  // no seconds: reproducible bytes
+}

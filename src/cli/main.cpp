@@ -1,10 +1,12 @@
 // hsx: exact-arithmetic research and verification engine for halfspace-based solid modelling.
 #include "cli/commands.hpp"
 #include <hsx/geometry/scene.hpp>
+#include <hsx/io/files.hpp>
 
 #include <iostream>
 
 int main(int argc, char** argv) {
+  hsx::remove_temporary_outputs_on_signals();
   CLI::App app{"hsx: exact arrangements, BSH shapes and halfspace CSG, with certified answers"};
   app.set_version_flag("--version", std::string("hsx ") + HSX_VERSION);
   app.require_subcommand(1);

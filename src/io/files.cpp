@@ -1,51 +1,323 @@
 #include <hsx/io/files.hpp>
 
-#include <hsx/geometry/scene.hpp>
-
-#include <cstdio>
-#include <fstream>
+#include <array>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
 #include <iostream>
-#include <sstream>
+#include <limits.h>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace hsx {
+namespace {
 
-void write_file_atomically(const std::string& path, const std::string& content) {
-  if (path == "-") {
-    std::cout << content;
-    std::cout.flush();
+// ---- temporary files removed on SIGINT / SIGTERM / SIGHUP -------------------------------------------------------
+// A fixed table the signal handler can read without allocating: a slot holds a NUL-terminated path while `live`.
+
+constexpr std::size_t kSlots = 64;
+constexpr std::size_t kPathMax = 4096;
+std::array<std::array<char, kPathMax>, kSlots> g_temp_paths;
+std::array<volatile std::sig_atomic_t, kSlots> g_temp_live{};
+std::mutex g_temp_mutex;
+
+int register_temporary(const std::string& path) {
+  if (path.size() + 1 > kPathMax) return -1;
+  std::lock_guard<std::mutex> lock(g_temp_mutex);
+  for (std::size_t s = 0; s < kSlots; ++s)
+    if (!g_temp_live[s]) {
+      std::memcpy(g_temp_paths[s].data(), path.c_str(), path.size() + 1);
+      g_temp_live[s] = 1;
+      return static_cast<int>(s);
+    }
+  return -1;  // more than kSlots outputs at once: still removed on failure, not on a signal
+}
+
+void unregister_temporary(int slot) {
+  if (slot < 0) return;
+  std::lock_guard<std::mutex> lock(g_temp_mutex);
+  g_temp_live[static_cast<std::size_t>(slot)] = 0;
+}
+
+extern "C" void remove_temporaries_and_die(int signal_number) {
+  for (std::size_t s = 0; s < kSlots; ++s)
+    if (g_temp_live[s]) ::unlink(g_temp_paths[s].data());
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+std::string reason(int error) { return std::strerror(error); }
+
+[[noreturn]] void fail(const std::string& option, const std::string& path, const std::string& why) {
+  throw OutputError("cannot write " + (option.empty() ? "" : option + " ") + "\"" + path + "\": " + why);
+}
+
+// ---- where an output goes ---------------------------------------------------------------------------------------
+
+enum class Kind { Stdout, Descriptor, Direct, Replace };
+
+struct Target {
+  Kind kind = Kind::Replace;
+  std::string path;      ///< as given
+  std::string option;
+  std::string final;     ///< the file replaced (symlinks resolved) or written directly
+  int descriptor = -1;   ///< Kind::Descriptor: /dev/stdout, /dev/stderr, /dev/fd/N, /proc/self/fd/N
+  mode_t mode = 0644;    ///< Kind::Replace: the permission bits the new file gets
+  bool existed = false;
+  std::string identity;  ///< to refuse the same output twice
+  std::string temp;      ///< Kind::Replace
+  int temp_fd = -1;
+  int slot = -1;
+  bool has_content = false;
+  std::string content;
+};
+
+std::string directory_of(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+std::string base_of(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+std::optional<int> descriptor_path(const std::string& path) {
+  if (path == "/dev/stdout") return 1;
+  if (path == "/dev/stderr") return 2;
+  for (const char* prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    const std::string p = prefix;
+    if (path.size() > p.size() && path.compare(0, p.size(), p) == 0 &&
+        path.find_first_not_of("0123456789", p.size()) == std::string::npos && path.size() - p.size() <= 6)
+      return std::stoi(path.substr(p.size()));
+  }
+  return std::nullopt;
+}
+
+std::string real_path(const std::string& path) {
+  char buffer[PATH_MAX];
+  if (!::realpath(path.c_str(), buffer)) return {};
+  return buffer;
+}
+
+/// Decides the kind of output and checks it can be written; for Kind::Replace creates the temporary file.
+void resolve(Target& t) {
+  if (t.path.empty()) fail(t.option, t.path, "an empty path");
+  if (t.path == "-") {
+    t.kind = Kind::Stdout;
+    t.identity = "fd:1";
     return;
   }
-  const std::string temp = path + ".tmp-hsx-" + std::to_string(::getpid());
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write \"" + path + "\": cannot create a file there");
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) {
-      std::remove(temp.c_str());
-      throw std::runtime_error("cannot write \"" + path + "\": write failed");
-    }
+  if (const std::optional<int> fd = descriptor_path(t.path)) {
+    if (::fcntl(*fd, F_GETFD) == -1) fail(t.option, t.path, "file descriptor " + std::to_string(*fd) + " is not open");
+    t.kind = Kind::Descriptor;
+    t.descriptor = *fd;
+    t.identity = "fd:" + std::to_string(*fd);
+    return;
   }
-  if (std::rename(temp.c_str(), path.c_str()) != 0) {
-    std::remove(temp.c_str());
-    throw std::runtime_error("cannot write \"" + path + "\": rename failed");
+  struct stat link_info {};
+  t.final = t.path;
+  if (::lstat(t.path.c_str(), &link_info) == 0 && S_ISLNK(link_info.st_mode)) {
+    t.final = real_path(t.path);
+    if (t.final.empty()) fail(t.option, t.path, "a symbolic link to a missing file (" + reason(errno) + ")");
+  }
+  struct stat info {};
+  if (::stat(t.final.c_str(), &info) == 0) {
+    t.existed = true;
+    t.identity = "ino:" + std::to_string(info.st_dev) + ":" + std::to_string(info.st_ino);
+    if (S_ISDIR(info.st_mode)) fail(t.option, t.path, "it is a directory");
+    if (S_ISSOCK(info.st_mode)) fail(t.option, t.path, "it is a socket");
+    if (S_ISCHR(info.st_mode) || S_ISBLK(info.st_mode) || S_ISFIFO(info.st_mode)) {
+      t.kind = Kind::Direct;  // written in place at commit: never replaced by a regular file
+      if (::access(t.final.c_str(), W_OK) != 0) fail(t.option, t.path, reason(errno));
+      return;
+    }
+    if (!S_ISREG(info.st_mode)) fail(t.option, t.path, "not a regular file");
+    t.mode = info.st_mode & 07777;
+  } else if (errno != ENOENT) {
+    fail(t.option, t.path, reason(errno));
+  }
+  const std::string folder = directory_of(t.final);
+  struct stat folder_info {};
+  if (::stat(folder.c_str(), &folder_info) != 0) fail(t.option, t.path, "no folder \"" + folder + "\" (" + reason(errno) + ")");
+  if (!S_ISDIR(folder_info.st_mode)) fail(t.option, t.path, "\"" + folder + "\" is not a folder");
+  if (!t.existed) t.identity = "new:" + real_path(folder) + "/" + base_of(t.final);
+  t.kind = Kind::Replace;
+  static long counter = 0;
+  t.temp = t.final + ".tmp-hsx-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  t.slot = register_temporary(t.temp);
+  t.temp_fd = ::open(t.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (t.temp_fd < 0) {
+    const int error = errno;
+    unregister_temporary(t.slot);
+    t.slot = -1;
+    fail(t.option, t.path, "cannot create a file in \"" + folder + "\" (" + reason(error) + ")");
   }
 }
 
+/// Writes all of `content` to `fd`; returns 0 or the errno of the failure.
+int write_all(int fd, const std::string& content) {
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+void discard_temporary(Target& t) {
+  if (t.temp_fd >= 0) ::close(t.temp_fd);
+  t.temp_fd = -1;
+  if (!t.temp.empty()) ::unlink(t.temp.c_str());
+  unregister_temporary(t.slot);
+  t.slot = -1;
+  t.temp.clear();
+}
+
+}  // namespace
+
+struct OutputFiles::Impl {
+  std::vector<Target> targets;
+  std::map<std::string, std::size_t> by_path;
+  std::map<std::string, std::string> identities;  ///< identity -> option that expected it
+};
+
+OutputFiles::OutputFiles() : impl_(std::make_unique<Impl>()) {}
+
+OutputFiles::~OutputFiles() {
+  for (Target& t : impl_->targets) discard_temporary(t);
+}
+
+void OutputFiles::expect(const std::string& path, const std::string& option) {
+  Target t;
+  t.path = path;
+  t.option = option;
+  resolve(t);
+  const auto same = impl_->identities.find(t.identity);
+  if (impl_->by_path.count(path) || same != impl_->identities.end()) {
+    discard_temporary(t);
+    fail(option, path, "the same file is already the output of " +
+                           (same != impl_->identities.end() ? same->second : std::string("another option")));
+  }
+  impl_->identities[t.identity] = option;
+  impl_->by_path[path] = impl_->targets.size();
+  impl_->targets.push_back(std::move(t));
+}
+
+void OutputFiles::put(const std::string& path, std::string content) {
+  const auto it = impl_->by_path.find(path);
+  if (it == impl_->by_path.end()) throw std::logic_error("OutputFiles::put: \"" + path + "\" was not expected");
+  Target& t = impl_->targets[it->second];
+  t.content = std::move(content);
+  t.has_content = true;
+}
+
+void OutputFiles::commit() {
+  std::vector<Target>& targets = impl_->targets;
+  const auto cleanup_and_fail = [&](const Target& t, const std::string& why) {
+    const std::string option = t.option, path = t.path;
+    for (Target& u : targets) discard_temporary(u);
+    fail(option, path, why);
+  };
+  // 1. Every regular file in full to its temporary file, and every device or FIFO: the steps that can fail.
+  for (Target& t : targets) {
+    if (!t.has_content) continue;
+    if (t.kind == Kind::Replace) {
+      if (const int error = write_all(t.temp_fd, t.content)) cleanup_and_fail(t, reason(error));
+      if (::fchmod(t.temp_fd, t.mode) != 0 || ::close(t.temp_fd) != 0) {
+        t.temp_fd = -1;
+        cleanup_and_fail(t, reason(errno));
+      }
+      t.temp_fd = -1;
+    } else if (t.kind == Kind::Direct) {
+      const int fd = ::open(t.final.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
+      if (fd < 0) cleanup_and_fail(t, reason(errno));
+      const int error = write_all(fd, t.content);
+      ::close(fd);
+      if (error) cleanup_and_fail(t, reason(error));
+    } else if (t.kind == Kind::Descriptor) {
+      if (t.descriptor == 1) std::cout.flush();
+      if (const int error = write_all(t.descriptor, t.content)) cleanup_and_fail(t, reason(error));
+    } else {
+      std::cout << t.content;
+      std::cout.flush();
+      if (!std::cout) cleanup_and_fail(t, "standard output failed");
+    }
+  }
+  // 2. The renames.
+  for (Target& t : targets) {
+    if (t.kind != Kind::Replace) continue;
+    if (!t.has_content) {
+      discard_temporary(t);
+      continue;
+    }
+    if (::rename(t.temp.c_str(), t.final.c_str()) != 0) cleanup_and_fail(t, "rename failed (" + reason(errno) + ")");
+    unregister_temporary(t.slot);
+    t.slot = -1;
+    t.temp.clear();
+  }
+  targets.clear();
+  impl_->by_path.clear();
+  impl_->identities.clear();
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  OutputFiles out;
+  out.expect(path, "");
+  out.put(path, content);
+  out.commit();
+}
+
+void remove_temporary_outputs_on_signals() {
+  struct sigaction action {};
+  action.sa_handler = remove_temporaries_and_die;
+  sigemptyset(&action.sa_mask);
+  for (int s : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(s, &action, nullptr);
+}
+
 std::string read_file(const std::string& path, std::size_t max_bytes) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read \"" + path + "\": no such file or not readable");
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw InputError("cannot read \"" + path + "\": not a regular file");
-  if (static_cast<std::size_t>(size) > max_bytes)
-    throw InputError("\"" + path + "\" is too large (" + std::to_string(size) + " bytes; the limit is " +
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) throw InputError("cannot read \"" + path + "\": " + reason(errno));
+  if (S_ISDIR(info.st_mode)) throw InputError("cannot read \"" + path + "\": it is a directory");
+  if (!S_ISREG(info.st_mode))
+    throw InputError("cannot read \"" + path + "\": not a regular file (a FIFO, device or socket)");
+  if (static_cast<std::size_t>(info.st_size) > max_bytes)
+    throw InputError("\"" + path + "\" is too large (" + std::to_string(info.st_size) + " bytes; the limit is " +
                      std::to_string(max_bytes) + ")");
-  in.seekg(0);
-  std::string content(static_cast<std::size_t>(size), '\0');
-  in.read(content.data(), size);
-  if (!in) throw InputError("cannot read \"" + path + "\"");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) throw InputError("cannot read \"" + path + "\": " + reason(errno));
+  std::string content;
+  content.reserve(static_cast<std::size_t>(info.st_size));
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const int error = errno;
+      ::close(fd);
+      throw InputError("cannot read \"" + path + "\": " + reason(error));
+    }
+    if (n == 0) break;
+    content.append(buffer, static_cast<std::size_t>(n));
+    if (content.size() > max_bytes) {
+      ::close(fd);
+      throw InputError("\"" + path + "\" is too large (the limit is " + std::to_string(max_bytes) + " bytes)");
+    }
+  }
+  ::close(fd);
   return content;
 }
 

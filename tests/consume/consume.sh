@@ -49,7 +49,7 @@ subdirectory)
   launcher=(); command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
   cmake -S "$src/tests/consume/subdirectory" -B "$work/sub" "${generator[@]}" "${launcher[@]}" \
         -DHSX_SOURCE_DIR="$src" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$work/sub" -j2 >/dev/null
+  cmake --build "$work/sub" -j2 >"$work/build.log" 2>&1 || { tail -40 "$work/build.log"; fail "build through add_subdirectory"; }
   out="$("$work/sub/consumer" "$src/data/scenes/lens.json")"
   echo "$out"; grep -q "cells; energy" <<<"$out" || fail "consumer output"
   ;;

@@ -1,16 +1,74 @@
-// File output without half-written results: content goes to a temporary file beside the target, which is then
-// renamed over it, so a failure leaves either the old file or nothing.
+// Reading input files and writing outputs without harm.
+//
+// The output policy (owned here):
+// - "-" is standard output, written directly.
+// - A regular file, or a path that does not exist yet, is replaced atomically: the content goes to a temporary file
+//   beside it ("PATH.tmp-hsx-PID-N"), which is then renamed over it, so a reader sees the old file or the new one,
+//   never half of one. An existing file keeps its permission bits.
+// - A symbolic link is followed: its final target is replaced as above (the link itself stays a link). A link whose
+//   target does not exist is refused.
+// - A character or block device (/dev/null, /dev/stdout, a terminal) or a FIFO is written directly, never
+//   replaced; a directory or a socket is refused.
+// - Every failure is the user's (a missing folder, no permission, a read-only place, a full disk): OutputError, an
+//   InputError, so the program exits 2 naming the path and the reason.
+// - A run's temporary files are removed when it fails, and when it is ended by SIGINT, SIGTERM or SIGHUP.
 #pragma once
 
+#include <hsx/geometry/scene.hpp>  // InputError
+
+#include <cstddef>
+#include <memory>
 #include <string>
 
 namespace hsx {
 
-/// Writes `content` to `path` atomically ("-" writes to standard output). Throws std::runtime_error naming the
-/// path when the file cannot be written.
+/// An output that cannot be written; the message names the path and the reason.
+class OutputError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+/// Writes `content` to `path` under the policy above. Throws OutputError.
 void write_file_atomically(const std::string& path, const std::string& content);
 
-/// Reads a whole file; throws InputError naming the path when it cannot be read or exceeds `max_bytes`.
+/// The outputs of one run, written all or none (as far as a file system allows: every regular file is first
+/// written in full to its temporary file and every device written, and only then are the temporary files renamed,
+/// so a full disk, a missing folder or a failing device leaves no output behind).
+///
+///   OutputFiles out;
+///   out.expect(o.json_path, "--json");   // before computing: a bad path fails now, not after an hour
+///   ... compute ...
+///   out.put(o.json_path, text);
+///   out.commit();                        // or let `out` go out of scope: nothing is written
+class OutputFiles {
+ public:
+  OutputFiles();
+  ~OutputFiles();  ///< removes the temporary files of a run that did not commit
+  OutputFiles(const OutputFiles&) = delete;
+  OutputFiles& operator=(const OutputFiles&) = delete;
+
+  /// Checks now that `path` can be written under the policy, and reserves it: for a regular file, its temporary
+  /// file is created at once. `option` names the path in messages ("--json"). An empty path, or a path expected
+  /// twice (also through a different spelling or a link), is refused. Throws OutputError.
+  void expect(const std::string& path, const std::string& option);
+  /// The content for an expected path (std::logic_error when it was not expected: a bug).
+  void put(const std::string& path, std::string content);
+  /// Writes everything put (paths expected but never put are left alone). Throws OutputError and leaves no new
+  /// output behind on failure.
+  void commit();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Makes SIGINT, SIGTERM and SIGHUP remove the temporary files of outputs not yet committed, then end the process
+/// as the signal would. For programs (the hsx CLI calls it first); a library user with signal handlers of its own
+/// need not call it (temporary files are still removed on every failure and by ~OutputFiles).
+void remove_temporary_outputs_on_signals();
+
+/// Reads a whole regular file; throws InputError naming the path when it does not exist, is a directory, a FIFO
+/// or a device (never opened, so a FIFO cannot block), cannot be read, or exceeds `max_bytes`.
 std::string read_file(const std::string& path, std::size_t max_bytes = std::size_t(256) << 20);
 
 }  // namespace hsx

@@ -1,0 +1,175 @@
+// The output policy of io/files.hpp, on real files in a temporary folder: regular files replaced atomically (mode
+// kept), links followed, devices and FIFOs written in place, directories and missing folders refused, a run's
+// outputs all or none, temporary files gone after a failure or a SIGTERM; reading never blocks on a FIFO.
+#include <hsx/io/files.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <dirent.h>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+using namespace hsx;
+
+namespace {
+
+struct TempDir {
+  std::string path;
+  TempDir() {
+    char name[] = "/tmp/hsx-files-XXXXXX";
+    path = ::mkdtemp(name);
+  }
+  ~TempDir() { std::system(("rm -rf '" + path + "'").c_str()); }
+  std::string operator/(const std::string& name) const { return path + "/" + name; }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    DIR* d = ::opendir(path.c_str());
+    while (dirent* e = ::readdir(d))
+      if (std::string(e->d_name) != "." && std::string(e->d_name) != "..") names.push_back(e->d_name);
+    ::closedir(d);
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+void spit(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+mode_t mode_of(const std::string& path) {
+  struct stat st {};
+  ::lstat(path.c_str(), &st);
+  return st.st_mode;
+}
+
+}  // namespace
+
+TEST_CASE("files: a regular file is replaced, keeping its mode; a new one is created", "[files]") {
+  TempDir dir;
+  spit(dir / "a.json", "old");
+  ::chmod((dir / "a.json").c_str(), 0640);
+  write_file_atomically(dir / "a.json", "new");
+  CHECK(slurp(dir / "a.json") == "new");
+  CHECK((mode_of(dir / "a.json") & 07777) == 0640);
+  write_file_atomically(dir / "b.json", "fresh");
+  CHECK(slurp(dir / "b.json") == "fresh");
+  CHECK(dir.entries() == std::vector<std::string>{"a.json", "b.json"});
+}
+
+TEST_CASE("files: a symbolic link is followed, and stays a link", "[files]") {
+  TempDir dir;
+  spit(dir / "t.json", "keep");
+  REQUIRE(::symlink("t.json", (dir / "l.json").c_str()) == 0);
+  write_file_atomically(dir / "l.json", "through the link");
+  CHECK(S_ISLNK(mode_of(dir / "l.json")));
+  CHECK(slurp(dir / "t.json") == "through the link");
+  REQUIRE(::symlink("missing.json", (dir / "dangling.json").c_str()) == 0);
+  CHECK_THROWS_WITH(write_file_atomically(dir / "dangling.json", "x"), Catch::Contains("link to a missing file"));
+}
+
+TEST_CASE("files: devices and FIFOs are written in place, never replaced", "[files]") {
+  write_file_atomically("/dev/null", "gone");
+  CHECK(S_ISCHR(mode_of("/dev/null")));
+  CHECK_THROWS_AS(write_file_atomically("/dev/full", "x"), OutputError);
+  CHECK(S_ISCHR(mode_of("/dev/full")));
+  TempDir dir;
+  REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);
+  const pid_t reader = ::fork();
+  if (reader == 0) {  // a reader, so that opening the FIFO for writing does not block
+    std::ifstream in(dir / "fifo");
+    std::string line;
+    std::getline(in, line);
+    ::_exit(line == "through the fifo" ? 0 : 1);
+  }
+  write_file_atomically(dir / "fifo", "through the fifo\n");
+  int status = 0;
+  ::waitpid(reader, &status, 0);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 0));
+  CHECK(S_ISFIFO(mode_of(dir / "fifo")));
+}
+
+TEST_CASE("files: what cannot be written is an OutputError naming the path", "[files]") {
+  TempDir dir;
+  ::mkdir((dir / "d").c_str(), 0700);
+  CHECK_THROWS_WITH(write_file_atomically(dir / "d", "x"), Catch::Contains("is a directory") && Catch::Contains("/d\""));
+  CHECK_THROWS_WITH(write_file_atomically(dir / "no/such/folder.json", "x"), Catch::Contains("no folder"));
+  CHECK_THROWS_WITH(write_file_atomically("", "x"), Catch::Contains("empty path"));
+  CHECK_THROWS_AS(write_file_atomically("/proc/out.svg", "x"), OutputError);
+  CHECK(dir.entries() == std::vector<std::string>{"d"});
+}
+
+TEST_CASE("files: a run's outputs are written all or none", "[files]") {
+  TempDir dir;
+  spit(dir / "old.json", "old");
+  {
+    OutputFiles out;
+    out.expect(dir / "old.json", "--json");
+    out.expect(dir / "new.svg", "--svg");
+    CHECK_THROWS_WITH(out.expect(dir / "old.json", "--other"), Catch::Contains("already the output of --json"));
+    out.put(dir / "old.json", "replaced");
+    out.put(dir / "new.svg", "<svg/>");
+    // no commit: the run failed after computing
+  }
+  CHECK(dir.entries() == std::vector<std::string>{"old.json"});
+  CHECK(slurp(dir / "old.json") == "old");
+  {
+    OutputFiles out;
+    out.expect(dir / "old.json", "--json");
+    out.expect("/dev/full", "--svg");  // fails at commit, after old.json's temporary file is written
+    out.put(dir / "old.json", "replaced");
+    out.put("/dev/full", "<svg/>");
+    CHECK_THROWS_WITH(out.commit(), Catch::Contains("--svg") && Catch::Contains("/dev/full"));
+  }
+  CHECK(dir.entries() == std::vector<std::string>{"old.json"});
+  CHECK(slurp(dir / "old.json") == "old");
+  OutputFiles out;
+  out.expect(dir / "old.json", "--json");
+  out.expect(dir / "unused.txt", "--conf");  // expected, never put: left alone
+  out.put(dir / "old.json", "replaced");
+  out.commit();
+  CHECK(slurp(dir / "old.json") == "replaced");
+  CHECK(dir.entries() == std::vector<std::string>{"old.json"});
+}
+
+TEST_CASE("files: SIGTERM removes the temporary files of outputs not yet committed", "[files]") {
+  TempDir dir;
+  const pid_t child = ::fork();
+  if (child == 0) {
+    remove_temporary_outputs_on_signals();
+    OutputFiles out;
+    out.expect(dir / "big.json", "--json");
+    out.put(dir / "big.json", std::string(1 << 20, 'x'));
+    std::raise(SIGTERM);
+    ::_exit(0);  // not reached
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGTERM);
+  CHECK(dir.entries().empty());
+}
+
+TEST_CASE("files: reading refuses directories and FIFOs without blocking", "[files]") {
+  TempDir dir;
+  ::mkdir((dir / "d").c_str(), 0700);
+  CHECK_THROWS_WITH(read_file(dir / "d"), Catch::Contains("is a directory"));
+  REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);
+  CHECK_THROWS_WITH(read_file(dir / "fifo"), Catch::Contains("not a regular file"));
+  CHECK_THROWS_WITH(read_file(dir / "missing"), Catch::Contains("No such file"));
+  spit(dir / "big", std::string(100, 'x'));
+  CHECK_THROWS_WITH(read_file(dir / "big", 99), Catch::Contains("too large"));
+  CHECK(read_file(dir / "big", 100).size() == 100);
+}

@@ -3,6 +3,7 @@
 #include <hsx/geometry/scene.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -36,6 +37,8 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 std::string read_file(const std::string& path, std::size_t max_bytes) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError("cannot read \"" + path + "\": no such file or not readable");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError("cannot read \"" + path + "\": a directory");
   in.seekg(0, std::ios::end);
   const std::streamoff size = in.tellg();
   if (size < 0) throw InputError("cannot read \"" + path + "\": not a regular file");

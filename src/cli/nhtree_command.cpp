@@ -10,7 +10,6 @@
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/geometry/mesh3.hpp>
 #include <hsx/io/input.hpp>
-#include <hsx/io/json_values.hpp>
 #include <hsx/io/files.hpp>
 #include <hsx/io/nhrep_json.hpp>
 #include <hsx/io/nhrep_mesh.hpp>
@@ -284,14 +283,7 @@ int run_planar(const NhtreeOptions& o) {
   std::ostream& out = std::cout;
   print_graph(r, t.leaf_names, out);
   print_run(r, out);
-  // Evaluate on the whole plane: the scene in a domain holding every vertex, so that every sign vector of the
-  // plane is some cell's (the tree's leaves name halfspaces, which are the same there).
-  const Scene2 whole_scene = whole_plane_scene(*in.scene);
-  const bool same_domain = whole_scene.domain.min == in.scene->domain.min && whole_scene.domain.max == in.scene->domain.max;
-  std::optional<Arranged2> larger;  // only when the scene's own domain hides some vertex
-  if (!same_domain) larger = arrange(whole_scene);
-  const nhrep::PlanarEvaluation e = nhrep::evaluate_planar_tree(
-      t, larger ? *larger : arranged, larger ? carry_to_whole_plane(arranged, solid.cells, *larger) : solid.cells);
+  const nhrep::PlanarEvaluation e = nhrep::evaluate_on_whole_plane(t, *in.scene, arranged, solid.cells);
   print_evaluation(e, out);
   const std::vector<std::vector<int>> groups = groups_of(o, r);
   const int status = finish(o, r, groups, e.evaluation.violations, out);

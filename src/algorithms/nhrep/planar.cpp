@@ -1,6 +1,7 @@
 #include <hsx/algorithms/nhrep/planar.hpp>
 
 #include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/complex/whole_plane.hpp>
 #include "geometry/planar_corners.hpp"
 
 #include <algorithm>
@@ -92,6 +93,17 @@ PlanarEvaluation evaluate_planar_tree(const PlanarTree& tree, const Arranged2& w
   result.added = witnesses(whole.complex, result.evaluation.wrong_outside);
   result.diagnosis = diagnose(tree, result.evaluation);
   return result;
+}
+
+PlanarEvaluation evaluate_on_whole_plane(const PlanarTree& tree, const Scene2& scene, const Arranged2& arranged,
+                                         const std::vector<char>& solid_cells) {
+  if (solid_cells.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("evaluate_on_whole_plane: one flag per cell expected");
+  const Scene2 whole_scene = whole_plane_scene(scene);
+  if (whole_scene.domain.min == scene.domain.min && whole_scene.domain.max == scene.domain.max)
+    return evaluate_planar_tree(tree, arranged, solid_cells);  // the scene's own domain hides no vertex
+  const Arranged2 whole = arrange(whole_scene);
+  return evaluate_planar_tree(tree, whole, carry_to_whole_plane(arranged, solid_cells, whole));
 }
 
 }  // namespace hsx::nhrep

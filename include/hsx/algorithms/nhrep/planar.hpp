@@ -6,8 +6,9 @@
 // Conventions (owned here):
 // - A solid is one flag per cell of the arrangement's complex (1 = inside); it must be non-empty and bounded inside
 //   the domain (no solid cell is outer), as NH-Rep needs a closed boundary.
-// - Evaluation must see every sign vector of the plane: pass the arrangement of the same scene in a domain that
-//   holds every vertex (evaluate.hpp), with the solid carried over to it; it may be the same arrangement.
+// - Evaluation must see every sign vector of the plane (evaluate.hpp): evaluate_on_whole_plane arranges the scene
+//   in a domain holding every vertex when its own domain does not (complex/whole_plane.hpp) and carries the solid
+//   there; evaluate_planar_tree takes such an arrangement ready-made.
 // - Diagnosis of a tree that fails although the solid is describable by its natural halfspaces: with holes and
 //   without BuildOptions::nest_holes, Section 5.2's initialisation united a hole's boundary where it should be
 //   intersected (proofs/nhrep.md, Finding 5.2); otherwise NH-Rep needs extended surfaces (its Appendix B).
@@ -77,5 +78,14 @@ struct PlanarEvaluation {
 /// Throws std::invalid_argument when `whole_solid` has the wrong size.
 PlanarEvaluation evaluate_planar_tree(const PlanarTree& tree, const Arranged2& whole,
                                       const std::vector<char>& whole_solid);
+
+/// Evaluates `tree` exactly with natural halfspaces on the whole plane of `scene`.
+/// @param[in] tree         build_planar_tree(arranged, solid_cells, ...)'s result
+/// @param[in] scene        the validated scene `arranged` was built from
+/// @param[in] arranged     as given to build_planar_tree
+/// @param[in] solid_cells  as given to build_planar_tree
+/// Throws std::invalid_argument when `solid_cells` has the wrong size.
+PlanarEvaluation evaluate_on_whole_plane(const PlanarTree& tree, const Scene2& scene, const Arranged2& arranged,
+                                         const std::vector<char>& solid_cells);
 
 }  // namespace hsx::nhrep

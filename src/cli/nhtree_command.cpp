@@ -115,13 +115,17 @@ auto run_algorithm1(const NhtreeOptions& o, Build build) {
 void print_tree(const nhrep::BuildResult& r, std::ostream& out) {
   const std::vector<int> number = nhtree_conf_ids(r.graph);
   std::string mapping;
-  for (int p : r.graph.live_patches())
+  bool some_unchanged = false;
+  for (int p : r.graph.live_patches()) {
     if (number[static_cast<std::size_t>(p)] != p)
       mapping += " " + std::to_string(p) + "->" + std::to_string(number[static_cast<std::size_t>(p)]);
+    else
+      some_unchanged = true;
+  }
   if (!mapping.empty())
     out << "patch numbers: the tree below and --conf use NH-Rep's (live patches by lowest "
         << (r.graph.surface.dimension == 3 ? "triangle" : "edge") << "); the patch ids above and in --json map"
-        << mapping << " (the others are unchanged)\n";
+        << mapping << (some_unchanged ? " (the others are unchanged)" : "") << "\n";
   out << "tree: " << nhtree_text(nhrep::relabel_tree(r.tree, number)) << "\n";
 }
 
@@ -322,7 +326,8 @@ void add_nhtree_command(CLI::App& app) {
   cmd->add_option("--shape", o->solid.shape_path, "2D: the solid as an hsx-result/1 file computed from INPUT");
   cmd->add_option("--csg", o->solid.csg, "2D: the solid as a CSG expression over INPUT's halfspaces");
   cmd->add_option("--json", o->json_path, "write the tree, patch graph, decompositions and steps (hsx-nhtree/1)");
-  cmd->add_option("--conf", o->conf_path, "write the tree in NH-Rep's .conf form");
+  cmd->add_option("--conf", o->conf_path,
+                  "write the tree in NH-Rep's .conf form (its patch numbers are the printed tree's)");
   cmd->add_option("--svg", o->svg_path, "2D: draw the patches coloured by tree node");
   cmd->add_option("--decomposed", o->decomposed_prefix,
                   "mesh: write the decomposed mesh as PREFIX.obj, PREFIX.fea and PREFIX.face-patch.txt (NH-Rep's "

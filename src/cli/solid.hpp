@@ -3,6 +3,7 @@
 #pragma once
 
 #include <hsx/algorithms/csg/bhc.hpp>
+#include <hsx/complex/whole_plane.hpp>
 #include <hsx/io/input.hpp>
 
 #include <string>
@@ -45,14 +46,8 @@ struct SeparatedSolid {
 SeparatedSolid add_separators(const Scene2& scene, const Arranged2& arranged, const std::vector<char>& solid,
                               int max_separators = 8);
 
-/// Whole-plane evaluation: a cell-based check only sees sign vectors that some cell has. This is the scene
-/// (samples dropped) in a domain that contains its own domain and the one hsx would choose (choose_domain: every
-/// vertex of the arrangement strictly inside), where every sign vector of the plane is some cell's.
-Scene2 whole_plane_scene(const Scene2& scene);
-
-/// A bounded solid of `from` carried to `to`, the arrangement of the same scene in a larger domain: inner cells of
-/// `from` are cells of `to` unchanged (only the box edges moved), found by exact point location; any other cell of
-/// `to` is outside. Throws std::logic_error if the counts do not match (a solid touching `from`'s box).
-std::vector<char> carry_to_whole_plane(const Arranged2& from, const std::vector<char>& solid, const Arranged2& to);
+/// Whole-plane evaluation (complex/whole_plane.hpp; moved to the library).
+using hsx::carry_to_whole_plane;
+using hsx::whole_plane_scene;
 
 }  // namespace hsx::cli

@@ -1,9 +1,13 @@
 #include <hsx/io/nhrep_json.hpp>
 
+#include <hsx/io/files.hpp>
+#include <hsx/io/json_values.hpp>
+
 #include <algorithm>
-#include <climits>
-#include <numeric>
 #include <cctype>
+#include <map>
+#include <optional>
+#include <set>
 #include <sstream>
 
 namespace hsx {
@@ -18,23 +22,13 @@ nlohmann::json node_json(const nhrep::Tree& tree, int node) {
   return {{"op", nhrep::op_name(n.op)}, {"leaves", n.leaves}, {"children", children}};
 }
 
-void conf_list(const nhrep::Tree& tree, int node, const std::vector<int>& conf_id, std::string& out) {
+/// A tree already in NH-Rep numbering and order (relabel_tree): leaves, then children, each list closed by ','.
+void conf_list(const nhrep::Tree& tree, int node, std::string& out) {
   const nhrep::TreeNode& n = tree.nodes[at(node)];
-  std::vector<int> leaves;
-  for (int leaf : n.leaves) leaves.push_back(conf_id[at(leaf)]);
-  std::sort(leaves.begin(), leaves.end());
   out += '[';
-  for (int leaf : leaves) out += std::to_string(leaf) + ',';
-  // children in order of their lowest leaf, as NH-Rep lists them
-  std::vector<std::pair<int, int>> children;
+  for (int leaf : n.leaves) out += std::to_string(leaf) + ',';
   for (int child : n.children) {
-    int lowest = INT_MAX;
-    for (int leaf : tree.subtree_leaves(child)) lowest = std::min(lowest, conf_id[at(leaf)]);
-    children.emplace_back(lowest, child);
-  }
-  std::sort(children.begin(), children.end());
-  for (const auto& [lowest, child] : children) {
-    conf_list(tree, child, conf_id, out);
+    conf_list(tree, child, out);
     out += ',';
   }
   out += ']';
@@ -61,6 +55,9 @@ class ConfParser {
  public:
   ConfParser(const std::string& text, const std::string& source) : text_(text), source_(source) {}
 
+  /// After parse(): per leaf value, the line it is on.
+  const std::map<int, long>& leaf_lines() const { return leaf_line_; }
+
   nhrep::Tree parse() {
     expect_word("csg");
     expect('{');
@@ -80,6 +77,7 @@ class ConfParser {
     expect('}');
     skip();
     if (pos_ != text_.size()) fail("unexpected text after the closing brace");
+    number_leaf_lines();
     nhrep::Tree tree;
     tree.root = build(tree, root, flag == '1' ? nhrep::Op::Max : nhrep::Op::Min);
     return tree;
@@ -121,10 +119,11 @@ class ConfParser {
       if (c == '[') {
         item.list = list();
       } else if (c >= '0' && c <= '9') {
+        leaf_pos_.push_back(pos_);
         long value = 0;
         while (pos_ < text_.size() && text_[pos_] >= '0' && text_[pos_] <= '9') {
           value = value * 10 + (text_[pos_++] - '0');
-          if (value > 100000000) fail("patch id too large");
+          if (value > kMaxPatchId) fail("patch id too large (the limit is " + std::to_string(kMaxPatchId) + ")");
         }
         item.leaf = static_cast<int>(value);
       } else {
@@ -136,6 +135,21 @@ class ConfParser {
     }
     --depth_;
     return items;
+  }
+
+  /// Lines of the leaves (one pass over the text), and no patch id twice.
+  void number_leaf_lines() {
+    long line = 1;
+    std::size_t scanned = 0;
+    for (std::size_t pos : leaf_pos_) {
+      line += std::count(text_.begin() + static_cast<long>(scanned), text_.begin() + static_cast<long>(pos), '\n');
+      scanned = pos;
+      const int value = std::stoi(text_.substr(pos, text_.find_first_not_of("0123456789", pos) - pos));
+      const auto [it, fresh] = leaf_line_.emplace(value, line);
+      if (!fresh)
+        throw InputError(source_ + ":" + std::to_string(line) + ": patch id " + std::to_string(value) +
+                         " appears twice (first on line " + std::to_string(it->second) + ")");
+    }
   }
 
   void skip() {
@@ -161,12 +175,90 @@ class ConfParser {
   const std::string& source_;
   std::size_t pos_ = 0;
   int depth_ = 0;
+  std::vector<std::size_t> leaf_pos_;
+  std::map<int, long> leaf_line_;
 };
+
+[[noreturn]] void empty_file(const std::string& source) { throw InputError(source + ":1: empty file"); }
+
+bool blank(const std::string& text) {
+  return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
+}
+
+/// One `edge: A-B : T` line (T = 0 smooth, 1 convex, 2 concave); nullopt for blank and comment lines.
+std::optional<nhrep::ReferenceEdge> graph_line(const std::string& line, const std::string& where) {
+  if (blank(line) || line[line.find_first_not_of(" \t")] == '#') return std::nullopt;
+  long a = -1, b = -1, t = -1;
+  char dash = 0, colon = 0;
+  std::istringstream fields(line);
+  std::string word, rest;
+  if (!(fields >> word >> a >> dash >> b >> colon >> t) || (fields >> rest) || word != "edge:" || dash != '-' ||
+      colon != ':')
+    throw InputError(where + ": expected 'edge: A-B : T', got '" + line + "'");
+  if (t < 0 || t > 2) throw InputError(where + ": edge type " + std::to_string(t) + " is not 0, 1 or 2");
+  if (a < 0 || b < 0 || a > kMaxPatchId || b > kMaxPatchId || a == b)
+    throw InputError(where + ": patch ids must be distinct and in 0.." + std::to_string(kMaxPatchId));
+  const FeatureType types[] = {FeatureType::Smooth, FeatureType::Convex, FeatureType::Concave};
+  return nhrep::ReferenceEdge{static_cast<int>(std::min(a, b)), static_cast<int>(std::max(a, b)), types[t]};
+}
 
 }  // namespace
 
 nhrep::Tree read_nhtree_conf(const std::string& text, const std::string& source) {
+  if (blank(text)) empty_file(source);
   return ConfParser(text, source).parse();
+}
+
+std::vector<nhrep::ReferenceEdge> read_nhrep_patch_graph(const std::string& text, const std::string& source) {
+  if (blank(text)) empty_file(source);
+  std::vector<nhrep::ReferenceEdge> edges;
+  std::map<std::pair<int, int>, long> first_line;
+  std::istringstream in(text);
+  std::string line;
+  long number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const std::string where = source + ":" + std::to_string(number);
+    const std::optional<nhrep::ReferenceEdge> edge = graph_line(line, where);
+    if (!edge) continue;
+    const auto [it, fresh] = first_line.emplace(std::make_pair(edge->a, edge->b), number);
+    if (!fresh)
+      throw InputError(where + ": edge " + std::to_string(edge->a) + "-" + std::to_string(edge->b) +
+                       " listed twice (first on line " + std::to_string(it->second) + ")");
+    edges.push_back(*edge);
+  }
+  return edges;
+}
+
+NhrepReference read_nhrep_reference(const NhrepReferenceFiles& files) {
+  if (!files.face_patch.empty() && files.tree.empty())
+    throw InputError("the reference face-patch file " + files.face_patch + " needs the reference tree (.conf)");
+  NhrepReference r;
+  r.files = files;
+  if (!files.graph.empty()) r.graph = read_nhrep_patch_graph(read_file(files.graph), files.graph);
+  if (files.tree.empty()) return r;
+  const std::string text = read_file(files.tree);
+  if (blank(text)) empty_file(files.tree);
+  ConfParser parser(text, files.tree);
+  r.tree.emplace();
+  r.tree->tree = parser.parse();
+  if (files.face_patch.empty()) return r;
+  r.tree->face_patch = read_face_patch(read_file(files.face_patch), files.face_patch);
+  const std::set<int> listed(r.tree->face_patch.begin(), r.tree->face_patch.end());
+  for (const auto& [leaf, line] : parser.leaf_lines())
+    if (!listed.count(leaf))
+      throw InputError(files.tree + ":" + std::to_string(line) + ": patch " + std::to_string(leaf) +
+                       " has no triangle in " + files.face_patch);
+  return r;
+}
+
+void check_reference_mesh(const NhrepReference& reference, std::size_t triangles) {
+  if (!reference.tree || reference.tree->face_patch.empty()) return;
+  const std::size_t lines = reference.tree->face_patch.size();
+  if (lines != triangles)
+    throw InputError(reference.files.face_patch + ": " + std::to_string(lines) + " patch ids, but the mesh has " +
+                     std::to_string(triangles) + " triangles");
 }
 
 std::vector<int> read_face_patch(const std::string& text, const std::string& source) {
@@ -185,24 +277,16 @@ std::vector<int> read_face_patch(const std::string& text, const std::string& sou
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used != line.size() || value < 0 || value > 100000000)
-      throw InputError(source + ":" + std::to_string(number) + ": expected a patch id, got '" + line + "'");
+    if (used != line.size() || value < 0 || value > kMaxPatchId)
+      throw InputError(source + ":" + std::to_string(number) + ": expected a patch id (0.." +
+                       std::to_string(kMaxPatchId) + "), got '" + line + "'");
     result.push_back(static_cast<int>(value));
   }
+  if (result.empty()) throw InputError(source + ":1: " + (blank(text) ? "empty file" : "no patch ids"));
   return result;
 }
 
-std::vector<int> nhtree_conf_ids(const nhrep::PatchGraph& graph) {
-  std::vector<int> live = graph.live_patches();
-  std::vector<int> lowest(graph.patches.size(), INT_MAX);
-  for (int p : live)
-    for (int piece : graph.patches[at(p)].pieces)
-      lowest[at(p)] = std::min(lowest[at(p)], graph.surface.pieces[at(piece)].origin);
-  std::stable_sort(live.begin(), live.end(), [&](int a, int b) { return lowest[at(a)] < lowest[at(b)]; });
-  std::vector<int> conf_id(graph.patches.size(), -1);
-  for (std::size_t k = 0; k < live.size(); ++k) conf_id[at(live[k])] = static_cast<int>(k);
-  return conf_id;
-}
+std::vector<int> nhtree_conf_ids(const nhrep::PatchGraph& graph) { return nhrep::nhrep_patch_numbers(graph); }
 
 nlohmann::json nhtree_to_json(const nhrep::BuildResult& result, const std::vector<std::vector<int>>* groups) {
   const nhrep::PatchGraph& graph = result.graph;
@@ -249,10 +333,44 @@ nlohmann::json nhtree_to_json(const nhrep::BuildResult& result, const std::vecto
   return doc;
 }
 
+namespace {
+
+nlohmann::json exact_points(const std::vector<std::vector<Rational>>& points) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& p : points) out.push_back({exact_string(p.at(0)), exact_string(p.at(1))});
+  return out;
+}
+
+}  // namespace
+
+nlohmann::json nhtree_planar_json(const nhrep::PlanarTree& tree, const nhrep::PlanarEvaluation& evaluation) {
+  nlohmann::json names = nlohmann::json::object(), where = nlohmann::json::object();
+  for (int p : tree.built.graph.live_patches()) {
+    names[std::to_string(p)] = tree.leaf_names[at(p)];
+    nlohmann::json pieces = nlohmann::json::array();
+    for (const nhrep::PlanarPiece& piece : tree.pieces[at(p)]) {
+      nlohmann::json entry = {{"edge", piece.edge}};
+      if (piece.split_point) {
+        entry["kept_vertex"] = piece.kept_vertex;
+        entry["split_point"] = point_to_json(*piece.split_point);
+      }
+      pieces.push_back(entry);
+    }
+    where[std::to_string(p)] = pieces;
+  }
+  const nhrep::Evaluation& e = evaluation.evaluation;
+  return {{"natural_halfspaces", names},
+          {"patch_pieces", where},
+          {"evaluation",
+           {{"verdict", nhrep::verdict_key(e.verdict)}, {"correct", e.correct}, {"describable", e.describable},
+            {"cells", evaluation.cells}, {"wrong_inside", exact_points(evaluation.missed)},
+            {"wrong_outside", exact_points(evaluation.added)}, {"violations", e.violations}}}};
+}
+
 std::string nhtree_conf(const nhrep::BuildResult& result) {
-  const std::vector<int> conf_id = nhtree_conf_ids(result.graph);
+  const nhrep::Tree tree = nhrep::relabel_tree(result.tree, nhtree_conf_ids(result.graph));
   std::string list;
-  conf_list(result.tree, result.tree.root, conf_id, list);
+  conf_list(tree, tree.root, list);
   // NH-Rep writes a comma after every element, the root list included.
   std::string out = "csg{\n    list = ";
   out += list;

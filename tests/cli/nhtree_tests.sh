@@ -4,7 +4,11 @@
 #   L-prism with one corner edge left unmarked needs a decomposition; .conf and JSON are written and agree;
 # - 2D: trees, exact evaluation and an SVG for CSG solids on data/scenes/lens.json, and the union of two disks
 #   as a min root;
-# - bad input exits 2 naming the problem and leaves no output file behind.
+# - one patch numbering: the printed tree is the .conf's (NH-Rep's numbering) also after decomposition, where
+#   Algorithm 1's ids differ; the text prints the mapping and the JSON's conf_id maps its tree to the .conf;
+# - bad input exits 2 naming the problem and leaves no output file behind; bad reference files (--reference,
+#   --reference-face-patch, --reference-graph) exit 2 naming file and line before any computation (nothing on
+#   standard output), and a huge reference patch id allocates nothing in proportion to it.
 set -u
 HSX="${1:?usage: nhtree_tests.sh HSX ROOT}"
 ROOT="${2:?usage: nhtree_tests.sh HSX ROOT}"
@@ -63,6 +67,33 @@ for pair in cube:cube lprism:lprism lprism:lprism_open_corner hollow_cube:hollow
   # and it compares equal to itself through --reference
   "$HSX" nhtree "$M/$obj.obj" --fea "$M/$fea.fea" --reference "$M/$fea.tree.conf" >"$TMP/$fea.ref.txt" 2>&1
   expect_line "$TMP/$fea.ref.txt" "same tree" "$fea --reference"
+done
+
+# one numbering: after a decomposition the printed tree is the .conf, leaf for leaf and node for node (ops as
+# brackets, NH-Rep's trailing commas dropped), and the mapping from Algorithm 1's ids is printed and in the JSON
+conf_as_text() {  # CONF -> "[1,2,[4,5]]"; TREE_TEXT -> the same form
+  tr -d ' \n' <"$1" | sed -E 's/.*list=(.*),flag_convex.*/\1/; s/,\]/]/g'
+}
+tree_as_conf() { sed -E 's/^tree: //; s/(max|min)\(/[/g; s/\)/]/g; s/ //g' <<<"$1"; }
+for pair in lprism:lprism_open_corner lprism_split:lprism_split; do
+  obj="${pair%%:*}"; fea="${pair##*:}"
+  run_ok "$TMP/$fea.num.txt" "$M/$obj.obj" --fea "$M/$fea.fea" --conf "$TMP/$fea.num.conf" --json "$TMP/$fea.num.json"
+  printed="$(tree_as_conf "$(grep '^tree: ' "$TMP/$fea.num.txt")")"
+  written="$(conf_as_text "$TMP/$fea.num.conf")"
+  if [ -n "$written" ] && [ "$printed" = "$written" ]; then pass; else fail "$fea: printed tree $printed, .conf $written"; fi
+  expect_line "$TMP/$fea.num.txt" "patch numbers: the tree below and --conf use NH-Rep's" "$fea numbering mapping"
+  if python3 - "$TMP/$fea.num.json" "$written" <<'PY'; then pass; else fail "$fea: JSON tree through conf_id is not the .conf"; fi
+import json, sys
+d = json.load(open(sys.argv[1]))
+conf = {p["id"]: p["conf_id"] for p in d["patches"] if p["alive"]}
+def low(n): return min([conf[l] for l in n["leaves"]] + [low(c) for c in n["children"]])
+def form(n):
+    parts = [str(x) for x in sorted(conf[l] for l in n["leaves"])]
+    parts += [form(c) for c in sorted(n["children"], key=low)]
+    return "[" + ",".join(parts) + "]"
+assert form(d["tree"]) == sys.argv[2], (form(d["tree"]), sys.argv[2])
+assert any(p["id"] != p.get("conf_id", p["id"]) for p in d["patches"] if p["alive"])  # the numberings differ here
+PY
 done
 
 # face-splitting: one triangle lies on a convex and a concave edge; the decomposed mesh is a valid closed mesh
@@ -131,6 +162,50 @@ run_bad 2 "bounded" "$TMP/x.json" "$S" --csg "~A" --json "$TMP/x.json"
 run_bad 2 "--fea" "$TMP/x.json" "$S" --csg "A" --fea "$M/cube.fea" --json "$TMP/x.json"
 printf 'csg{ list = [0,1,[2,], flag_convex = 1, }' >"$TMP/bad.conf"
 run_bad 2 "bad.conf:1" "" "$M/cube.obj" --fea "$M/cube.fea" --reference "$TMP/bad.conf"
+
+# ---- bad reference files: exit 2 naming file and line, before any computation (nothing on standard output) ----
+ref_bad() {  # MESSAGE_PART ARGS... (after the cube and its features)
+  local part="$1"; shift
+  run_bad 2 "$part" "$TMP/x.conf" "$M/cube.obj" --fea "$M/cube.fea" --conf "$TMP/x.conf" "$@"
+  if [ -s "$TMP/bad.out" ]; then fail "nhtree $*: computed before rejecting the reference: $(head -2 "$TMP/bad.out")"; else pass; fi
+}
+: >"$TMP/empty.conf"
+: >"$TMP/empty.txt"
+mkdir -p "$TMP/dir.conf"
+printf 'csg{\n    list = [0,1,2,\n x,3,4,5,],\n    flag_convex = 1,\n}' >"$TMP/letter.conf"
+printf 'csg{\n    list = [0,1,2,3,4,\n5,\n99999999,],\n    flag_convex = 1,\n}' >"$TMP/huge.conf"
+printf 'csg{\n    list = [0,1,2,3,\n4,3,],\n    flag_convex = 1,\n}' >"$TMP/twice.conf"
+"$HSX" nhtree "$M/cube.obj" --fea "$M/cube.fea" --decomposed "$TMP/cube.dec" >/dev/null 2>&1
+FP="$TMP/cube.dec.face-patch.txt"
+tail -n +2 "$FP" >"$TMP/short.fp"  # 11 lines, every patch still present
+{ head -2 "$FP"; echo "one"; tail -n +4 "$FP"; } >"$TMP/word.fp"
+printf 'edge: 0-1 : 1\nedge: 0-2 1\n' >"$TMP/bad.graph"
+printf 'edge: 0-1 : 1\nedge: 1-0 : 2\n' >"$TMP/twice.graph"
+printf 'edge: 0-1 : 7\n' >"$TMP/type.graph"
+ref_bad "empty.conf:1: empty file" --reference "$TMP/empty.conf"
+ref_bad "dir.conf\": a directory" --reference "$TMP/dir.conf"
+ref_bad "nonexistent.conf" --reference "$TMP/nonexistent.conf"
+ref_bad "letter.conf:3: expected a patch id" --reference "$TMP/letter.conf"
+ref_bad "twice.conf:3: patch id 3 appears twice (first on line 2)" --reference "$TMP/twice.conf"
+ref_bad "huge.conf:4: patch 99999999 has no triangle in" --reference "$TMP/huge.conf" --reference-face-patch "$FP"
+ref_bad "empty.txt:1: empty file" --reference "$M/cube.tree.conf" --reference-face-patch "$TMP/empty.txt"
+ref_bad "word.fp:3: expected a patch id" --reference "$M/cube.tree.conf" --reference-face-patch "$TMP/word.fp"
+ref_bad "short.fp: 11 patch ids, but the mesh has 12 triangles" --reference "$M/cube.tree.conf" --reference-face-patch "$TMP/short.fp"
+ref_bad "needs the reference tree" --reference-face-patch "$FP"
+ref_bad "empty.txt:1: empty file" --reference-graph "$TMP/empty.txt"
+ref_bad "bad.graph:2: expected 'edge: A-B : T'" --reference-graph "$TMP/bad.graph"
+ref_bad "twice.graph:2: edge 0-1 listed twice (first on line 1)" --reference-graph "$TMP/twice.graph"
+ref_bad "type.graph:1: edge type 7" --reference-graph "$TMP/type.graph"
+ref_bad "dir.conf\": a directory" --reference-graph "$TMP/dir.conf"
+run_bad 2 "compare meshes" "$TMP/x.json" "$S" --csg A --reference "$M/cube.tree.conf" --json "$TMP/x.json"
+# the cube's own face-patch file and tree compare equal; a huge patch id without a face-patch file is a different
+# tree, found without allocating in proportion to the id (NH-Rep's leaves 0..99999999 would take 400 MB): run
+# under a 150 MB address-space limit
+run_ok "$TMP/cube.fp.txt" "$M/cube.obj" --fea "$M/cube.fea" --reference "$M/cube.tree.conf" --reference-face-patch "$FP"
+expect_line "$TMP/cube.fp.txt" "same tree up to original patches" "cube through its face-patch file"
+if (ulimit -v 150000; "$HSX" nhtree "$M/cube.obj" --fea "$M/cube.fea" --reference "$TMP/huge.conf" >"$TMP/huge.txt" 2>&1); then
+  pass; else fail "huge patch id: exited $?: $(tail -3 "$TMP/huge.txt")"; fi
+expect_line "$TMP/huge.txt" "theirs: max{0,1,2,3,4,5,99999999}" "huge patch id compared"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -70,6 +70,12 @@ has "$out/$m.tool.txt" "63 edges, 0 differences" && pass "$m: tool mode, same pa
 has "$out/$m.tool.txt" "same tree up to original patches" && pass "$m: tool mode, same tree" || fail "$m: tool mode tree"
 cmp -s "$out/$m.tool.conf" "$ref/$m.decomposed.tree.conf" && pass "$m: tool mode, identical .conf" \
   || fail "$m: tool mode .conf"
+# ... and the printed tree is that .conf, in its numbering (brackets for ops, NH-Rep's trailing commas dropped),
+# although Algorithm 1's ids differ after the decomposition (the mapping is printed)
+printed="$(grep '^tree: ' "$out/$m.tool.txt" | sed -E 's/^tree: //; s/(max|min)\(/[/g; s/\)/]/g; s/ //g')"
+written="$(tr -d ' \n' < "$ref/$m.decomposed.tree.conf" | sed -E 's/.*list=(.*),flag_convex.*/\1/; s/,\]/]/g')"
+[ "$printed" = "$written" ] && has "$out/$m.tool.txt" "patch numbers: the tree below and --conf use NH-Rep's" \
+  && pass "$m: tool mode, printed tree in the .conf's numbering" || fail "$m: tool mode printed tree: $printed"
 # ... and the same decomposition: the decomposed mesh's face-patch file equals the tool's line by line, it has the
 # tool's 1114 feature edges, and our own tree of it is the tool's tree.
 "$hsx" nhtree "$data/$m.obj" --fea "$data/$m.fea" --nhrep-tool --decomposed "$out/$m.dec" > /dev/null

@@ -146,19 +146,20 @@ std::vector<std::pair<int, bool>> patch_walk(const std::vector<ArrEdge2>& edges,
   return steps;
 }
 
-/// A point halfway along an edge walked from `from` to `to` (scene coordinates, doubles).
-std::pair<double, double> edge_midpoint(const ArrEdge2& e, const OneRootPoint& from, const OneRootPoint& to,
-                                        bool travel_ccw) {
+/// The point at fraction t (0 < t < 1; of length, for segments and arcs alike) along an edge walked from `from` to
+/// `to` (scene coordinates, doubles).
+std::pair<double, double> edge_point(const ArrEdge2& e, const OneRootPoint& from, const OneRootPoint& to,
+                                     bool travel_ccw, double t) {
   const double px = from.x.to_double(), py = from.y.to_double(), qx = to.x.to_double(), qy = to.y.to_double();
-  if (e.shape == EdgeShape2::Segment) return {(px + qx) / 2, (py + qy) / 2};
+  if (e.shape == EdgeShape2::Segment) return {px + t * (qx - px), py + t * (qy - py)};
   const double cx = e.center.x.get_d(), cy = e.center.y.get_d(), r = e.radius.get_d();
   const double a1 = std::atan2(py - cy, px - cx), a2 = std::atan2(qy - cy, qx - cx);
   const double two_pi = 2 * M_PI;
   double delta = travel_ccw ? a2 - a1 : a1 - a2;
   while (delta <= 1e-12) delta += two_pi;
   while (delta > two_pi) delta -= two_pi;
-  const double mid = travel_ccw ? a1 + delta / 2 : a1 - delta / 2;
-  return {cx + r * std::cos(mid), cy + r * std::sin(mid)};
+  const double at = travel_ccw ? a1 + t * delta : a1 - t * delta;
+  return {cx + r * std::cos(at), cy + r * std::sin(at)};
 }
 
 const char* kind_text(const Halfspace2& h) {
@@ -432,6 +433,16 @@ struct PatchPaths {
   std::vector<std::pair<double, double>> point;
 };
 
+/// Where along its middle piece patch p is labelled: halfway, or spread out along coincident patches so that
+/// their labels do not cover each other.
+double label_fraction(const Complex& c, std::size_t p) {
+  const int support = c.patches[p].support;
+  if (support < 0 || static_cast<std::size_t>(support) >= c.supports.size()) return 0.5;
+  const auto& group = c.supports[support];
+  const auto position = std::find(group.begin(), group.end(), static_cast<int>(p)) - group.begin();
+  return static_cast<double>(position + 1) / static_cast<double>(group.size() + 1);
+}
+
 PatchPaths patch_paths(const Arrangement2& arr, const Complex& c, const View& view) {
   const auto& vertices = arr.vertices();
   const auto& edges = arr.edges();
@@ -447,7 +458,7 @@ PatchPaths patch_paths(const Arrangement2& arr, const Complex& c, const View& vi
       const OneRootPoint& to = vertices.at(forward ? e.target : e.source).point;
       if (k == 0) out.d[p] += "M " + view.xy(from);
       out.d[p] += edge_commands(view, e, from, to, forward == e.ccw);
-      if (k == steps.size() / 2) out.point[p] = edge_midpoint(e, from, to, forward == e.ccw);
+      if (k == steps.size() / 2) out.point[p] = edge_point(e, from, to, forward == e.ccw, label_fraction(c, p));
     }
   }
   return out;

@@ -1,4 +1,4 @@
-// hsx arrange SCENE [--svg FILE] [--json FILE]: the exact arrangement of a scene and its complex.
+// hsx arrange SCENE [--svg FILE [--labels]] [--json FILE]: the exact arrangement of a scene and its complex.
 #include "cli/commands.hpp"
 #include <hsx/complex/from_arrangement2.hpp>
 #include <hsx/io/complex_json.hpp>
@@ -18,6 +18,7 @@ struct ArrangeOptions {
   std::string scene_path;
   std::string svg_path;
   std::string json_path;
+  bool labels = false;
   bool quiet = false;
 };
 
@@ -54,6 +55,7 @@ void run_arrange(const ArrangeOptions& options) {
   if (!options.svg_path.empty()) {
     SvgOptions svg_options;
     svg_options.title = options.scene_path;
+    svg_options.show_cell_ids = svg_options.show_patch_ids = options.labels;
     svg_text = arrangement_svg(scene, arranged.arrangement, arranged.complex, svg_options);
   }
   if (!options.json_path.empty()) write_file_atomically(options.json_path, json_text);
@@ -69,6 +71,7 @@ void add_arrange_command(CLI::App& app) {
       "arrange", "Build the exact arrangement of a 2D scene and its complex; print counts and patches");
   cmd->add_option("SCENE", options->scene_path, "hsx-scene/1 JSON file")->required();
   cmd->add_option("--svg", options->svg_path, "write a picture: cells, patches per halfspace, samples");
+  cmd->add_flag("--labels", options->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the text");
   cmd->add_option("--json", options->json_path, "write the complex as hsx-complex/1 JSON ('-' for stdout)");
   cmd->add_flag("-q,--quiet", options->quiet, "do not print the summary");
   cmd->callback([options] { run_arrange(*options); });

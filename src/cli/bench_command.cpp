@@ -1,17 +1,27 @@
-// hsx bench [DIR...]: every method on every scene, timed in one run, reported as ratios to the graph cut; with
-// --meshes, NH-Rep's stages on meshes, as ratios to reading the mesh.
+// hsx bench [DIR...]: every method on every scene, each timed repeatedly (kernel/timing.hpp), reported as medians
+// with their spread and as ratios of medians to the graph cut, side by side in one run; with --meshes, NH-Rep's
+// stages on meshes, as ratios to reading the mesh. --csv and --json write the same figures.
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
 #include <hsx/geometry/mesh3.hpp>
-#include "cli/commands.hpp"
+#include <hsx/io/files.hpp>
 #include <hsx/io/input.hpp>
+#include <hsx/kernel/timing.hpp>
+#include "cli/commands.hpp"
 
-#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <sstream>
 
 namespace hsx::cli {
 namespace {
@@ -21,134 +31,364 @@ struct BenchOptions {
   std::vector<std::string> meshes;  ///< NH-Rep mode: .obj files, each with a .fea beside it
   long brute_force_limit = 200000;
   double time_limit = 60;
+  int repetitions = 5;
+  double min_time = 0.2;
+  std::string csv_path, json_path;
 };
 
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+// ---- what is reported: one row per input, one timing per stage ----
+
+struct StageResult {
+  std::optional<TimingSummary> timing;  ///< empty when the stage was not run
+  std::string status = "ok";            ///< "ok", or why there is no timing
+};
+
+struct BenchRow {
+  std::string input;
+  std::string skipped;                  ///< non-empty: why the input was not measured
+  std::vector<long> sizes;              ///< per Report::size_names
+  std::vector<StageResult> stages;      ///< per Report::stage_names
+  std::vector<std::string> notes;       ///< per Report::note_names
+};
+
+struct Report {
+  std::string mode, input_name;          ///< "scenes" / "meshes"; the first column's title
+  std::vector<std::string> size_names, stage_names, note_names;
+  int reference = 0;                     ///< the stage ratios are taken to
+  std::vector<char> with_ratio;          ///< per stage: report its ratio to the reference
+  RepeatOptions repeat;
+  std::vector<BenchRow> rows;
+  std::vector<std::string> footer;
+};
+
+/// Median of stage `k` over the reference's median, when both were measured and the reference took time.
+std::optional<double> ratio(const Report& report, const BenchRow& row, std::size_t k) {
+  if (!report.with_ratio[k] || row.stages.size() <= k) return std::nullopt;
+  const auto& stage = row.stages[k].timing;
+  const auto& reference = row.stages[static_cast<std::size_t>(report.reference)].timing;
+  if (!stage || !reference || !(reference->median > 0)) return std::nullopt;
+  return stage->median / reference->median;
 }
 
-void run_bench(const BenchOptions& o) {
+std::string printf_string(const char* format, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, format, value);
+  return buffer;
+}
+
+std::string seconds_text(double s) {
+  if (s < 1e-3) return printf_string("%.1f us", s * 1e6);
+  if (s < 1) return printf_string("%.2f ms", s * 1e3);
+  return printf_string("%.3f s", s);
+}
+
+// ---- the three renderings ----
+
+constexpr int kTimeWidth = 11, kSpreadWidth = 6, kRatioWidth = 9;
+
+int stage_width(const Report& report, std::size_t k) {
+  return kTimeWidth + kSpreadWidth + (report.with_ratio[k] ? kRatioWidth : 0);
+}
+
+std::string table_text(const Report& report) {
+  std::ostringstream out;
+  const int name_width = 28, size_width = 8;
+  const std::string reference = report.stage_names[static_cast<std::size_t>(report.reference)];
+  // Two header lines: the stages, then their columns.
+  out << std::left << std::setw(name_width + size_width * static_cast<int>(report.size_names.size())) << "";
+  for (std::size_t k = 0; k < report.stage_names.size(); ++k)
+    out << std::right << std::setw(stage_width(report, k)) << report.stage_names[k];
+  out << "\n" << std::left << std::setw(name_width) << report.input_name << std::right;
+  for (const auto& s : report.size_names) out << std::setw(size_width) << s;
+  for (std::size_t k = 0; k < report.stage_names.size(); ++k) {
+    out << std::setw(kTimeWidth) << "median" << std::setw(kSpreadWidth) << "iqr";
+    if (report.with_ratio[k]) out << std::setw(kRatioWidth) << "ratio";
+  }
+  for (const auto& n : report.note_names) out << std::setw(11) << n;
+  out << "\n";
+  for (const BenchRow& row : report.rows) {
+    out << std::left << std::setw(name_width) << row.input << std::right;
+    if (!row.skipped.empty()) {
+      out << " skipped: " << row.skipped << "\n";
+      continue;
+    }
+    for (long s : row.sizes) out << std::setw(size_width) << s;
+    for (std::size_t k = 0; k < row.stages.size(); ++k) {
+      const auto& t = row.stages[k].timing;
+      if (!t) {
+        out << std::setw(stage_width(report, k)) << row.stages[k].status;
+        continue;
+      }
+      out << std::setw(kTimeWidth) << seconds_text(t->median)
+          << std::setw(kSpreadWidth) << (t->median > 0 ? printf_string("%.0f%%", 100 * t->iqr() / t->median) : "-");
+      if (report.with_ratio[k]) {
+        const auto r = ratio(report, row, k);
+        out << std::setw(kRatioWidth) << (r ? printf_string("%.2fx", *r) : "-");
+      }
+    }
+    for (const auto& n : row.notes) out << std::setw(11) << n;
+    out << "\n";
+  }
+  out << "\n";
+  for (const auto& line : report.footer) out << line << "\n";
+  out << "median: of at least " << report.repeat.min_repetitions << " runs, repeated until they add up to "
+      << report.repeat.min_seconds << " s; iqr: interquartile range in % of the median; ratio: of medians, to "
+      << reference << " on the same input (--csv/--json: also quartiles, min, max, total)\n";
+  return out.str();
+}
+
+/// CSV field quoting (RFC 4180).
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string csv_number(double v) { return printf_string("%.9g", v); }
+
+std::string csv_text(const Report& report) {
+  std::ostringstream out;
+  out << csv_field(report.input_name);
+  for (const auto& s : report.size_names) out << "," << csv_field(s);
+  out << ",stage,status,repetitions,median_s,q1_s,q3_s,min_s,max_s,total_s,ratio_to_"
+      << csv_field(report.stage_names[static_cast<std::size_t>(report.reference)]) << "\n";
+  for (const BenchRow& row : report.rows) {
+    if (!row.skipped.empty()) {
+      out << csv_field(row.input) << std::string(report.size_names.size(), ',') << ",," << csv_field("skipped: " + row.skipped)
+          << ",,,,,,,,\n";
+      continue;
+    }
+    for (std::size_t k = 0; k < row.stages.size(); ++k) {
+      out << csv_field(row.input);
+      for (long s : row.sizes) out << "," << s;
+      out << "," << csv_field(report.stage_names[k]) << "," << csv_field(row.stages[k].status);
+      if (const auto& t = row.stages[k].timing) {
+        out << "," << t->repetitions;
+        for (double v : {t->median, t->q1, t->q3, t->min, t->max, t->total}) out << "," << csv_number(v);
+      } else {
+        out << ",,,,,,,";
+      }
+      const auto r = ratio(report, row, k);
+      out << "," << (r ? csv_number(*r) : "") << "\n";
+    }
+  }
+  return out.str();
+}
+
+nlohmann::json timing_json(const TimingSummary& t) {
+  return {{"repetitions", t.repetitions}, {"median_s", t.median}, {"q1_s", t.q1}, {"q3_s", t.q3},
+          {"min_s", t.min},           {"max_s", t.max},       {"total_s", t.total}};
+}
+
+nlohmann::json report_json(const Report& report) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const BenchRow& row : report.rows) {
+    nlohmann::json r = {{"input", row.input}};
+    if (!row.skipped.empty()) {
+      r["skipped"] = row.skipped;
+      rows.push_back(r);
+      continue;
+    }
+    for (std::size_t k = 0; k < row.sizes.size(); ++k) r[report.size_names[k]] = row.sizes[k];
+    nlohmann::json stages = nlohmann::json::array();
+    for (std::size_t k = 0; k < row.stages.size(); ++k) {
+      nlohmann::json s = {{"stage", report.stage_names[k]}, {"status", row.stages[k].status}};
+      if (const auto& t = row.stages[k].timing) s.update(timing_json(*t));
+      const auto q = ratio(report, row, k);
+      s["ratio"] = q ? nlohmann::json(*q) : nlohmann::json(nullptr);
+      stages.push_back(s);
+    }
+    r["stages"] = stages;
+    for (std::size_t k = 0; k < row.notes.size(); ++k) r[report.note_names[k]] = row.notes[k];
+    rows.push_back(r);
+  }
+  return {{"format", "hsx-bench/1"},
+          {"mode", report.mode},
+          {"min_repetitions", report.repeat.min_repetitions},
+          {"min_seconds", report.repeat.min_seconds},
+          {"ratio_to", report.stage_names[static_cast<std::size_t>(report.reference)]},
+          {"rows", rows},
+          {"footer", report.footer}};
+}
+
+/// Prints the table and writes the requested files (all rendered before anything is written).
+void publish(const Report& report, const BenchOptions& o) {
+  const std::string csv = o.csv_path.empty() ? "" : csv_text(report);
+  const std::string json = o.json_path.empty() ? "" : report_json(report).dump(2) + "\n";
+  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, csv);
+  if (!o.json_path.empty()) write_file_atomically(o.json_path, json);
+  std::cout << table_text(report);
+}
+
+RepeatOptions repeat_options(const BenchOptions& o) {
+  if (o.repetitions < 1) throw InputError("--repetitions: must be at least 1");
+  if (!std::isfinite(o.min_time) || o.min_time < 0) throw InputError("--min-time: must be >= 0 seconds");
+  RepeatOptions r;
+  r.min_repetitions = o.repetitions;
+  r.max_repetitions = std::max(o.repetitions, 1000000);
+  r.min_seconds = o.min_time;
+  return r;
+}
+
+// ---- BSH methods on scenes ----
+
+std::vector<std::string> scene_files(const std::vector<std::string>& dirs) {
   std::vector<std::string> files;
-  for (const auto& dir : o.dirs) {
+  for (const auto& dir : dirs) {
     if (!std::filesystem::is_directory(dir)) throw InputError("bench: \"" + dir + "\" is not a directory");
     for (const auto& entry : std::filesystem::directory_iterator(dir))
       if (entry.path().extension() == ".json" && entry.path().filename() != "expected.json")
         files.push_back(entry.path().string());
   }
   std::sort(files.begin(), files.end());
-  const bsh::Method methods[] = {bsh::Method::GraphCut, bsh::Method::Beam, bsh::Method::BestFirst,
-                                 bsh::Method::BruteForce};
-  std::cout << std::left << std::setw(34) << "scene" << std::right << std::setw(7) << "cells" << std::setw(8)
-            << "patches" << std::setw(11) << "arrange s" << std::setw(11) << "graphcut s";
-  for (const char* m : {"beam", "best-first", "brute-force"}) std::cout << std::setw(13) << m;
-  std::cout << std::setw(11) << "bf states" << std::setw(8) << "beam" << "\n";
-  double totals[4] = {0, 0, 0, 0};
-  int beam_optimal = 0, compared = 0;
-  for (const auto& file : files) {
-    const auto t0 = std::chrono::steady_clock::now();
-    LoadedInput in;
+  return files;
+}
+
+const bsh::Method kMethods[] = {bsh::Method::GraphCut, bsh::Method::Beam, bsh::Method::BestFirst,
+                                bsh::Method::BruteForce};
+
+/// One scene: its arrangement, then every method, each timed repeatedly; `results` gets each method's result.
+BenchRow bench_scene(const std::string& file, const BenchOptions& o, const RepeatOptions& repeat,
+                     std::optional<bsh::ExtractResult> (&results)[4]) {
+  BenchRow row;
+  row.input = std::filesystem::path(file).filename().string();
+  LoadedInput in;
+  try {
+    in = load_input(file);
+  } catch (const InputError& e) {
+    row.skipped = e.what();
+    return row;
+  }
+  const bsh::Problem problem(in.complex());
+  row.sizes = {problem.cell_count(), static_cast<long>(in.complex().patches.size())};
+  StageResult arrangement;
+  if (in.scene)
+    arrangement.timing = time_repeatedly([&] { arrange(*in.scene); }, repeat);
+  else
+    arrangement.status = "no scene";
+  row.stages.push_back(arrangement);
+  for (int k = 0; k < 4; ++k) {
+    bsh::ExtractOptions options;
+    options.method = kMethods[k];
+    options.time_limit = o.time_limit;
+    options.brute_force_limit = o.brute_force_limit;
+    StageResult stage;
     try {
-      in = load_input(file);
-    } catch (const InputError& e) {
-      std::cout << std::left << std::setw(34) << std::filesystem::path(file).filename().string()
-                << " skipped: " << e.what() << "\n";
-      continue;
+      stage.timing = time_repeatedly([&] { results[k] = bsh::extract(problem, options); }, repeat);
+    } catch (const std::runtime_error&) {
+      stage.status = "too large";  // the oracle refused: too many labellings
     }
-    const double arrange_seconds = seconds_since(t0);
-    const bsh::Problem problem(in.complex());
-    double t[4] = {0, 0, 0, 0};
+    row.stages.push_back(stage);
+  }
+  return row;
+}
+
+void run_bench(const BenchOptions& o) {
+  Report report;
+  report.mode = "scenes";
+  report.input_name = "scene";
+  report.size_names = {"cells", "patches"};
+  report.stage_names = {"arrange", "graphcut", "beam", "best-first", "brute-force"};
+  report.with_ratio = {0, 0, 1, 1, 1};
+  report.reference = 1;
+  report.note_names = {"bf states", "beam"};
+  report.repeat = repeat_options(o);
+  double totals[5] = {0, 0, 0, 0, 0};
+  int beam_optimal = 0, compared = 0;
+  for (const auto& file : scene_files(o.dirs)) {
     std::optional<bsh::ExtractResult> results[4];
-    for (int k = 0; k < 4; ++k) {
-      bsh::ExtractOptions options;
-      options.method = methods[k];
-      options.time_limit = o.time_limit;
-      options.brute_force_limit = o.brute_force_limit;
-      const auto start = std::chrono::steady_clock::now();
-      try {
-        results[k] = bsh::extract(problem, options);
-      } catch (const std::runtime_error&) {
-        t[k] = -1;  // the oracle refused: too many labellings
-        continue;
-      }
-      t[k] = seconds_since(start);
-      totals[k] += t[k];
-    }
-    std::cout << std::left << std::setw(34) << std::filesystem::path(file).filename().string() << std::right
-              << std::setw(7) << problem.cell_count() << std::setw(8) << in.complex().patches.size() << std::fixed
-              << std::setprecision(4) << std::setw(11) << arrange_seconds << std::setw(11) << t[0];
-    for (int k = 1; k < 4; ++k) {
-      if (t[k] < 0) {
-        std::cout << std::setw(13) << "too large";
-        continue;
-      }
-      std::ostringstream cell;
-      cell << std::fixed << std::setprecision(1) << (t[0] > 0 ? t[k] / t[0] : 0.0) << "x";
-      std::cout << std::setw(13) << cell.str();
-    }
-    std::string beam_verdict = "-";
+    BenchRow row = bench_scene(file, o, report.repeat, results);
+    for (std::size_t k = 0; k < row.stages.size(); ++k)
+      if (row.stages[k].timing) totals[k] += row.stages[k].timing->median;
+    std::string verdict = "-";
     if (results[1] && results[2] && results[2]->optimal) {
       ++compared;
       const bool same = bsh::compare(results[1]->energy, results[2]->energy) != Order::Greater;
       beam_optimal += same;
-      beam_verdict = same ? "opt" : "subopt";
+      verdict = same ? "opt" : "subopt";
     }
-    std::cout << std::setw(11) << (results[2] ? results[2]->stats.states_expanded : -1) << std::setw(8)
-              << beam_verdict << "\n";
+    if (row.skipped.empty())
+      row.notes = {results[2] ? std::to_string(results[2]->stats.states_expanded) : "-", verdict};
+    report.rows.push_back(std::move(row));
   }
-  std::cout << std::defaultfloat << "\n" << files.size() << " scenes; total seconds: graphcut " << totals[0]
-            << ", beam " << totals[1] << ", best-first " << totals[2] << ", brute-force " << totals[3]
-            << "\nbeam K=1 optimal on " << beam_optimal << " of " << compared
-            << " scenes (method columns are times relative to the graph cut of the same scene)\n";
+  std::ostringstream footer;
+  footer << report.rows.size() << " scenes; sums of medians:";
+  for (std::size_t k = 0; k < report.stage_names.size(); ++k)
+    footer << (k ? ", " : " ") << report.stage_names[k] << " " << seconds_text(totals[k]);
+  report.footer = {footer.str(), "beam K=1 optimal on " + std::to_string(beam_optimal) + " of " +
+                                     std::to_string(compared) + " scenes (bf states: best-first's states expanded)"};
+  publish(report, o);
 }
 
-/// NH-Rep on meshes: each stage timed in one run, as a ratio to reading and validating the mesh.
+// ---- NH-Rep stages on meshes ----
+
+BenchRow bench_mesh(const std::string& obj, const RepeatOptions& repeat) {
+  BenchRow row;
+  row.input = std::filesystem::path(obj).filename().string();
+  std::filesystem::path fea = obj;
+  fea.replace_extension(".fea");
+  Mesh3 mesh;
+  FeatureEdgeList features;
+  StageResult read;
+  read.timing = time_repeatedly(
+      [&] {
+        mesh = read_mesh3_file(obj);
+        features = read_fea_file(fea.string());
+      },
+      repeat);
+  BoundarySurface surface;
+  StageResult classify;
+  classify.timing = time_repeatedly([&] { surface = boundary_from_mesh(mesh, features); }, repeat);
+  BoundarySurface surface_copy;
+  nhrep::PatchGraph graph;
+  StageResult patch_graph;
+  patch_graph.timing = time_repeatedly([&] { graph = nhrep::build_patch_graph(std::move(surface_copy)); }, repeat,
+                                       [&] { surface_copy = surface; });
+  nhrep::PatchGraph graph_copy;
+  std::optional<nhrep::BuildResult> result;
+  StageResult algorithm1;
+  algorithm1.timing = time_repeatedly([&] { result = nhrep::build_tree(std::move(graph_copy)); }, repeat,
+                                      [&] { graph_copy = graph; });
+  bool ok = false;
+  StageResult check;
+  check.timing = time_repeatedly([&] { ok = nhrep::check_tree(*result).empty(); }, repeat);
+  row.sizes = {static_cast<long>(mesh.faces.size()), static_cast<long>(graph.patches.size())};
+  row.stages = {read, classify, patch_graph, algorithm1, check};
+  row.notes = {std::to_string(result->decompositions.size()), ok ? "ok" : "FAILED"};
+  return row;
+}
+
+/// NH-Rep on meshes: each stage timed repeatedly, as a ratio to reading and validating the mesh.
 void run_nhrep_bench(const BenchOptions& o) {
-  std::cout << std::left << std::setw(34) << "mesh" << std::right << std::setw(9) << "faces" << std::setw(9)
-            << "patches" << std::setw(11) << "read s" << std::setw(13) << "classify" << std::setw(13)
-            << "patch graph" << std::setw(13) << "algorithm 1" << std::setw(13) << "check" << std::setw(8)
-            << "decomp" << "\n";
-  for (const std::string& obj : o.meshes) {
-    std::filesystem::path fea = obj;
-    fea.replace_extension(".fea");
-    auto t = std::chrono::steady_clock::now();
-    const Mesh3 mesh = read_mesh3_file(obj);
-    const FeatureEdgeList features = read_fea_file(fea.string());
-    const double read = seconds_since(t);
-    t = std::chrono::steady_clock::now();
-    BoundarySurface surface = boundary_from_mesh(mesh, features);
-    const double classify = seconds_since(t);
-    t = std::chrono::steady_clock::now();
-    nhrep::PatchGraph graph = nhrep::build_patch_graph(std::move(surface));
-    const double patch_graph = seconds_since(t);
-    const std::size_t patches = graph.patches.size();
-    t = std::chrono::steady_clock::now();
-    const nhrep::BuildResult result = nhrep::build_tree(std::move(graph));
-    const double algorithm1 = seconds_since(t);
-    t = std::chrono::steady_clock::now();
-    const bool ok = nhrep::check_tree(result).empty();
-    const double check = seconds_since(t);
-    auto ratio = [&](double x) {
-      std::ostringstream cell;
-      cell << std::fixed << std::setprecision(3) << (read > 0 ? x / read : 0.0) << "x";
-      return cell.str();
-    };
-    std::cout << std::left << std::setw(34) << std::filesystem::path(obj).filename().string() << std::right
-              << std::setw(9) << mesh.faces.size() << std::setw(9) << patches << std::fixed << std::setprecision(4)
-              << std::setw(11) << read << std::setw(13) << ratio(classify) << std::setw(13) << ratio(patch_graph)
-              << std::setw(13) << ratio(algorithm1) << std::setw(13) << ratio(check) << std::setw(8)
-              << result.decompositions.size() << (ok ? "" : "  CHECK FAILED") << "\n";
-  }
-  std::cout << std::defaultfloat << "(stage columns are times relative to reading and validating the same mesh)\n";
+  Report report;
+  report.mode = "meshes";
+  report.input_name = "mesh";
+  report.size_names = {"faces", "patches"};
+  report.stage_names = {"read", "classify", "patch graph", "algorithm 1", "check"};
+  report.with_ratio = {0, 1, 1, 1, 1};
+  report.reference = 0;
+  report.note_names = {"decomp", "check"};
+  report.repeat = repeat_options(o);
+  for (const std::string& obj : o.meshes) report.rows.push_back(bench_mesh(obj, report.repeat));
+  report.footer = {std::to_string(report.rows.size()) + " meshes (read: reading and validating the mesh and its .fea)"};
+  publish(report, o);
 }
 
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "Time every BSH method on every scene of the given folders, in one run");
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Time every BSH method on every scene of the given folders, repeatedly, side by side in one run");
   cmd->add_option("DIRS", o->dirs, "folders of scenes (default data/scenes data/figures)");
   cmd->add_option("--brute-force-limit", o->brute_force_limit, "skip the oracle above this many labellings");
   cmd->add_option("--time-limit", o->time_limit, "seconds per search before it stops (default 60)");
+  cmd->add_option("--repetitions", o->repetitions, "run each measurement at least N times (default 5)");
+  cmd->add_option("--min-time", o->min_time,
+                  "and repeat it until the runs add up to S seconds (default 0.2; 0: exactly --repetitions runs)");
+  cmd->add_option("--csv", o->csv_path, "also write every measurement as CSV (one line per input and stage)");
+  cmd->add_option("--json", o->json_path, "also write every measurement as hsx-bench/1 JSON, with each run's time");
   cmd->add_option("--meshes", o->meshes,
                   "time NH-Rep's stages on these .obj files (each with its .fea) instead of the BSH methods");
   cmd->callback([o] {

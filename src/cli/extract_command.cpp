@@ -23,6 +23,7 @@ struct ExtractCommandOptions {
   int max_ties = 16;
   std::string svg_path, json_path;
   bool show_removed = false;
+  bool labels = false;
   bool no_timing = false;
   bool quiet = false;
 };
@@ -103,7 +104,9 @@ void run_extract(const ExtractCommandOptions& o) {
     SvgOptions svg;
     svg.title = o.input + " - " + bsh::to_string(result.method) + (result.optimal ? " (optimal)" : "");
     svg.cell_fill = result.labelling;
+    svg.show_cell_ids = svg.show_patch_ids = o.labels;
     if (o.show_removed) {
+      svg.highlight_legend = "removed patches";
       svg.highlight_patches.assign(in.complex().patches.size(), 0);
       for (int p : patches_of_supports(in.complex(), result.removed)) svg.highlight_patches[p] = 1;
     }
@@ -127,7 +130,8 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("--time-limit", o->time_limit, "stop after S seconds (0: no limit)");
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons (default 2048)");
   cmd->add_option("--max-ties", o->max_ties, "stop enumerating optimal boundaries after N (default 16)");
-  cmd->add_option("--svg", o->svg_path, "write a picture of the shape");
+  cmd->add_option("--svg", o->svg_path, "write a picture of the shape: its boundary bold, missing samples ringed red");
+  cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
   cmd->add_flag("--show-removed", o->show_removed, "highlight the removed patches in the picture (paper Fig. 10)");
   cmd->add_option("--json", o->json_path, "write the hsx-result/1 document ('-' for stdout)");
   cmd->add_flag("--no-timing", o->no_timing, "leave seconds out of the JSON (byte-reproducible output)");

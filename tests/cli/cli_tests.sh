@@ -190,5 +190,76 @@ if ((rc == 2)); then pass; else fail "no subcommand: exit $rc, expected 2"; fi
 rc=$?
 if ((rc == 2)); then pass; else fail "unknown option: exit $rc, expected 2"; fi
 
+# ---- bench: repeated measurements, medians and repetition counts in CSV and JSON ----
+mkdir -p "$TMP/bench"
+cp "$ROOT/data/scenes/lens.json" "$TMP/bench/"
+if "$HSX" bench "$TMP/bench" --repetitions 6 --min-time 0.001 --csv "$TMP/bench.csv" --json "$TMP/bench.json" \
+  >"$TMP/bench.txt" 2>"$TMP/stderr.txt"; then
+  if why="$(python3 - "$TMP/bench.csv" "$TMP/bench.json" <<'EOF'
+import csv, json, sys
+problems = []
+rows = list(csv.DictReader(open(sys.argv[1])))
+stages = [r["stage"] for r in rows]
+if stages != ["arrange", "graphcut", "beam", "best-first", "brute-force"]:
+    problems.append("CSV stages %r" % stages)
+for r in rows:
+    if r["scene"] != "lens.json" or r["status"] != "ok":
+        problems.append("CSV row %r" % r)
+        continue
+    if int(r["repetitions"]) < 6:
+        problems.append("%s: %s repetitions < 6" % (r["stage"], r["repetitions"]))
+    if not float(r["median_s"]) > 0:
+        problems.append("%s: median %s" % (r["stage"], r["median_s"]))
+    if not float(r["min_s"]) <= float(r["q1_s"]) <= float(r["median_s"]) <= float(r["q3_s"]) <= float(r["max_s"]):
+        problems.append("%s: quartiles out of order" % r["stage"])
+    if r["stage"] in ("beam", "best-first", "brute-force") and not float(r["ratio_to_graphcut"]) > 0:
+        problems.append("%s: no ratio" % r["stage"])
+doc = json.load(open(sys.argv[2]))
+if doc.get("format") != "hsx-bench/1" or doc.get("min_repetitions") != 6 or doc.get("min_seconds") != 0.001:
+    problems.append("JSON header %r" % {k: doc.get(k) for k in ("format", "min_repetitions", "min_seconds")})
+js = doc["rows"][0]["stages"]
+for s, r in zip(js, rows):
+    if s["stage"] != r["stage"] or s["repetitions"] != int(r["repetitions"]) or not s["median_s"] > 0:
+        problems.append("JSON stage %r disagrees with CSV %r" % (s, r))
+if problems:
+    print("; ".join(problems))
+    sys.exit(1)
+EOF
+)"; then pass; else fail "bench: $why"; fi
+  if grep -q "lens.json" "$TMP/bench.txt" && grep -q "median" "$TMP/bench.txt"; then pass; else fail "bench: no table"; fi
+else
+  fail "bench exited $? ($(head -c 300 "$TMP/stderr.txt"))"
+fi
+"$HSX" bench "$TMP/bench" --repetitions 0 >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--repetitions" "$TMP/stderr.txt"; then pass; else fail "bench --repetitions 0: exit $rc"; fi
+# --meshes: the same measurements on NH-Rep's stages.
+if "$HSX" bench --meshes "$ROOT/data/meshes/cube.obj" --repetitions 5 --min-time 0 --json "$TMP/mesh-bench.json" \
+  >/dev/null 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+st = d["rows"][0]["stages"]
+assert d["mode"] == "meshes" and [s["stage"] for s in st][0] == "read"
+assert all(s["repetitions"] == 5 and s["median_s"] > 0 for s in st), st
+' "$TMP/mesh-bench.json"; then
+  pass
+else
+  fail "bench --meshes: $(head -c 300 "$TMP/stderr.txt")"
+fi
+# ---- arrange/extract --labels: cell and patch ids in the picture ----
+if "$HSX" arrange "$ROOT/data/scenes/lens.json" --svg "$TMP/labels.svg" --labels -q &&
+  grep -q 'class="cell-id"' "$TMP/labels.svg" && grep -q 'class="patch-id"' "$TMP/labels.svg"; then
+  pass
+else
+  fail "arrange --labels: no ids in the picture"
+fi
+if "$HSX" extract "$ROOT/data/scenes/lens.json" --svg "$TMP/shape.svg" --labels -q &&
+  grep -q 'class="cell-id"' "$TMP/shape.svg" && grep -q 'class="boundary"' "$TMP/shape.svg"; then
+  pass
+else
+  fail "extract --svg --labels: no ids or no boundary in the picture"
+fi
+
 echo "$passed passed, $failed failed"
 ((failed == 0))

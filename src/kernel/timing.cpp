@@ -1,0 +1,67 @@
+// Repeated timing: see timing.hpp.
+#include <hsx/kernel/timing.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace hsx {
+
+namespace {
+
+/// The p-quantile of sorted, non-empty values, interpolating linearly between order statistics.
+double quantile(const std::vector<double>& sorted, double p) {
+  const double h = p * static_cast<double>(sorted.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(h));
+  if (lo + 1 >= sorted.size()) return sorted.back();
+  return sorted[lo] + (h - static_cast<double>(lo)) * (sorted[lo + 1] - sorted[lo]);
+}
+
+double steady_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+TimingSummary summarize_times(const std::vector<double>& seconds) {
+  if (seconds.empty()) throw std::invalid_argument("summarize_times: no runs");
+  for (double s : seconds)
+    if (!std::isfinite(s) || s < 0) throw std::invalid_argument("summarize_times: a run time is negative or not finite");
+  std::vector<double> sorted = seconds;
+  std::sort(sorted.begin(), sorted.end());
+  TimingSummary t;
+  t.repetitions = static_cast<int>(seconds.size());
+  for (double s : seconds) t.total += s;
+  t.median = quantile(sorted, 0.5);
+  t.q1 = quantile(sorted, 0.25);
+  t.q3 = quantile(sorted, 0.75);
+  t.min = sorted.front();
+  t.max = sorted.back();
+  t.runs = seconds;
+  return t;
+}
+
+TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOptions& options,
+                              const std::function<void()>& prepare) {
+  if (options.min_repetitions < 1) throw std::invalid_argument("time_repeatedly: min_repetitions must be >= 1");
+  if (options.max_repetitions < options.min_repetitions)
+    throw std::invalid_argument("time_repeatedly: max_repetitions must be >= min_repetitions");
+  if (!std::isfinite(options.min_seconds) || options.min_seconds < 0)
+    throw std::invalid_argument("time_repeatedly: min_seconds must be finite and >= 0");
+  const std::function<double()> clock = options.clock ? options.clock : std::function<double()>(steady_seconds);
+  std::vector<double> runs;
+  double total = 0;
+  while (static_cast<int>(runs.size()) < options.max_repetitions &&
+         (static_cast<int>(runs.size()) < options.min_repetitions || total < options.min_seconds)) {
+    if (prepare) prepare();
+    const double start = clock();
+    run();
+    const double seconds = std::max(0.0, clock() - start);
+    runs.push_back(seconds);
+    total += seconds;
+  }
+  return summarize_times(runs);
+}
+
+}  // namespace hsx

@@ -46,9 +46,11 @@ std::string summary_text(const Scene2& scene, const Arranged2& arranged) {
 }
 
 void run_arrange(const ArrangeOptions& options) {
+  OutputFiles out;  // checked before computing, written all or none at the end
+  out.expect(options.json_path, "--json");
+  out.expect(options.svg_path, "--svg");
   const Scene2 scene = read_scene_file(options.scene_path);
   const Arranged2 arranged = arrange(scene);
-  // Render everything before writing anything, so a failure leaves no partial output.
   std::string json_text, svg_text;
   if (!options.json_path.empty())
     json_text = complex_to_json(arranged.complex, &arranged.arrangement, &scene.domain).dump(2) + "\n";
@@ -58,8 +60,9 @@ void run_arrange(const ArrangeOptions& options) {
     svg_options.show_cell_ids = svg_options.show_patch_ids = options.labels;
     svg_text = arrangement_svg(scene, arranged.arrangement, arranged.complex, svg_options);
   }
-  if (!options.json_path.empty()) write_file_atomically(options.json_path, json_text);
-  if (!options.svg_path.empty()) write_file_atomically(options.svg_path, svg_text);
+  out.put(options.json_path, json_text);
+  out.put(options.svg_path, svg_text);
+  out.commit();
   if (!options.quiet && options.json_path != "-") std::cout << summary_text(scene, arranged);
 }
 

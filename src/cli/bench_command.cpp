@@ -213,11 +213,12 @@ nlohmann::json report_json(const Report& report) {
 }
 
 /// Prints the table and writes the requested files (all rendered before anything is written).
-void publish(const Report& report, const BenchOptions& o) {
+void publish(const Report& report, const BenchOptions& o, OutputFiles& files) {
   const std::string csv = o.csv_path.empty() ? "" : csv_text(report);
   const std::string json = o.json_path.empty() ? "" : report_json(report).dump(2) + "\n";
-  if (!o.csv_path.empty()) write_file_atomically(o.csv_path, csv);
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, json);
+  files.put(o.csv_path, csv);
+  files.put(o.json_path, json);
+  files.commit();
   std::cout << table_text(report);
 }
 
@@ -284,7 +285,7 @@ BenchRow bench_scene(const std::string& file, const BenchOptions& o, const Repea
   return row;
 }
 
-void run_bench(const BenchOptions& o) {
+void run_bench(const BenchOptions& o, OutputFiles& files) {
   Report report;
   report.mode = "scenes";
   report.input_name = "scene";
@@ -318,7 +319,7 @@ void run_bench(const BenchOptions& o) {
     footer << (k ? ", " : " ") << report.stage_names[k] << " " << seconds_text(totals[k]);
   report.footer = {footer.str(), "beam K=1 optimal on " + std::to_string(beam_optimal) + " of " +
                                      std::to_string(compared) + " scenes (bf states: best-first's states expanded)"};
-  publish(report, o);
+  publish(report, o, files);
 }
 
 // ---- NH-Rep stages on meshes ----
@@ -360,7 +361,7 @@ BenchRow bench_mesh(const std::string& obj, const RepeatOptions& repeat) {
 }
 
 /// NH-Rep on meshes: each stage timed repeatedly, as a ratio to reading and validating the mesh.
-void run_nhrep_bench(const BenchOptions& o) {
+void run_nhrep_bench(const BenchOptions& o, OutputFiles& files) {
   Report report;
   report.mode = "meshes";
   report.input_name = "mesh";
@@ -372,7 +373,7 @@ void run_nhrep_bench(const BenchOptions& o) {
   report.repeat = repeat_options(o);
   for (const std::string& obj : o.meshes) report.rows.push_back(bench_mesh(obj, report.repeat));
   report.footer = {std::to_string(report.rows.size()) + " meshes (read: reading and validating the mesh and its .fea)"};
-  publish(report, o);
+  publish(report, o, files);
 }
 
 }  // namespace
@@ -392,10 +393,13 @@ void add_bench_command(CLI::App& app) {
   cmd->add_option("--meshes", o->meshes,
                   "time NH-Rep's stages on these .obj files (each with its .fea) instead of the BSH methods");
   cmd->callback([o] {
+    OutputFiles files;  // checked before the measurements, written at the end
+    files.expect(o->csv_path, "--csv");
+    files.expect(o->json_path, "--json");
     if (o->meshes.empty())
-      run_bench(*o);
+      run_bench(*o, files);
     else
-      run_nhrep_bench(*o);
+      run_nhrep_bench(*o, files);
   });
 }
 

@@ -24,6 +24,8 @@ constexpr int kCheckFailed = 3;
 
 int run_check(const CheckCommandOptions& o) {
   if (o.brute_force_limit < 1) throw InputError("--brute-force-limit: must be at least 1");
+  OutputFiles out;
+  out.expect(o.json_path, "--json");
   const LoadedInput in = load_input(o.input);
   CompareOptions compare;
   compare.max_bits = o.precision_bits;
@@ -36,10 +38,10 @@ int run_check(const CheckCommandOptions& o) {
     failed = failed || r.status == bsh::CheckResult::Fail;
     json.push_back({{"check", r.name}, {"status", bsh::to_string(r.status)}, {"witness", r.witness}});
   }
-  if (!o.json_path.empty())
-    write_file_atomically(o.json_path, nlohmann::json{{"format", "hsx-check/1"}, {"input", o.input},
-                                                      {"passed", !failed}, {"checks", json}}
-                                               .dump(2) + "\n");
+  out.put(o.json_path, nlohmann::json{{"format", "hsx-check/1"}, {"input", o.input}, {"passed", !failed},
+                                      {"checks", json}}
+                            .dump(2) + "\n");
+  out.commit();
   std::cout << table.str();
   return failed ? kCheckFailed : 0;
 }

@@ -74,6 +74,9 @@ void run_extract(const ExtractCommandOptions& o) {
   if (o.max_states < 0) throw InputError("--max-states: must be >= 0");
   if (o.time_limit < 0) throw InputError("--time-limit: must be >= 0");
   if (o.precision_bits < 64) throw InputError("--precision: at least 64 bits");
+  OutputFiles out;  // checked before computing, written all or none at the end
+  out.expect(o.json_path, "--json");
+  out.expect(o.svg_path, "--svg");
   const LoadedInput in = load_input(o.input);
   if (!o.svg_path.empty() && !in.scene)
     throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
@@ -112,8 +115,9 @@ void run_extract(const ExtractCommandOptions& o) {
     }
     svg_text = arrangement_svg(*in.scene, in.arranged->arrangement, in.complex(), svg);
   }
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, json_text);
-  if (!o.svg_path.empty()) write_file_atomically(o.svg_path, svg_text);
+  out.put(o.json_path, json_text);
+  out.put(o.svg_path, svg_text);
+  out.commit();
   if (!o.quiet && o.json_path != "-") std::cout << summary(in, problem, result, o);
 }
 

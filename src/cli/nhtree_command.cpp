@@ -172,14 +172,23 @@ int print_graph_comparison(const nhrep::PatchGraph& original, const NhrepReferen
   return static_cast<int>(c.differences.size());
 }
 
-void write_outputs(const NhtreeOptions& o, const nhrep::BuildResult& r, const std::vector<std::vector<int>>* groups,
-                   nlohmann::json extra) {
+/// Every output path of the run, checked before any work (written all or none by OutputFiles::commit).
+void expect_outputs(const NhtreeOptions& o, OutputFiles& out) {
+  out.expect(o.json_path, "--json");
+  out.expect(o.conf_path, "--conf");
+  out.expect(o.svg_path, "--svg");
+  if (!o.decomposed_prefix.empty())
+    for (const char* suffix : {".obj", ".fea", ".face-patch.txt"}) out.expect(o.decomposed_prefix + suffix, "--decomposed");
+}
+
+void put_outputs(const NhtreeOptions& o, const nhrep::BuildResult& r, const std::vector<std::vector<int>>* groups,
+                 nlohmann::json extra, OutputFiles& files) {
   if (!o.json_path.empty()) {
     nlohmann::json doc = nhtree_to_json(r, groups);
     for (auto& [key, value] : extra.items()) doc[key] = value;
-    write_file_atomically(o.json_path, doc.dump(1) + "\n");
+    files.put(o.json_path, doc.dump(1) + "\n");
   }
-  if (!o.conf_path.empty()) write_file_atomically(o.conf_path, nhtree_conf(r));
+  if (!o.conf_path.empty()) files.put(o.conf_path, nhtree_conf(r));
 }
 
 /// Groups (when asked for) and cross-check 1; returns the exit status (3 when a check failed).
@@ -205,7 +214,7 @@ NhrepReference read_references(const NhtreeOptions& o) {
   return read_nhrep_reference({o.reference_conf, o.reference_face_patch, o.reference_graph});
 }
 
-int run_mesh(const NhtreeOptions& o) {
+int run_mesh(const NhtreeOptions& o, OutputFiles& files) {
   if (o.fea_path.empty()) throw InputError("nhtree: a mesh needs its feature edges: --fea FILE");
   if (!o.svg_path.empty()) throw InputError("nhtree: --svg draws 2D solids only");
   const std::string sharp_text = !o.sharp_angle.empty() ? o.sharp_angle : o.nhrep_tool ? "20" : "0";
@@ -240,12 +249,12 @@ int run_mesh(const NhtreeOptions& o) {
                           {"nest_holes", o.nest_holes}};
   if (reference.tree) extra["reference_equal"] = print_reference_comparison(r, reference, out);
   if (graph_differences) extra["reference_graph_differences"] = *graph_differences;
-  write_outputs(o, r, o.group ? &groups : nullptr, extra);
+  put_outputs(o, r, o.group ? &groups : nullptr, extra, files);
   if (!o.decomposed_prefix.empty()) {
     const DecomposedMesh d = write_decomposed_mesh(mesh, r.graph, nhtree_conf_ids(r.graph));
-    write_file_atomically(o.decomposed_prefix + ".obj", d.obj);
-    write_file_atomically(o.decomposed_prefix + ".fea", d.fea);
-    write_file_atomically(o.decomposed_prefix + ".face-patch.txt", d.face_patch);
+    files.put(o.decomposed_prefix + ".obj", d.obj);
+    files.put(o.decomposed_prefix + ".fea", d.fea);
+    files.put(o.decomposed_prefix + ".face-patch.txt", d.face_patch);
     out << "decomposed mesh " << o.decomposed_prefix << ".obj: " << d.faces << " triangles (" << d.split_faces
         << (d.split_faces == 1 ? " input triangle" : " input triangles") << " split), " << d.feature_edges
         << " feature edges\n";
@@ -271,7 +280,7 @@ void print_evaluation(const nhrep::PlanarEvaluation& pe, std::ostream& out) {
   for (const std::string& v : e.violations) out << "  violated: " << v << "\n";
 }
 
-int run_planar(const NhtreeOptions& o) {
+int run_planar(const NhtreeOptions& o, OutputFiles& files) {
   if (!o.fea_path.empty()) throw InputError("nhtree: --fea belongs to a mesh (.obj) input");
   if (!o.decomposed_prefix.empty()) throw InputError("nhtree: --decomposed writes meshes; use --json for 2D");
   if (!o.reference_conf.empty() || !o.reference_face_patch.empty() || !o.reference_graph.empty())
@@ -293,16 +302,20 @@ int run_planar(const NhtreeOptions& o) {
   const int status = finish(o, r, groups, e.evaluation.violations, out);
   nlohmann::json extra = nhtree_planar_json(t, e);
   extra["input"] = o.input;
-  write_outputs(o, r, o.group ? &groups : nullptr, extra);
+  put_outputs(o, r, o.group ? &groups : nullptr, extra, files);
   if (!o.svg_path.empty())
-    write_file_atomically(o.svg_path, nhrep_svg(*in.scene, arranged, solid.cells, r.graph.surface, r.graph.piece_patch,
+    files.put(o.svg_path, nhrep_svg(*in.scene, arranged, solid.cells, r.graph.surface, r.graph.piece_patch,
                                                 t.leaf_node, "NH-Rep tree: " + nhtree_text(r.tree)));
   return status;
 }
 
 int run_nhtree(const NhtreeOptions& o) {
   if (o.max_group < 1) throw InputError("--max-group must be at least 1");
-  return ends_with(o.input, ".obj") ? run_mesh(o) : run_planar(o);
+  OutputFiles files;
+  expect_outputs(o, files);
+  const int status = ends_with(o.input, ".obj") ? run_mesh(o, files) : run_planar(o, files);
+  files.commit();
+  return status;
 }
 
 }  // namespace

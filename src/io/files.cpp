@@ -202,6 +202,7 @@ OutputFiles::~OutputFiles() {
 }
 
 void OutputFiles::expect(const std::string& path, const std::string& option) {
+  if (path.empty()) return;
   Target t;
   t.path = path;
   t.option = option;
@@ -218,6 +219,7 @@ void OutputFiles::expect(const std::string& path, const std::string& option) {
 }
 
 void OutputFiles::put(const std::string& path, std::string content) {
+  if (path.empty()) return;
   const auto it = impl_->by_path.find(path);
   if (it == impl_->by_path.end()) throw std::logic_error("OutputFiles::put: \"" + path + "\" was not expected");
   Target& t = impl_->targets[it->second];
@@ -275,6 +277,7 @@ void OutputFiles::commit() {
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {
+  if (path.empty()) fail("", path, "an empty path");
   OutputFiles out;
   out.expect(path, "");
   out.put(path, content);

@@ -48,8 +48,9 @@ class OutputFiles {
   OutputFiles& operator=(const OutputFiles&) = delete;
 
   /// Checks now that `path` can be written under the policy, and reserves it: for a regular file, its temporary
-  /// file is created at once. `option` names the path in messages ("--json"). An empty path, or a path expected
-  /// twice (also through a different spelling or a link), is refused. Throws OutputError.
+  /// file is created at once. `option` names the path in messages ("--json"). An empty path is an output not asked
+  /// for: ignored (here and by put). A path expected twice (also through another spelling or a link) is refused.
+  /// Throws OutputError.
   void expect(const std::string& path, const std::string& option);
   /// The content for an expected path (std::logic_error when it was not expected: a bug).
   void put(const std::string& path, std::string content);

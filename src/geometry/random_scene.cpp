@@ -240,8 +240,9 @@ class Builder {
       case Degeneracy::DisksTangentInside: {
         const PointQ2 c = point();
         const long k1 = rng_.in(2, 3L * s_.denominator);
-        const Rational r1 = grid(k1), r2 = grid(rng_.in(1, k1 - 1));  // 0 < r2 < r1
+        const Rational r1 = grid(k1);
         disk_at(c, r1);
+        const Rational r2 = grid(rng_.in(1, k1 - 1));  // 0 < r2 < r1
         disk_at(canonical(add(c, scale(unit_vector(), r1 - r2))), r2);
         break;
       }

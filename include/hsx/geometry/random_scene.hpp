@@ -14,10 +14,10 @@
 //    - half-plane "L<n>": p = point(), normal (a, b) = (in(-3, 3), in(-3, 3)), (1, 0) if both are 0; line through p;
 //    - disk "D<n>": centre point(), radius positive(max_radius);
 //    - polygon "P<n>", by in(0, 2): 0, star-shaped around c = point(): k = in(3, 7) vertices at directions of the
-//      16 primitive integer directions of max-norm <= 2 (counter-clockwise from (1, 0)), index i0 = in(0, 15) and
-//      gaps g_1..g_{k-1} each in(1, G) (G = 7, 6, 5, 4 for k = 3, 4, 5, >= 6), redrawn together until their sum is
-//      in [9, 15] (angular gaps below pi); vertex j = c + (in(1, 2 * denominator) * g) * direction; reversed when
-//      one_in(2); 1, an axis rectangle: a = point(), b = a + (positive(3), positive(3)), corners from a
+//      16 primitive integer directions of max-norm <= 2 (counter-clockwise from (1, 0)): gaps g_1..g_{k-1} each
+//      in(1, G) (G = 7, 6, 5, 4 for k = 3, 4, 5, >= 6), redrawn together until their sum is in [9, 15] (angular
+//      gaps below pi), then the first direction's index i0 = in(0, 15); vertex j = c + (in(1, 2 * denominator) * g)
+//      * direction(i0 + g_1 + ... + g_j); reversed when one_in(2); 1, an axis rectangle: a = point(), b = a + (positive(3), positive(3)), corners from a
 //      counter-clockwise, rotated left by in(0, 3), reversed when one_in(2); 2, a triangle a, a + g (d0, d1),
 //      a + g (d2, d3), d = 4 x in(-4, 4) redrawn until d0 d3 != d1 d2.
 //    Every line "through p with normal n" flips to (-n, -n . p) when one_in(2) (the same line, the other side);
@@ -31,7 +31,8 @@
 //    (drawn in that order); domain_given = true; validate_and_resolve.
 // 6. Samples when max_samples > 0: the candidates of halfspace i are rational_boundary_points plus the midpoints of
 //    the rational segment edges of the sample-free arrangement that carry i, kept when sample_fits; count =
-//    in(0, max_samples) samples, each a uniformly picked candidate (halfspace order, then candidate order); for a
+//    in(0, max_samples) samples (nothing is drawn when there is no candidate), each a uniformly picked candidate
+//    (halfspace order, then candidate order); for a
 //    half-plane or a disk made `near` when rng.percent(near_percent): then the given point is p + t n (half-plane,
 //    t picked from {1/2, -1, 1}) or c + t (p - c) (disk, t picked from {1/2, 2}), snapped back to p exactly.
 //    validate_and_resolve again.
@@ -61,15 +62,16 @@ enum class Degeneracy {
   DisksTangentOutside,
   /// cost 2 (disks): disk c = point(), r1 = in(2, 3 denominator) g; disk c + (r1 - r2) u, r2 = in(1, r1/g - 1) g
   DisksTangentInside,
-  /// cost 3 (half-planes): p = point(); 4 lines when the budget allows 4 and one_in(2), else 3, through p, with
-  /// distinct directions among the first 8 of the 16 (each picked from the remaining ones)
+  /// cost 3 (half-planes): p = point(); 4 lines when the budget allows 4 and one_in(2) (drawn only then), else 3,
+  /// through p, normal to distinct directions among the first 8 of the 16 (each picked from the remaining ones)
   ConcurrentLines,
   /// cost 2 (half-planes and polygons): a random polygon and a line through a picked vertex (normal as in step 2)
   PolygonVertexOnLine,
   /// cost 2 (polygons and disks): a random polygon and the disk of radius r = positive(2) through a picked vertex
   /// v: centre v - r u, u a picked unit vector
   PolygonVertexOnCircle,
-  /// cost 2 (half-planes and polygons): a random polygon and the line through its edge k = in(0, k - 1)
+  /// cost 2 (half-planes and polygons): a random polygon (m vertices) and the line through its edge from vertex
+  /// e = in(0, m - 1) to e + 1, normal the edge direction turned counter-clockwise (then flipped as in step 2)
   HalfplaneOnPolygonEdge,
   /// cost 2 (polygons): rectangles [x0, x1] x [y0, y1] and [x1, x2] x [y2, y3]: (x0, y0) = point(),
   /// x1 = x0 + positive(2), x2 = x1 + positive(2), y1 = y0 + k1 g with k1 = in(1, 3 den), y2 = y0 + in(-2 den,

@@ -219,84 +219,92 @@ class Builder {
     switch (d) {
       case Degeneracy::RepeatedHalfspace: repeat(false); break;
       case Degeneracy::ComplementTwin: repeat(true); break;
-      case Degeneracy::LineTangentToDisk: {
-        const PointQ2 c = point();
-        const Rational r = positive(s_.max_radius);
-        disk_at(c, r);
-        // Tangent at c + r u with normal u: u . x = u . c + r.
-        const long m = rng_.in(1, 3);
-        const PointQ2 u = rng_.one_in(2) ? unit(1) : unit_vector();
-        line_through(canonical(add(c, scale(u, r))), scale(u, Rational(m)));
-        break;
-      }
-      case Degeneracy::DisksTangentOutside: {
-        const PointQ2 c = point();
-        const Rational r1 = positive(2);
-        disk_at(c, r1);
-        const Rational r2 = positive(2);
-        disk_at(canonical(add(c, scale(unit_vector(), r1 + r2))), r2);
-        break;
-      }
-      case Degeneracy::DisksTangentInside: {
-        const PointQ2 c = point();
-        const long k1 = rng_.in(2, 3L * s_.denominator);
-        const Rational r1 = grid(k1);
-        disk_at(c, r1);
-        const Rational r2 = grid(rng_.in(1, k1 - 1));  // 0 < r2 < r1
-        disk_at(canonical(add(c, scale(unit_vector(), r1 - r2))), r2);
-        break;
-      }
-      case Degeneracy::ConcurrentLines: {
-        const PointQ2 p = point();
-        const int lines = budget >= 4 && rng_.one_in(2) ? 4 : 3;
-        std::vector<int> left(8);  // distinct directions among the first 8 (a half turn): distinct lines
-        std::iota(left.begin(), left.end(), 0);
-        std::vector<int> dirs;
-        for (int k = 0; k < lines; ++k) {
-          const std::size_t j = rng_.index(left.size());
-          dirs.push_back(left[j]);
-          left.erase(left.begin() + static_cast<long>(j));
-        }
-        for (int k : dirs) line_through(p, PointQ2{Rational(-kDirections[k].second), Rational(kDirections[k].first)});
-        break;
-      }
-      case Degeneracy::PolygonVertexOnLine: {
-        std::vector<PointQ2> v = polygon_vertices();
-        const PointQ2 p = rng_.pick(v);
-        polygon_from(v);
-        line_through(p, small_normal());
-        break;
-      }
-      case Degeneracy::PolygonVertexOnCircle: {
-        std::vector<PointQ2> v = polygon_vertices();
-        const PointQ2 p = rng_.pick(v);
-        polygon_from(v);
-        const Rational r = positive(2);
-        disk_at(canonical(sub(p, scale(unit_vector(), r))), r);
-        break;
-      }
-      case Degeneracy::HalfplaneOnPolygonEdge: {
-        std::vector<PointQ2> v = polygon_vertices();
-        const std::size_t k = rng_.index(v.size());
-        const PointQ2 a = v[k], b = v[(k + 1) % v.size()];
-        polygon_from(v);
-        const PointQ2 e = sub(b, a);
-        line_through(a, PointQ2{-e.y, e.x});
-        break;
-      }
-      case Degeneracy::PolygonsSharingEdge: {
-        const PointQ2 a = point();
-        const Rational x1 = a.x + positive(2);
-        const Rational x2 = x1 + positive(2);
-        const long k1 = rng_.in(1, 3L * s_.denominator);  // y1 = y0 + positive(3)
-        const Rational y1 = a.y + grid(k1);
-        const Rational y2 = a.y + grid(rng_.in(-2L * s_.denominator, k1 - 1));  // y2 < y1: the edges overlap
-        const Rational y3 = std::max(y2, a.y) + positive(2);
-        polygon_from({a, {x1, a.y}, {x1, y1}, {a.x, y1}});
-        polygon_from({{x1, y2}, {x2, y2}, {x2, y3}, {x1, y3}});
-        break;
-      }
+      case Degeneracy::LineTangentToDisk: line_tangent_to_disk(); break;
+      case Degeneracy::DisksTangentOutside: disks_tangent_outside(); break;
+      case Degeneracy::DisksTangentInside: disks_tangent_inside(); break;
+      case Degeneracy::ConcurrentLines: concurrent_lines(budget); break;
+      case Degeneracy::PolygonVertexOnLine: polygon_vertex_on_line(); break;
+      case Degeneracy::PolygonVertexOnCircle: polygon_vertex_on_circle(); break;
+      case Degeneracy::HalfplaneOnPolygonEdge: halfplane_on_polygon_edge(); break;
+      case Degeneracy::PolygonsSharingEdge: polygons_sharing_edge(); break;
     }
+  }
+
+  void line_tangent_to_disk() {
+    const PointQ2 c = point();
+    const Rational r = positive(s_.max_radius);
+    disk_at(c, r);
+    // Tangent at c + r u with normal u: u . x = u . c + r.
+    const long m = rng_.in(1, 3);
+    const PointQ2 u = rng_.one_in(2) ? unit(1) : unit_vector();
+    line_through(canonical(add(c, scale(u, r))), scale(u, Rational(m)));
+  }
+
+  void disks_tangent_outside() {
+    const PointQ2 c = point();
+    const Rational r1 = positive(2);
+    disk_at(c, r1);
+    const Rational r2 = positive(2);
+    disk_at(canonical(add(c, scale(unit_vector(), r1 + r2))), r2);
+  }
+
+  void disks_tangent_inside() {
+    const PointQ2 c = point();
+    const long k1 = rng_.in(2, 3L * s_.denominator);
+    const Rational r1 = grid(k1);
+    disk_at(c, r1);
+    const Rational r2 = grid(rng_.in(1, k1 - 1));  // 0 < r2 < r1
+    disk_at(canonical(add(c, scale(unit_vector(), r1 - r2))), r2);
+  }
+
+  void concurrent_lines(int budget) {
+    const PointQ2 p = point();
+    const int lines = budget >= 4 && rng_.one_in(2) ? 4 : 3;
+    std::vector<int> left(8);  // distinct directions among the first 8 (a half turn): distinct lines
+    std::iota(left.begin(), left.end(), 0);
+    std::vector<int> dirs;
+    for (int k = 0; k < lines; ++k) {
+      const std::size_t j = rng_.index(left.size());
+      dirs.push_back(left[j]);
+      left.erase(left.begin() + static_cast<long>(j));
+    }
+    for (int k : dirs) line_through(p, PointQ2{Rational(-kDirections[k].second), Rational(kDirections[k].first)});
+  }
+
+  void polygon_vertex_on_line() {
+    std::vector<PointQ2> v = polygon_vertices();
+    const PointQ2 p = rng_.pick(v);
+    polygon_from(v);
+    line_through(p, small_normal());
+  }
+
+  void polygon_vertex_on_circle() {
+    std::vector<PointQ2> v = polygon_vertices();
+    const PointQ2 p = rng_.pick(v);
+    polygon_from(v);
+    const Rational r = positive(2);
+    disk_at(canonical(sub(p, scale(unit_vector(), r))), r);
+  }
+
+  void halfplane_on_polygon_edge() {
+    std::vector<PointQ2> v = polygon_vertices();
+    const std::size_t k = rng_.index(v.size());
+    const PointQ2 a = v[k], b = v[(k + 1) % v.size()];
+    polygon_from(v);
+    const PointQ2 e = sub(b, a);
+    line_through(a, PointQ2{-e.y, e.x});
+  }
+
+  void polygons_sharing_edge() {
+    const PointQ2 a = point();
+    const Rational x1 = a.x + positive(2);
+    const Rational x2 = x1 + positive(2);
+    const long k1 = rng_.in(1, 3L * s_.denominator);  // y1 = y0 + positive(3)
+    const Rational y1 = a.y + grid(k1);
+    const Rational y2 = a.y + grid(rng_.in(-2L * s_.denominator, k1 - 1));  // y2 < y1: the edges overlap
+    const Rational y3 = std::max(y2, a.y) + positive(2);
+    polygon_from({a, {x1, a.y}, {x1, y1}, {a.x, y1}});
+    polygon_from({{x1, y2}, {x2, y2}, {x2, y3}, {x1, y3}});
   }
 
   int count() const { return static_cast<int>(scene_.halfspaces.size()); }

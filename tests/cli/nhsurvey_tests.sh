@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end tests of `hsx nhsurvey` (NH-Rep trees with natural halfspaces over many 2D solids).
 # Usage: nhsurvey_tests.sh PATH/TO/hsx SOURCE_DIR
-# - a small random run exits 0, says every structural check holds, counts every solid once in its table row, and
-#   is byte-for-byte deterministic; solid i does not depend on N (one solid can be reproduced alone);
+# - a small random run exits 0, says every structural check holds, counts every solid once in its table row, has
+#   the pinned --seed 1 rows, and is byte-for-byte deterministic; solid i does not depend on N (one solid can be
+#   reproduced alone);
 # - a scene (BSH graph cut) with a known "describable but fails" shape: the row's counts, and --keep writes a scene
 #   and a .csg that `hsx describe` reads back as describable;
 # - the kept counterexamples in data/counterexamples/nhrep are classified "describable but the tree fails";
@@ -46,6 +47,14 @@ if ((${csg_correct:-0} + ${csg_dfails:-0} + ${csg_not:-0} == ${csg_solids:-1})) 
   pass
 else
   fail "random run: verdicts do not add up to the solids: '$csg_row' / '$cells_row'"
+fi
+# The random solids are pinned (csg::random_solid's procedure; proofs/nhrep.md's Rates depend on it): these rows
+# change only when the generator or the pipeline does.
+if [[ "$csg_row" == "random csg           30       0          0      0 (0.0%)     28 (93.3%)           2 (6.7%)           1        0 (0.0%)            -" &&
+  "$cells_row" == "random cells         30       0          0      0 (0.0%)     24 (80.0%)          4 (13.3%)           1        2 (6.7%)            -" ]]; then
+  pass
+else
+  fail "random run: the --seed 1 rows changed: '$csg_row' / '$cells_row'"
 fi
 "$HSX" nhsurvey --random 60 --seed 1 >"$TMP/r2.txt" 2>/dev/null
 if cmp -s "$TMP/r1.txt" "$TMP/r2.txt"; then pass; else fail "random run is not deterministic"; fi

@@ -1,26 +1,16 @@
-// Random valid 2D scenes for property tests (rapidcheck), and small helpers to build, transform and show scenes.
+// Random valid 2D scenes for property tests (rapidcheck): a thin adapter over the library's generator
+// (geometry/random_scene.hpp, which documents what a scene contains and the degeneracies it forces), and small
+// helpers to build, transform and show scenes.
 //
-// What gen_scene produces (every scene is validated: validate_and_resolve has been called and did not throw):
-// - a few halfspaces (half-planes, disks, polygons, some complemented) with small rational data: centres, line
-//   anchor points and polygon start points are multiples of 1/denominator with |x| <= coordinate_bound (polygon
-//   vertices and the parts of degenerate patterns lie up to ~6 further out), radii are multiples of
-//   1/denominator in (0, 3]; points on circles use Pythagorean unit vectors (denominators 5 and 13);
-// - polygons are simple: star-shaped around a rational point (vertices at sorted, distinct directions, angular
-//   gaps below pi, so three consecutive vertices may be collinear), axis-aligned rectangles, or triangles;
-// - on purpose, degenerate configurations (see Degeneracy): a halfspace repeated exactly, a halfspace and its
-//   complement, a line tangent to a disk, disks tangent from outside and from inside, three or four lines through
-//   one rational point, a polygon vertex on a line or on a circle, a half-plane containing a polygon edge, two
-//   polygons sharing part of an edge;
-// - an explicit domain (domain_given = true) that contains every disk, polygon and line anchor point with a
-//   margin of at least 1, so no disk or polygon touches the box and every line crosses the box's interior;
-// - optionally `at` (and `near`) samples at exact rational boundary points (a line point, a polygon vertex or
-//   edge point, a disk point centre + r*u for a rational unit vector u, the midpoint of an arrangement edge), kept
-//   only when they lie inside a patch: a sample on an arrangement vertex where boundaries meet is dropped (checked
-//   exactly with the arrangement of the scene without samples), so Arrangement2::build(scene) does not throw.
-// Scenes are small (at most max_halfspaces halfspaces): one arrangement takes a few milliseconds.
+// gen_scene: rapidcheck draws the seed (not shrunk) and hands SceneGenOptions to random_scene (RandomSceneSettings);
+// it shrinks by lowering max_halfspaces towards 1 and max_samples towards 0 and by turning complements off, each
+// shrink a new scene of the same seed. Draws are uniform from the first test on (the library's own integer draws;
+// rapidcheck's size plays no part). Scenes are small: one arrangement takes a few milliseconds.
 #pragma once
 
 #include <hsx/geometry/arrangement2.hpp>
+#include <hsx/geometry/random_scene.hpp>
+#include <hsx/geometry/scene_builders.hpp>
 #include <hsx/geometry/scene.hpp>
 
 #include <rapidcheck.h>
@@ -31,22 +21,11 @@
 
 namespace hsx::test {
 
-/// The forced degeneracies gen_scene can add; each adds the halfspaces it needs (cost: 1 to 4 halfspaces).
-enum class Degeneracy {
-  RepeatedHalfspace,        ///< an existing halfspace given again exactly (a support group of size 2)
-  ComplementTwin,           ///< an existing halfspace (a disk when there is one) given again, complemented
-  LineTangentToDisk,        ///< a disk and a line tangent to it (y = b + r, or along a rational unit normal)
-  DisksTangentOutside,      ///< two disks touching from outside at a rational point
-  DisksTangentInside,       ///< a disk inside another, touching it at a rational point
-  ConcurrentLines,          ///< three or four lines through one rational point
-  PolygonVertexOnLine,      ///< a polygon and a line through one of its vertices
-  PolygonVertexOnCircle,    ///< a polygon and a circle through one of its vertices
-  HalfplaneOnPolygonEdge,   ///< a polygon and a half-plane whose line contains one of its edges
-  PolygonsSharingEdge,      ///< two rectangles side by side, sharing part of an edge
-};
-inline constexpr int kDegeneracyCount = 10;
-const char* to_string(Degeneracy d);
+using hsx::Degeneracy;  // the forced degeneracies (geometry/random_scene.hpp)
+using hsx::kDegeneracyCount;
+using hsx::to_string;
 
+/// What gen_scene asks of random_scene (RandomSceneSettings; the fields below map one to one, see there).
 struct SceneGenOptions {
   /// At most this many halfspaces in total (degeneracies included); at least 1 is always generated.
   int max_halfspaces = 6;
@@ -69,21 +48,21 @@ struct SceneGenOptions {
   int denominator = 2;       ///< coordinates and radii are multiples of 1/denominator
 };
 
-/// Random valid scene; see the header comment. Draws are uniform from the first test on (rapidcheck's size does
-/// not shrink the ranges) and shrink towards fewer halfspaces, no complement and no samples. Counterexamples print
-/// as hsx-scene/1 JSON (showValue below), ready to save as a file and run with `hsx arrange`.
+/// Random valid scene: random_scene(settings, seed, 0) with a rapidcheck-drawn seed; see the header comment.
+/// Counterexamples print as hsx-scene/1 JSON (showValue below), ready to save as a file and run with `hsx arrange`.
 rc::Gen<Scene2> gen_scene(const SceneGenOptions& options = {});
+
+/// The library settings gen_scene uses for `options` (before any shrinking).
+RandomSceneSettings scene_settings(const SceneGenOptions& options);
 
 /// A rational point strictly inside `box`, coordinates multiples of 1/denominator.
 rc::Gen<PointQ2> gen_point_in(const Box2& box, int denominator = 2);
 
-/// Rational points on the boundary of `h` that lie strictly inside `box` (not necessarily inside patches): line
-/// points, polygon vertices and edge points, disk points centre + r*u for rational unit vectors u.
-std::vector<PointQ2> boundary_points(const Halfspace2& h, const Box2& box);
-
-/// True when an `at` sample of halfspace `halfspace` at `p` would be accepted by Arrangement2::build: p lies on an
-/// edge carrying the halfspace (not on the box), or on a degree-2 vertex inside one run of such edges.
-bool sample_fits(const Arrangement2& arrangement, int halfspace, const PointQ2& p);
+/// rational_boundary_points (geometry/random_scene.hpp).
+inline std::vector<PointQ2> boundary_points(const Halfspace2& h, const Box2& box) {
+  return rational_boundary_points(h, box);
+}
+using hsx::sample_fits;  // geometry/random_scene.hpp
 
 /// The scene translated by `offset` (domain, halfspaces, samples), validated again.
 Scene2 translated(const Scene2& scene, const PointQ2& offset);
@@ -95,9 +74,9 @@ Scene2 permuted(const Scene2& scene, const std::vector<int>& order);
 // ---- builders for hand-written scenes ----
 Rational q(const std::string& text);  ///< exact rational from text ("-7/3", "0.5"); throws on bad text
 PointQ2 pt(const Rational& x, const Rational& y);
-Halfspace2 halfplane(const std::string& name, const PointQ2& normal, const Rational& offset, bool complement = false);
-Halfspace2 disk(const std::string& name, const PointQ2& center, const Rational& radius, bool complement = false);
-Halfspace2 polygon(const std::string& name, std::vector<PointQ2> vertices, bool complement = false);
+using hsx::disk;  // geometry/scene_builders.hpp
+using hsx::halfplane;
+using hsx::polygon;
 /// `at` sample on the halfspace named `on` (which must exist in `scene`).
 void add_sample(Scene2& scene, const std::string& on, const PointQ2& at, bool near = false);
 /// A scene with the given domain and halfspaces, validated (samples can be added with add_sample and then

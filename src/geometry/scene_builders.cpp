@@ -1,0 +1,39 @@
+#include <hsx/geometry/scene_builders.hpp>
+
+namespace hsx {
+
+Halfspace2 halfplane(const std::string& name, const PointQ2& normal, const Rational& offset, bool complement) {
+  Halfspace2 h;
+  h.name = name;
+  h.kind = HalfspaceKind2::Halfplane;
+  h.normal = normal;
+  h.offset = offset;
+  h.complement = complement;
+  return h;
+}
+
+Halfspace2 halfplane_through(const std::string& name, const PointQ2& normal, const PointQ2& through,
+                             bool complement) {
+  return halfplane(name, normal, normal.x * through.x + normal.y * through.y, complement);
+}
+
+Halfspace2 disk(const std::string& name, const PointQ2& center, const Rational& radius, bool complement) {
+  Halfspace2 h;
+  h.name = name;
+  h.kind = HalfspaceKind2::Disk;
+  h.center = center;
+  h.radius = radius;
+  h.complement = complement;
+  return h;
+}
+
+Halfspace2 polygon(const std::string& name, std::vector<PointQ2> vertices, bool complement) {
+  Halfspace2 h;
+  h.name = name;
+  h.kind = HalfspaceKind2::Polygon;
+  h.vertices = std::move(vertices);
+  h.complement = complement;
+  return h;
+}
+
+}  // namespace hsx

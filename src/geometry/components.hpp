@@ -9,6 +9,7 @@
 #include <boost/graph/connected_components.hpp>
 #include <boost/pending/disjoint_sets.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -93,6 +94,27 @@ inline Components graph_components(std::size_t n, const std::vector<std::pair<in
   std::vector<int> label(n);
   if (n > 0) boost::connected_components(graph, label.data());
   return components_by_lowest(label);
+}
+
+/// Connected components of the subgraph on `vertices` (ascending and distinct, any ints) with the given edges
+/// (pairs of entries of `vertices`): each component as its vertices, ascending, components ordered by their lowest
+/// vertex. The graph is built on `vertices` alone, so the cost does not depend on how large the ids are. Throws
+/// std::out_of_range when an edge end is not in `vertices`.
+inline std::vector<std::vector<int>> induced_components(const std::vector<int>& vertices,
+                                                        const std::vector<std::pair<int, int>>& edges) {
+  auto position = [&](int v) {
+    const auto it = std::lower_bound(vertices.begin(), vertices.end(), v);
+    if (it == vertices.end() || *it != v)
+      throw std::out_of_range("induced_components: edge end " + std::to_string(v) + " is not a vertex");
+    return static_cast<int>(it - vertices.begin());
+  };
+  std::vector<std::pair<int, int>> local;
+  local.reserve(edges.size());
+  for (const auto& [a, b] : edges) local.emplace_back(position(a), position(b));
+  std::vector<std::vector<int>> out = graph_components(vertices.size(), local).members();
+  for (auto& component : out)
+    for (int& v : component) v = vertices[static_cast<std::size_t>(v)];
+  return out;
 }
 
 }  // namespace hsx

@@ -56,8 +56,9 @@ struct Components {
   }
 };
 
-/// Renumbers any labelling of 0..n-1 (label[e]: any int naming e's component) by lowest element: the component of
-/// element 0 becomes 0, the next element with a label not seen yet starts component 1, and so on.
+/// Renumbers a labelling of 0..n-1 (label[e] >= 0 names e's component; labels need not be dense) by lowest element:
+/// element 0's component becomes 0, the next element with a label not seen yet starts component 1, and so on.
+/// Throws std::invalid_argument for a negative label.
 inline Components components_by_lowest(const std::vector<int>& label) {
   Components c;
   c.of.resize(label.size());
@@ -65,8 +66,9 @@ inline Components components_by_lowest(const std::vector<int>& label) {
   for (std::size_t e = 0; e < label.size(); ++e) {
     const int l = label[e];
     if (l < 0) throw std::invalid_argument("components_by_lowest: negative label " + std::to_string(l));
-    if (static_cast<std::size_t>(l) >= number_of_label.size()) number_of_label.resize(static_cast<std::size_t>(l) + 1, -1);
-    int& number = number_of_label[static_cast<std::size_t>(l)];
+    const std::size_t slot = static_cast<std::size_t>(l);
+    if (slot >= number_of_label.size()) number_of_label.resize(slot + 1, -1);
+    int& number = number_of_label[slot];
     if (number < 0) number = c.count++;
     c.of[e] = number;
   }

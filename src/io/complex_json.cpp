@@ -908,7 +908,8 @@ void read_junction_list(const JsonField& js, ComplexDocument& doc) {
     check_id(f, j);
     Junction& junction = c.junctions[j];
     junction.patches = read_index_set(f.at("patches"), c.patches.size(), "patch");
-    if (auto v = f.get("vertex")) junction.piece = read_geometry_index(*v, doc, doc.vertices.size(), "vertex", "vertex");
+    if (auto v = f.get("vertex"))
+      junction.piece = read_geometry_index(*v, doc, doc.vertices.size(), "vertex", "vertex");
   }
 }
 

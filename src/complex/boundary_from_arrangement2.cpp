@@ -1,6 +1,7 @@
 // A 2D solid's boundary as a BoundarySurface: see boundary_from_arrangement2.hpp.
 #include <hsx/complex/boundary_from_arrangement2.hpp>
 
+#include "geometry/components.hpp"
 #include "geometry/planar_corners.hpp"
 
 #include <stdexcept>
@@ -23,30 +24,23 @@ FeatureType feature_type_of(CornerAngle angle) {
 /// (-1 for the others), and per component whether it holds an outer face (reaches the domain box, hence infinity).
 std::vector<int> face_components(const Arrangement2& arr, const std::vector<char>& solid, char want,
                                  std::vector<char>& touches_box) {
-  std::vector<int> component(arr.faces().size(), -1);
-  std::vector<std::vector<int>> neighbours(arr.faces().size());
+  const std::size_t n = arr.faces().size();
+  std::vector<std::pair<int, int>> edges;
   for (const ArrEdge2& e : arr.edges())
-    if (e.left_face >= 0 && e.right_face >= 0) {
-      neighbours[static_cast<std::size_t>(e.left_face)].push_back(e.right_face);
-      neighbours[static_cast<std::size_t>(e.right_face)].push_back(e.left_face);
-    }
+    if (e.left_face >= 0 && e.right_face >= 0 && solid[static_cast<std::size_t>(e.left_face)] == want &&
+        solid[static_cast<std::size_t>(e.right_face)] == want)
+      edges.emplace_back(e.left_face, e.right_face);
+  std::vector<char> wanted(n);
+  for (std::size_t f = 0; f < n; ++f) wanted[f] = solid[f] == want;
+  std::vector<int> component(n, -1);
   touches_box.clear();
-  for (std::size_t start = 0; start < arr.faces().size(); ++start) {
-    if (solid[start] != want || component[start] >= 0) continue;
-    const int id = static_cast<int>(touches_box.size());
-    touches_box.push_back(0);
-    std::vector<int> stack{static_cast<int>(start)};
-    component[start] = id;
-    while (!stack.empty()) {
-      const int f = stack.back();
-      stack.pop_back();
-      if (arr.faces()[static_cast<std::size_t>(f)].outer) touches_box[static_cast<std::size_t>(id)] = 1;
-      for (int g : neighbours[static_cast<std::size_t>(f)])
-        if (solid[static_cast<std::size_t>(g)] == want && component[static_cast<std::size_t>(g)] < 0) {
-          component[static_cast<std::size_t>(g)] = id;
-          stack.push_back(g);
-        }
+  for (const std::vector<int>& faces : graph_components(n, edges).members(wanted)) {  // by lowest face
+    char outer = 0;
+    for (int f : faces) {
+      component[static_cast<std::size_t>(f)] = static_cast<int>(touches_box.size());
+      if (arr.faces()[static_cast<std::size_t>(f)].outer) outer = 1;
     }
+    touches_box.push_back(outer);
   }
   return component;
 }

@@ -2,6 +2,8 @@
 // numbering by lowest face index carries over unchanged.
 #include <hsx/complex/boundary_from_mesh.hpp>
 
+#include "geometry/components.hpp"
+
 namespace hsx {
 
 FeatureType mesh_edge_type(const Mesh3& mesh, int edge, const SharpnessAngle& sharpness) {
@@ -21,36 +23,31 @@ namespace {
 /// its region stays -1 (unknown).
 void set_mesh_nesting(const Mesh3& mesh, BoundarySurface& surface) {
   const std::size_t n = mesh.faces.size();
-  std::vector<int> parent(n);
-  for (std::size_t f = 0; f < n; ++f) parent[f] = static_cast<int>(f);
-  auto find = [&](int x) {
-    while (parent[static_cast<std::size_t>(x)] != x)
-      x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-    return x;
-  };
-  for (const MeshEdge& e : mesh.edges) parent[static_cast<std::size_t>(find(e.face_ab))] = find(e.face_ba);
-  std::vector<Rational> volume(n);  // six times the signed volume, per shell root
-  std::vector<std::vector<int>> shell_faces(n);
+  DisjointSets sets(n);
+  for (const MeshEdge& e : mesh.edges) sets.union_set(e.face_ab, e.face_ba);
+  const Components shells = components_of(sets, n);  // numbered by lowest triangle
+  const std::vector<std::vector<int>> shell_faces = shells.members();
+  const std::size_t count = shell_faces.size();
+  std::vector<Rational> volume(count);  // six times the signed volume, per shell
   for (std::size_t f = 0; f < n; ++f) {
     const PointQ3& a = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][0])];
     const PointQ3& b = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][1])];
     const PointQ3& c = mesh.vertices[static_cast<std::size_t>(mesh.faces[f][2])];
-    const std::size_t root = static_cast<std::size_t>(find(static_cast<int>(f)));
-    volume[root] += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
-    shell_faces[root].push_back(static_cast<int>(f));
+    volume[static_cast<std::size_t>(shells.of[f])] +=
+        a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
   }
-  std::vector<int> outer_roots;
-  std::vector<int> region(n, -1);
-  for (std::size_t r = 0; r < n; ++r)
-    if (!shell_faces[r].empty() && volume[r] > 0) {
-      region[r] = static_cast<int>(outer_roots.size());
-      outer_roots.push_back(static_cast<int>(r));
+  std::vector<int> outer_shells;
+  std::vector<int> region(count, -1);
+  for (std::size_t r = 0; r < count; ++r)
+    if (volume[r] > 0) {
+      region[r] = static_cast<int>(outer_shells.size());
+      outer_shells.push_back(static_cast<int>(r));
     }
-  for (std::size_t r = 0; r < n; ++r) {
-    if (shell_faces[r].empty() || volume[r] > 0) continue;
+  for (std::size_t r = 0; r < count; ++r) {
+    if (volume[r] > 0) continue;
     const PointQ3& probe = mesh.vertices[static_cast<std::size_t>(mesh.faces[static_cast<std::size_t>(shell_faces[r].front())][0])];
     int best = -1;
-    for (int o : outer_roots) {
+    for (int o : outer_shells) {
       const std::optional<bool> inside = point_inside_faces(mesh, shell_faces[static_cast<std::size_t>(o)], probe);
       if (!inside) {  // the cavity touches that shell: nesting unknown
         best = -1;
@@ -61,10 +58,10 @@ void set_mesh_nesting(const Mesh3& mesh, BoundarySurface& surface) {
     region[r] = best < 0 ? -1 : region[static_cast<std::size_t>(best)];
   }
   for (std::size_t f = 0; f < n; ++f) {
-    const std::size_t root = static_cast<std::size_t>(find(static_cast<int>(f)));
+    const std::size_t shell = static_cast<std::size_t>(shells.of[f]);
     BoundaryPiece& piece = surface.pieces[f];
-    piece.hole = volume[root] < 0;
-    piece.region = region[root];
+    piece.hole = volume[shell] < 0;
+    piece.region = region[shell];
   }
 }
 

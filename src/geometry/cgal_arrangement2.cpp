@@ -1,6 +1,7 @@
 // The only translation unit that instantiates CGAL's 2D arrangement (it takes ~20 s and ~1.2 GB to compile: keep
 // CGAL out of every other file). Everything it hands out is plain data (geometry/arrangement2.hpp).
 #include <hsx/geometry/arrangement2.hpp>
+#include "geometry/components.hpp"
 #include "geometry/planar_measures.hpp"
 
 #include <CGAL/Arr_circle_segment_traits_2.h>
@@ -11,7 +12,6 @@
 
 #include <algorithm>
 #include <deque>
-#include <numeric>
 #include <sstream>
 #include <unordered_map>
 
@@ -348,16 +348,9 @@ Arrangement2 Arrangement2::build(const Scene2& scene) {
 }
 
 int Arrangement2::connected_components() const {
-  std::vector<int> parent(vertices_.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (const auto& e : edges_) parent[find(e.source)] = find(e.target);
-  int count = 0;
-  for (std::size_t v = 0; v < parent.size(); ++v) count += find(static_cast<int>(v)) == static_cast<int>(v);
-  return count;
+  DisjointSets sets(vertices_.size());
+  for (const auto& e : edges_) sets.union_set(e.source, e.target);
+  return components_of(sets, vertices_.size()).count;
 }
 
 PointLocation2 Arrangement2::locate(const PointQ2& p) const {

@@ -12,6 +12,8 @@
 //   ~300,000 digits.
 #include <hsx/geometry/mesh3.hpp>
 
+#include "geometry/components.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <fstream>
@@ -108,14 +110,6 @@ std::string lines_list(const std::vector<long>& lines) {
   for (std::size_t i = 0; i < shown; ++i) out += (i ? ", " : "") + std::to_string(lines[i]);
   if (lines.size() > shown) out += ", ...";
   return out;
-}
-
-int find_set(std::vector<int>& parent, int x) {
-  while (parent[static_cast<std::size_t>(x)] != x) {
-    parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-    x = parent[static_cast<std::size_t>(x)];
-  }
-  return x;
 }
 
 }  // namespace
@@ -490,8 +484,7 @@ Mesh3 build_mesh3(ObjMesh obj) {
   const std::vector<Half> halves = halves_of(m.faces);
   m.edges.reserve(halves.size() / 2);
   m.face_edges.assign(nf, {-1, -1, -1});
-  std::vector<int> parent(nf);
-  std::iota(parent.begin(), parent.end(), 0);
+  DisjointSets shells(nf);  // faces joined across edges
   std::size_t folds = 0;
   std::string first_fold;
   for (std::size_t i = 0; i + 1 < halves.size(); i += 2) {
@@ -505,8 +498,7 @@ Mesh3 build_mesh3(ObjMesh obj) {
     const int id = static_cast<int>(m.edges.size());
     m.face_edges[static_cast<std::size_t>(h0.face)][static_cast<std::size_t>(h0.k)] = id;
     m.face_edges[static_cast<std::size_t>(h1.face)][static_cast<std::size_t>(h1.k)] = id;
-    const int ra = find_set(parent, h0.face), rb = find_set(parent, h1.face);
-    if (ra != rb) parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+    shells.union_set(h0.face, h1.face);
 
     auto third = [&](int f) {
       for (int v : m.faces[static_cast<std::size_t>(f)])
@@ -533,8 +525,7 @@ Mesh3 build_mesh3(ObjMesh obj) {
   }
   if (folds > 0)
     throw InputError(first_fold + (folds > 1 ? " (" + std::to_string(folds - 1) + " more such edges)" : std::string()));
-  for (std::size_t f = 0; f < nf; ++f)
-    if (find_set(parent, static_cast<int>(f)) == static_cast<int>(f)) ++m.shells;
+  m.shells = components_of(shells, nf).count;
   if (m.shells > 1) m.notes.push_back("the mesh has " + std::to_string(m.shells) + " shells (connected components)");
   return m;
 }

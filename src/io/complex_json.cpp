@@ -432,13 +432,10 @@ bool on_circle(const OneRootPoint& p, const PointQ2& c, const Rational& r) {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-// Geometry section
+// Geometry section: vertices, edges (then the vertex degrees they imply), faces
 
-void read_geometry(const JsonField& g, const Names& names, std::size_t cell_count, ComplexDocument& doc,
-                   Budget& budget) {
-  g.check_keys({"vertices", "edges", "faces"}, "a geometry section");
-  // Vertices
-  const JsonField jv = g.at("vertices");
+/// geometry.vertices: the points. Their degrees are known once the edges are read (check_vertex_degrees).
+void read_vertices(const JsonField& jv, ComplexDocument& doc) {
   const std::size_t nv = jv.size();
   doc.vertices.resize(nv);
   for (std::size_t k = 0; k < nv; ++k) {
@@ -447,82 +444,144 @@ void read_geometry(const JsonField& g, const Names& names, std::size_t cell_coun
     check_id(v, k);
     doc.vertices[k].point = read_one_root_point(v.at("point"));
   }
-  // Edges
-  const JsonField je = g.at("edges");
+}
+
+/// An edge's "shape", with the fields that shape allows.
+EdgeShape2 read_edge_shape(const JsonField& e) {
+  const std::string shape = e.at("shape").string();
+  if (shape == "segment") {
+    e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape", "line"},
+                 "a segment edge");
+    return EdgeShape2::Segment;
+  }
+  if (shape == "arc") {
+    e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape", "center",
+                  "radius", "ccw"},
+                 "an arc edge");
+    return EdgeShape2::Arc;
+  }
+  e.at("shape").fail("expected \"segment\" or \"arc\", got " + describe_json(e.at("shape").json()));
+}
+
+/// The halfspaces an edge lies on: names, none twice; ascending indices.
+std::vector<int> read_edge_halfspaces(const JsonField& hs, const Names& names) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < hs.size(); ++i) out.push_back(names(hs.at(i)));
+  std::sort(out.begin(), out.end());
+  if (std::adjacent_find(out.begin(), out.end()) != out.end()) hs.fail("lists a halfspace twice");
+  return out;
+}
+
+/// "left_face" or "right_face": -1 (outside the domain) or one of the cell_count faces.
+int read_edge_face(const JsonField& f, std::size_t cell_count) {
+  const std::int64_t v = f.integer();
+  if (v < -1 || (v >= 0 && static_cast<std::uint64_t>(v) >= cell_count)) {
+    f.fail("face " + std::to_string(v) + " is out of range (-1 for outside the domain, or one of the " +
+           std::to_string(cell_count) + " faces)");
+  }
+  return static_cast<int>(v);
+}
+
+/// A segment from p to q: distinct end points, and the optional supporting line a*x + b*y + c = 0 (it makes
+/// lengths exact sums of square roots) through both.
+void read_segment(const JsonField& e, const OneRootPoint& p, const OneRootPoint& q, ArrEdge2& edge) {
+  if (edge.source == edge.target || same_point(p, q)) e.fail("a segment whose source and target coincide");
+  const auto line = e.get("line");
+  if (!line) return;
+  if (line->size() != 3) line->fail("expected [a, b, c]");
+  edge.line_a = line->at(0).rational();
+  edge.line_b = line->at(1).rational();
+  edge.line_c = line->at(2).rational();
+  if (edge.line_a == 0 && edge.line_b == 0) line->fail("a and b are both zero");
+  for (const OneRootPoint* v : {&p, &q}) {
+    Measure value = Measure::product(OneRoot(edge.line_a), v->x) + Measure::product(OneRoot(edge.line_b), v->y) +
+                    Measure(edge.line_c);
+    if (!value.is_zero()) line->fail("an end point of the segment is not on this line");
+  }
+}
+
+/// An arc from p to q: its circle (center, positive radius) through both end points, and its direction.
+void read_arc(const JsonField& e, const OneRootPoint& p, const OneRootPoint& q, ArrEdge2& edge) {
+  edge.center = e.at("center").point2();
+  edge.radius = e.at("radius").rational();
+  if (sgn(edge.radius) <= 0) e.at("radius").fail("must be positive");
+  edge.ccw = e.at("ccw").boolean();
+  if (!on_circle(p, edge.center, edge.radius)) e.at("source").fail("the vertex does not lie on the arc's circle");
+  if (!on_circle(q, edge.center, edge.radius)) e.at("target").fail("the vertex does not lie on the arc's circle");
+}
+
+/// geometry.edges[k], with its exact length.
+ArrEdge2 read_edge(const JsonField& e, std::size_t k, const Names& names, std::size_t cell_count,
+                   const std::vector<ArrVertex2>& vertices) {
+  ArrEdge2 edge;
+  edge.shape = read_edge_shape(e);
+  check_id(e, k);
+  edge.source = read_index(e.at("source"), vertices.size(), "vertex");
+  edge.target = read_index(e.at("target"), vertices.size(), "vertex");
+  edge.halfspaces = read_edge_halfspaces(e.at("halfspaces"), names);
+  edge.on_box = e.at("on_box").boolean();
+  edge.left_face = read_edge_face(e.at("left_face"), cell_count);
+  edge.right_face = read_edge_face(e.at("right_face"), cell_count);
+  const OneRootPoint& p = vertices[edge.source].point;
+  const OneRootPoint& q = vertices[edge.target].point;
+  if (edge.shape == EdgeShape2::Segment) {
+    read_segment(e, p, q, edge);
+  } else {
+    read_arc(e, p, q, edge);
+  }
+  edge.length = edge_length(edge, p, q);
+  return edge;
+}
+
+void read_edges(const JsonField& je, const Names& names, std::size_t cell_count, ComplexDocument& doc) {
   const std::size_t ne = je.size();
   doc.edges.resize(ne);
-  std::vector<int> degree(nv, 0);
-  for (std::size_t k = 0; k < ne; ++k) {
-    const JsonField e = je.at(k);
-    ArrEdge2& edge = doc.edges[k];
-    const std::string shape = e.at("shape").string();
-    if (shape == "segment") {
-      e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape", "line"},
-                   "a segment edge");
-      edge.shape = EdgeShape2::Segment;
-    } else if (shape == "arc") {
-      e.check_keys({"id", "source", "target", "halfspaces", "on_box", "left_face", "right_face", "shape", "center",
-                    "radius", "ccw"},
-                   "an arc edge");
-      edge.shape = EdgeShape2::Arc;
-    } else {
-      e.at("shape").fail("expected \"segment\" or \"arc\", got " + describe_json(e.at("shape").json()));
-    }
-    check_id(e, k);
-    edge.source = read_index(e.at("source"), nv, "vertex");
-    edge.target = read_index(e.at("target"), nv, "vertex");
+  for (std::size_t k = 0; k < ne; ++k) doc.edges[k] = read_edge(je.at(k), k, names, cell_count, doc.vertices);
+}
+
+/// Each vertex's degree (edge ends there), checked against its optional "degree" field.
+void check_vertex_degrees(const JsonField& jv, ComplexDocument& doc) {
+  std::vector<int> degree(doc.vertices.size(), 0);
+  for (const ArrEdge2& edge : doc.edges) {
     ++degree[edge.source];
     ++degree[edge.target];
-    const JsonField hs = e.at("halfspaces");
-    for (std::size_t i = 0; i < hs.size(); ++i) edge.halfspaces.push_back(names(hs.at(i)));
-    std::sort(edge.halfspaces.begin(), edge.halfspaces.end());
-    if (std::adjacent_find(edge.halfspaces.begin(), edge.halfspaces.end()) != edge.halfspaces.end())
-      hs.fail("lists a halfspace twice");
-    edge.on_box = e.at("on_box").boolean();
-    for (const char* side : {"left_face", "right_face"}) {
-      const JsonField f = e.at(side);
-      const std::int64_t v = f.integer();
-      if (v < -1 || (v >= 0 && static_cast<std::uint64_t>(v) >= cell_count)) {
-        f.fail("face " + std::to_string(v) + " is out of range (-1 for outside the domain, or one of the " +
-               std::to_string(cell_count) + " faces)");
-      }
-      (side[0] == 'l' ? edge.left_face : edge.right_face) = static_cast<int>(v);
-    }
-    const OneRootPoint& p = doc.vertices[edge.source].point;
-    const OneRootPoint& q = doc.vertices[edge.target].point;
-    if (edge.shape == EdgeShape2::Segment) {
-      if (edge.source == edge.target || same_point(p, q)) e.fail("a segment whose source and target coincide");
-      if (auto line = e.get("line")) {
-        // Optional supporting line a*x + b*y + c = 0; it makes lengths exact sums of square roots.
-        if (line->size() != 3) line->fail("expected [a, b, c]");
-        edge.line_a = line->at(0).rational();
-        edge.line_b = line->at(1).rational();
-        edge.line_c = line->at(2).rational();
-        if (edge.line_a == 0 && edge.line_b == 0) line->fail("a and b are both zero");
-        for (const OneRootPoint* v : {&p, &q}) {
-          Measure value = Measure::product(OneRoot(edge.line_a), v->x) + Measure::product(OneRoot(edge.line_b), v->y) +
-                          Measure(edge.line_c);
-          if (!value.is_zero()) line->fail("an end point of the segment is not on this line");
-        }
-      }
-    } else {
-      edge.center = e.at("center").point2();
-      edge.radius = e.at("radius").rational();
-      if (sgn(edge.radius) <= 0) e.at("radius").fail("must be positive");
-      edge.ccw = e.at("ccw").boolean();
-      if (!on_circle(p, edge.center, edge.radius)) e.at("source").fail("the vertex does not lie on the arc's circle");
-      if (!on_circle(q, edge.center, edge.radius)) e.at("target").fail("the vertex does not lie on the arc's circle");
-    }
-    edge.length = edge_length(edge, p, q);
   }
-  for (std::size_t k = 0; k < nv; ++k) {
+  for (std::size_t k = 0; k < doc.vertices.size(); ++k) {
     doc.vertices[k].degree = degree[k];
     if (auto d = jv.at(k).get("degree"); d && d->integer() != degree[k]) {
       d->fail("is " + std::to_string(d->integer()) + " but " + std::to_string(degree[k]) + " edges end there");
     }
   }
-  // Faces
-  const JsonField jf = g.at("faces");
+}
+
+/// One boundary walk of face `face`: [edge, forward] steps with the face on their left, closed.
+std::vector<std::pair<int, bool>> read_walk(const JsonField& walk, int face, const std::vector<ArrEdge2>& edges) {
+  if (walk.size() == 0) walk.fail("an empty boundary walk");
+  std::vector<std::pair<int, bool>> steps;
+  for (std::size_t s = 0; s < walk.size(); ++s) {
+    const JsonField step = walk.at(s);
+    if (step.size() != 2) step.fail("expected [edge, forward]");
+    const int e = read_index(step.at(std::size_t{0}), edges.size(), "edge");
+    const bool forward = step.at(std::size_t{1}).boolean();
+    const ArrEdge2& edge = edges[e];
+    if ((forward ? edge.left_face : edge.right_face) != face) {
+      step.fail(std::string("edge ") + std::to_string(e) + " walked " + (forward ? "forward" : "backward") +
+                " does not have face " + std::to_string(face) + " on its left");
+    }
+    steps.emplace_back(e, forward);
+  }
+  for (std::size_t s = 0; s < steps.size(); ++s) {
+    const auto& [e1, f1] = steps[s];
+    const auto& [e2, f2] = steps[(s + 1) % steps.size()];
+    const int end = f1 ? edges[e1].target : edges[e1].source;
+    const int start = f2 ? edges[e2].source : edges[e2].target;
+    if (end != start) walk.at(s).fail("the walk is not closed: this step ends where the next does not start");
+  }
+  return steps;
+}
+
+/// geometry.faces: one per cell, each with its boundary walks and exact area.
+void read_faces(const JsonField& jf, std::size_t cell_count, ComplexDocument& doc, Budget& budget) {
   const std::size_t nf = jf.size();
   if (nf != cell_count) {
     jf.fail("has " + std::to_string(nf) + " faces but there are " + std::to_string(cell_count) +
@@ -535,120 +594,117 @@ void read_geometry(const JsonField& g, const Names& names, std::size_t cell_coun
     check_id(f, k);
     const JsonField walks = f.at("boundary");
     if (walks.size() == 0) walks.fail("a face needs at least one boundary walk");
-    auto& boundary = doc.faces[k].boundary;
     std::uint64_t steps_total = 0;
     for (std::size_t w = 0; w < walks.size(); ++w) steps_total += walks.at(w).size();
     budget.spend(steps_total, walks);
-    for (std::size_t w = 0; w < walks.size(); ++w) {
-      const JsonField walk = walks.at(w);
-      if (walk.size() == 0) walk.fail("an empty boundary walk");
-      std::vector<std::pair<int, bool>> steps;
-      for (std::size_t s = 0; s < walk.size(); ++s) {
-        const JsonField step = walk.at(s);
-        if (step.size() != 2) step.fail("expected [edge, forward]");
-        const int e = read_index(step.at(std::size_t{0}), ne, "edge");
-        const bool forward = step.at(std::size_t{1}).boolean();
-        const ArrEdge2& edge = doc.edges[e];
-        if ((forward ? edge.left_face : edge.right_face) != static_cast<int>(k)) {
-          step.fail(std::string("edge ") + std::to_string(e) + " walked " + (forward ? "forward" : "backward") +
-                    " does not have face " + std::to_string(k) + " on its left");
-        }
-        steps.emplace_back(e, forward);
-      }
-      for (std::size_t s = 0; s < steps.size(); ++s) {
-        const auto& [e1, f1] = steps[s];
-        const auto& [e2, f2] = steps[(s + 1) % steps.size()];
-        const int end = f1 ? doc.edges[e1].target : doc.edges[e1].source;
-        const int start = f2 ? doc.edges[e2].source : doc.edges[e2].target;
-        if (end != start) walk.at(s).fail("the walk is not closed: this step ends where the next does not start");
-      }
-      boundary.push_back(std::move(steps));
-    }
+    auto& boundary = doc.faces[k].boundary;
+    for (std::size_t w = 0; w < walks.size(); ++w)
+      boundary.push_back(read_walk(walks.at(w), static_cast<int>(k), doc.edges));
     doc.faces[k].area = enclosed_area(boundary, doc.edges, doc.vertices);
   }
 }
 
-// ---------------------------------------------------------------------------------------------------------------
-// The document
+/// The optional "geometry" section (2D only): the arrangement the cells and patches come from.
+void read_geometry(const JsonField& g, const Names& names, std::size_t cell_count, ComplexDocument& doc,
+                   Budget& budget) {
+  if (doc.complex.dimension != 2) g.fail("a geometry section is only defined for dimension 2");
+  g.check_keys({"vertices", "edges", "faces"}, "a geometry section");
+  read_vertices(g.at("vertices"), doc);
+  read_edges(g.at("edges"), names, cell_count, doc);
+  check_vertex_degrees(g.at("vertices"), doc);
+  read_faces(g.at("faces"), cell_count, doc, budget);
+  doc.has_geometry = true;
+}
 
-ComplexDocument read_document(const json& document) {
-  const JsonField root(document, "");
+// ---------------------------------------------------------------------------------------------------------------
+// The document, section by section
+
+/// No unknown top-level field; "format", "dimension" and the optional "description".
+void read_header(const JsonField& root, Complex& c) {
   root.check_keys({"format", "dimension", "description", "halfspaces", "domain", "counts", "cells", "patches",
                    "supports", "junctions", "samples", "geometry"},
                   "an hsx-complex/1 document");
-  ComplexDocument doc;
-  Complex& c = doc.complex;
-  Budget budget;
-  {
-    const JsonField f = root.at("format");
-    if (f.string() != kComplexFormat) {
-      f.fail("expected \"" + std::string(kComplexFormat) + "\", got " + describe_json(f.json()));
-    }
+  const JsonField format = root.at("format");
+  if (format.string() != kComplexFormat) {
+    format.fail("expected \"" + std::string(kComplexFormat) + "\", got " + describe_json(format.json()));
   }
-  {
-    const JsonField f = root.at("dimension");
-    const std::int64_t d = f.integer();
-    if (d != 2 && d != 3) f.fail("expected 2 or 3, got " + std::to_string(d));
-    c.dimension = static_cast<int>(d);
-  }
+  const JsonField dimension = root.at("dimension");
+  const std::int64_t d = dimension.integer();
+  if (d != 2 && d != 3) dimension.fail("expected 2 or 3, got " + std::to_string(d));
+  c.dimension = static_cast<int>(d);
   if (auto f = root.get("description")) (void)f->string();
-  {
-    const JsonField f = root.at("halfspaces");
-    std::set<std::string> seen;
-    for (std::size_t i = 0; i < f.size(); ++i) {
-      const JsonField h = f.at(i);
-      std::string name = h.string();
-      if (name.empty()) h.fail("a halfspace name must not be empty");
-      if (!seen.insert(name).second) h.fail("duplicate halfspace name " + describe_json(json(name)));
-      c.halfspace_names.push_back(std::move(name));
-    }
-  }
-  const Names names(c.halfspace_names);
-  const std::size_t n_half = c.halfspace_names.size();
-  if (auto f = root.get("domain")) {
-    if (c.dimension != 2) f->fail("only a 2D domain box is supported");
-    f->check_keys({"min", "max"}, "a domain");
-    Box2 box{f->at("min").point2(), f->at("max").point2()};
-    if (!(box.min.x < box.max.x && box.min.y < box.max.y)) f->fail("min must be below max in both coordinates");
-    doc.domain = box;
-  }
+}
 
-  const JsonField cells = root.at("cells");
-  const std::size_t n_cells = cells.size();
-  const JsonField patches = root.at("patches");
-  const std::size_t n_patches = patches.size();
+/// "halfspaces": distinct non-empty names.
+void read_halfspaces(const JsonField& f, Complex& c) {
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const JsonField h = f.at(i);
+    std::string name = h.string();
+    if (name.empty()) h.fail("a halfspace name must not be empty");
+    if (!seen.insert(name).second) h.fail("duplicate halfspace name " + describe_json(json(name)));
+    c.halfspace_names.push_back(std::move(name));
+  }
+}
+
+/// The optional "domain" box (2D only).
+Box2 read_domain(const JsonField& f, int dimension) {
+  if (dimension != 2) f.fail("only a 2D domain box is supported");
+  f.check_keys({"min", "max"}, "a domain");
+  Box2 box{f.at("min").point2(), f.at("max").point2()};
+  if (!(box.min.x < box.max.x && box.min.y < box.max.y)) f.fail("min must be below max in both coordinates");
+  return box;
+}
+
+/// Dense per-cell and per-patch tables over the halfspaces must stay within kMaxTableEntries.
+void check_table_size(const JsonField& root, std::size_t n_cells, std::size_t n_patches, std::size_t n_half) {
   if (std::uint64_t(n_cells) * n_half > kMaxTableEntries || std::uint64_t(n_patches) * n_half > kMaxTableEntries) {
     root.fail("too large: " + std::to_string(n_cells) + " cells and " + std::to_string(n_patches) + " patches over " +
               std::to_string(n_half) + " halfspaces exceed the limit of " + std::to_string(kMaxTableEntries) +
               " (cells or patches) x halfspaces");
   }
-  if (auto g = root.get("geometry")) {
-    if (c.dimension != 2) g->fail("a geometry section is only defined for dimension 2");
-    read_geometry(*g, names, n_cells, doc, budget);
-    doc.has_geometry = true;
-  }
+}
 
-  // Cells
-  c.cells.resize(n_cells);
-  for (std::size_t k = 0; k < n_cells; ++k) {
+/// An index into the geometry's `what`s (count of them) when the document has a geometry section; without one,
+/// any non-negative int (the caller's own numbering of `free_what`s).
+int read_geometry_index(const JsonField& f, const ComplexDocument& doc, std::size_t count, const std::string& what,
+                        const std::string& free_what) {
+  if (doc.has_geometry) return read_index(f, count, what);
+  const std::int64_t v = f.integer();
+  if (v < 0 || v > INT32_MAX) f.fail("expected a non-negative " + free_what + " index, got " + std::to_string(v));
+  return static_cast<int>(v);
+}
+
+/// cells[k] without its measure: outer, the optional witness point, the halfspaces it is inside.
+Cell read_cell(const JsonField& f, std::size_t k, const Names& names, int dimension, std::size_t n_half) {
+  f.check_keys({"id", "outer", "witness", "inside", "measure"}, "a cell");
+  check_id(f, k);
+  Cell cell;
+  cell.outer = f.at("outer").boolean();
+  if (auto w = f.get("witness")) {
+    if (w->size() != static_cast<std::size_t>(dimension)) {
+      w->fail("expected " + std::to_string(dimension) + " coordinates, got " + std::to_string(w->size()));
+    }
+    for (std::size_t i = 0; i < w->size(); ++i) cell.witness.push_back(w->at(i).rational());
+  }
+  cell.inside.assign(n_half, 0);
+  const JsonField in = f.at("inside");
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    const int h = names(in.at(i));
+    if (cell.inside[h]) in.at(i).fail("halfspace listed twice");
+    cell.inside[h] = 1;
+  }
+  return cell;
+}
+
+/// "cells"; with geometry, each cell's area is its face's (a given "measure" is checked against it) and the face
+/// takes the cell's outer flag, sides and witness.
+void read_cells(const JsonField& cells, const Names& names, ComplexDocument& doc, Budget& budget) {
+  Complex& c = doc.complex;
+  c.cells.resize(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
     const JsonField f = cells.at(k);
-    f.check_keys({"id", "outer", "witness", "inside", "measure"}, "a cell");
-    check_id(f, k);
-    Cell& cell = c.cells[k];
-    cell.outer = f.at("outer").boolean();
-    if (auto w = f.get("witness")) {
-      if (w->size() != static_cast<std::size_t>(c.dimension)) {
-        w->fail("expected " + std::to_string(c.dimension) + " coordinates, got " + std::to_string(w->size()));
-      }
-      for (std::size_t i = 0; i < w->size(); ++i) cell.witness.push_back(w->at(i).rational());
-    }
-    cell.inside.assign(n_half, 0);
-    const JsonField in = f.at("inside");
-    for (std::size_t i = 0; i < in.size(); ++i) {
-      const int h = names(in.at(i));
-      if (cell.inside[h]) in.at(i).fail("halfspace listed twice");
-      cell.inside[h] = 1;
-    }
+    Cell& cell = c.cells[k] = read_cell(f, k, names, c.dimension, c.halfspace_names.size());
     if (doc.has_geometry) {
       cell.measure = doc.faces[k].area;
       if (auto m = f.get("measure")) check_measure(*m, cell.measure, "area", budget);
@@ -660,145 +716,164 @@ ComplexDocument read_document(const json& document) {
       cell.measure = measure_from_fields(f.at("measure"), budget);
     }
   }
+}
 
-  // Patches: fields that stand alone
-  c.patches.resize(n_patches);
-  for (std::size_t p = 0; p < n_patches; ++p) {
+/// patches[p] without its measure: halfspace, the cells on its two sides (checked against the halfspace), pieces.
+Patch read_patch(const JsonField& f, std::size_t p, const Names& names, const ComplexDocument& doc) {
+  const Complex& c = doc.complex;
+  f.check_keys({"id", "halfspace", "inside_cell", "outside_cell", "measure", "samples", "sample_ids", "support",
+                "junctions", "pieces"},
+               "a patch");
+  check_id(f, p);
+  Patch patch;
+  patch.halfspace = names(f.at("halfspace"));
+  patch.inside_cell = read_index(f.at("inside_cell"), c.cells.size(), "cell");
+  patch.outside_cell = read_index(f.at("outside_cell"), c.cells.size(), "cell");
+  const std::string hname = name_of(c.halfspace_names, patch.halfspace);
+  if (patch.inside_cell == patch.outside_cell) f.at("outside_cell").fail("is the same cell as inside_cell");
+  if (!c.cells[patch.inside_cell].inside[patch.halfspace]) {
+    f.at("inside_cell").fail("cell " + std::to_string(patch.inside_cell) + " is not inside halfspace " + hname);
+  }
+  if (c.cells[patch.outside_cell].inside[patch.halfspace]) {
+    f.at("outside_cell").fail("cell " + std::to_string(patch.outside_cell) + " is inside halfspace " + hname);
+  }
+  if (auto pieces = f.get("pieces"))
+    for (std::size_t k = 0; k < pieces->size(); ++k)
+      patch.pieces.push_back(read_geometry_index(pieces->at(k), doc, doc.edges.size(), "edge", "piece"));
+  return patch;
+}
+
+/// With geometry: the patch's length from its edges, each checked to be a distinct edge on the patch's halfspace
+/// between its two cells, off the box, sharing a vertex with the one before.
+Measure patch_length(const JsonField& f, const Patch& patch, const ComplexDocument& doc, Budget& budget) {
+  if (patch.pieces.empty()) f.fail("needs \"pieces\" (its edges) when the document has a geometry section");
+  const JsonField pieces = f.at("pieces");
+  budget.spend(patch.pieces.size(), pieces);
+  std::vector<int> sorted = patch.pieces;
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  if (twice != sorted.end()) pieces.fail("lists edge " + std::to_string(*twice) + " twice");
+  const std::string hname = name_of(doc.complex.halfspace_names, patch.halfspace);
+  Measure length;
+  for (std::size_t k = 0; k < patch.pieces.size(); ++k) {
+    const JsonField where = pieces.at(k);
+    const ArrEdge2& e = doc.edges[patch.pieces[k]];
+    if (e.on_box) where.fail("edge " + std::to_string(patch.pieces[k]) + " lies on the domain box");
+    if (!std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), patch.halfspace)) {
+      where.fail("edge " + std::to_string(patch.pieces[k]) + " is not on the boundary of halfspace " + hname);
+    }
+    if (std::minmax(e.left_face, e.right_face) != std::minmax(patch.inside_cell, patch.outside_cell)) {
+      where.fail("edge " + std::to_string(patch.pieces[k]) + " separates faces " + std::to_string(e.left_face) +
+                 " and " + std::to_string(e.right_face) + ", not the patch's cells");
+    }
+    if (k > 0) {
+      const ArrEdge2& prev = doc.edges[patch.pieces[k - 1]];
+      if (e.source != prev.source && e.source != prev.target && e.target != prev.source && e.target != prev.target) {
+        where.fail("edge " + std::to_string(patch.pieces[k]) + " does not share a vertex with the previous piece");
+      }
+    }
+    length += e.length;
+  }
+  return length;
+}
+
+/// "patches": the fields that stand alone, and each patch's measure (with geometry, its length recomputed and a
+/// given "measure" checked against it).
+void read_patches(const JsonField& patches, const Names& names, ComplexDocument& doc, Budget& budget) {
+  Complex& c = doc.complex;
+  c.patches.resize(patches.size());
+  for (std::size_t p = 0; p < patches.size(); ++p) {
     const JsonField f = patches.at(p);
-    f.check_keys({"id", "halfspace", "inside_cell", "outside_cell", "measure", "samples", "sample_ids", "support",
-                  "junctions", "pieces"},
-                 "a patch");
-    check_id(f, p);
-    Patch& patch = c.patches[p];
-    patch.halfspace = names(f.at("halfspace"));
-    patch.inside_cell = read_index(f.at("inside_cell"), n_cells, "cell");
-    patch.outside_cell = read_index(f.at("outside_cell"), n_cells, "cell");
-    const std::string hname = name_of(c.halfspace_names, patch.halfspace);
-    if (patch.inside_cell == patch.outside_cell) f.at("outside_cell").fail("is the same cell as inside_cell");
-    if (!c.cells[patch.inside_cell].inside[patch.halfspace]) {
-      f.at("inside_cell").fail("cell " + std::to_string(patch.inside_cell) + " is not inside halfspace " + hname);
-    }
-    if (c.cells[patch.outside_cell].inside[patch.halfspace]) {
-      f.at("outside_cell").fail("cell " + std::to_string(patch.outside_cell) + " is inside halfspace " + hname);
-    }
-    if (auto pieces = f.get("pieces")) {
-      const std::size_t n = pieces->size();
-      for (std::size_t k = 0; k < n; ++k) {
-        const JsonField piece = pieces->at(k);
-        if (doc.has_geometry) {
-          patch.pieces.push_back(read_index(piece, doc.edges.size(), "edge"));
-        } else {
-          const std::int64_t v = piece.integer();
-          if (v < 0 || v > INT32_MAX) piece.fail("expected a non-negative piece index, got " + std::to_string(v));
-          patch.pieces.push_back(static_cast<int>(v));
-        }
-      }
-    }
+    Patch& patch = c.patches[p] = read_patch(f, p, names, doc);
     if (doc.has_geometry) {
-      if (patch.pieces.empty()) f.fail("needs \"pieces\" (its edges) when the document has a geometry section");
-      budget.spend(patch.pieces.size(), f.at("pieces"));
-      {
-        std::vector<int> sorted = patch.pieces;
-        std::sort(sorted.begin(), sorted.end());
-        const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
-        if (twice != sorted.end()) f.at("pieces").fail("lists edge " + std::to_string(*twice) + " twice");
-      }
-      Measure length;
-      for (std::size_t k = 0; k < patch.pieces.size(); ++k) {
-        const JsonField where = f.at("pieces").at(k);
-        const ArrEdge2& e = doc.edges[patch.pieces[k]];
-        if (e.on_box) where.fail("edge " + std::to_string(patch.pieces[k]) + " lies on the domain box");
-        if (!std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), patch.halfspace)) {
-          where.fail("edge " + std::to_string(patch.pieces[k]) + " is not on the boundary of halfspace " + hname);
-        }
-        if (std::minmax(e.left_face, e.right_face) != std::minmax(patch.inside_cell, patch.outside_cell)) {
-          where.fail("edge " + std::to_string(patch.pieces[k]) + " separates faces " + std::to_string(e.left_face) +
-                     " and " + std::to_string(e.right_face) + ", not the patch's cells");
-        }
-        if (k > 0) {
-          const ArrEdge2& prev = doc.edges[patch.pieces[k - 1]];
-          if (e.source != prev.source && e.source != prev.target && e.target != prev.source &&
-              e.target != prev.target) {
-            where.fail("edge " + std::to_string(patch.pieces[k]) + " does not share a vertex with the previous piece");
-          }
-        }
-        length += e.length;
-      }
-      patch.measure = length;
+      patch.measure = patch_length(f, patch, doc, budget);
       if (auto m = f.get("measure")) check_measure(*m, patch.measure, "length", budget);
     } else {
       patch.measure = measure_from_fields(f.at("measure"), budget);
     }
   }
+}
 
-  // Supports
-  if (auto s = root.get("supports")) {
-    std::vector<int> group_of(n_patches, -1);
-    const std::size_t n_groups = s->size();
-    c.supports.resize(n_groups);
-    for (std::size_t g = 0; g < n_groups; ++g) {
-      const JsonField group = s->at(g);
-      c.supports[g] = read_index_set(group, n_patches, "patch");
-      if (c.supports[g].empty()) group.fail("an empty support group");
-      std::set<int> group_halfspaces;
-      const Patch& first = c.patches[c.supports[g].front()];
-      for (int p : c.supports[g]) {
-        if (group_of[p] >= 0) {
-          group.fail("patch " + std::to_string(p) + " is already in support group " + std::to_string(group_of[p]));
-        }
-        group_of[p] = static_cast<int>(g);
-        const Patch& patch = c.patches[p];
-        if (!group_halfspaces.insert(patch.halfspace).second) {
-          group.fail("two of its patches lie on halfspace " + name_of(c.halfspace_names, patch.halfspace));
-        }
-        if (std::minmax(patch.inside_cell, patch.outside_cell) != std::minmax(first.inside_cell, first.outside_cell)) {
-          group.fail("patches " + std::to_string(c.supports[g].front()) + " and " + std::to_string(p) +
-                     " separate different cells, so they cannot coincide");
-        }
+/// "supports" given: groups of coinciding patches (on distinct halfspaces, separating the same cells), every
+/// patch in exactly one.
+void read_support_groups(const JsonField& s, Complex& c) {
+  const std::size_t n_patches = c.patches.size();
+  std::vector<int> group_of(n_patches, -1);
+  c.supports.resize(s.size());
+  for (std::size_t g = 0; g < s.size(); ++g) {
+    const JsonField group = s.at(g);
+    c.supports[g] = read_index_set(group, n_patches, "patch");
+    if (c.supports[g].empty()) group.fail("an empty support group");
+    std::set<int> group_halfspaces;
+    const Patch& first = c.patches[c.supports[g].front()];
+    for (int p : c.supports[g]) {
+      if (group_of[p] >= 0) {
+        group.fail("patch " + std::to_string(p) + " is already in support group " + std::to_string(group_of[p]));
+      }
+      group_of[p] = static_cast<int>(g);
+      const Patch& patch = c.patches[p];
+      if (!group_halfspaces.insert(patch.halfspace).second) {
+        group.fail("two of its patches lie on halfspace " + name_of(c.halfspace_names, patch.halfspace));
+      }
+      if (std::minmax(patch.inside_cell, patch.outside_cell) != std::minmax(first.inside_cell, first.outside_cell)) {
+        group.fail("patches " + std::to_string(c.supports[g].front()) + " and " + std::to_string(p) +
+                   " separate different cells, so they cannot coincide");
       }
     }
-    for (std::size_t p = 0; p < n_patches; ++p) {
-      if (group_of[p] < 0) s->fail("patch " + std::to_string(p) + " is in no support group");
-      c.patches[p].support = group_of[p];
-    }
+  }
+  for (std::size_t p = 0; p < n_patches; ++p) {
+    if (group_of[p] < 0) s.fail("patch " + std::to_string(p) + " is in no support group");
+    c.patches[p].support = group_of[p];
+  }
+}
+
+/// The support groups ("supports", or one group per patch without it), then each patch's optional "support"
+/// field checked against its group.
+void read_supports(const std::optional<JsonField>& s, const JsonField& patches, Complex& c) {
+  if (s) {
+    read_support_groups(*s, c);
   } else {
-    for (std::size_t p = 0; p < n_patches; ++p) {
+    for (std::size_t p = 0; p < c.patches.size(); ++p) {
       c.supports.push_back({static_cast<int>(p)});
       c.patches[p].support = static_cast<int>(p);
     }
   }
-  for (std::size_t p = 0; p < n_patches; ++p) {
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
     if (auto f = patches.at(p).get("support")) {
       const std::int64_t v = f->integer();
       if (v != c.patches[p].support) {
         f->fail("is " + std::to_string(v) + " but the patch is in support group " +
                 std::to_string(c.patches[p].support) +
-                (root.has("supports") ? "" : " (without \"supports\", every patch is its own group)"));
+                (s ? "" : " (without \"supports\", every patch is its own group)"));
       }
     }
   }
+}
 
-  // Samples
-  std::vector<std::vector<int>> samples_on(n_patches);
-  if (auto s = root.get("samples")) {
-    const std::size_t n = s->size();
-    c.samples.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-      const JsonField f = s->at(k);
-      f.check_keys({"id", "halfspace", "patch"}, "a sample");
-      check_id(f, k);
-      SampleSite& site = c.samples[k];
-      site.halfspace = names(f.at("halfspace"));
-      site.patch = read_index(f.at("patch"), n_patches, "patch");
-      if (c.patches[site.patch].halfspace != site.halfspace) {
-        f.at("halfspace").fail("is " + name_of(c.halfspace_names, site.halfspace) + " but patch " +
-                               std::to_string(site.patch) + " lies on halfspace " +
-                               name_of(c.halfspace_names, c.patches[site.patch].halfspace));
-      }
-      samples_on[site.patch].push_back(static_cast<int>(k));
+/// "samples": each on a patch of its halfspace.
+void read_sample_sites(const JsonField& s, const Names& names, Complex& c) {
+  c.samples.resize(s.size());
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const JsonField f = s.at(k);
+    f.check_keys({"id", "halfspace", "patch"}, "a sample");
+    check_id(f, k);
+    SampleSite& site = c.samples[k];
+    site.halfspace = names(f.at("halfspace"));
+    site.patch = read_index(f.at("patch"), c.patches.size(), "patch");
+    if (c.patches[site.patch].halfspace != site.halfspace) {
+      f.at("halfspace").fail("is " + name_of(c.halfspace_names, site.halfspace) + " but patch " +
+                             std::to_string(site.patch) + " lies on halfspace " +
+                             name_of(c.halfspace_names, c.patches[site.patch].halfspace));
     }
   }
-  for (std::size_t p = 0; p < n_patches; ++p) {
+}
+
+/// Each patch's samples (those sitting on it, ascending), checked against its optional "sample_ids" and
+/// "samples" (a count) fields.
+void attach_samples(const JsonField& patches, Complex& c) {
+  std::vector<std::vector<int>> samples_on(c.patches.size());
+  for (std::size_t k = 0; k < c.samples.size(); ++k) samples_on[c.samples[k].patch].push_back(static_cast<int>(k));
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
     const JsonField f = patches.at(p);
     Patch& patch = c.patches[p];
     patch.samples = samples_on[p];
@@ -821,31 +896,30 @@ ComplexDocument read_document(const json& document) {
       }
     }
   }
+}
 
-  // Junctions
-  std::vector<std::vector<int>> junctions_of(n_patches);
-  if (auto js = root.get("junctions")) {
-    const std::size_t n = js->size();
-    c.junctions.resize(n);
-    for (std::size_t j = 0; j < n; ++j) {
-      const JsonField f = js->at(j);
-      f.check_keys({"id", "patches", "vertex"}, "a junction");
-      check_id(f, j);
-      Junction& junction = c.junctions[j];
-      junction.patches = read_index_set(f.at("patches"), n_patches, "patch");
-      for (int p : junction.patches) junctions_of[p].push_back(static_cast<int>(j));
-      if (auto v = f.get("vertex")) {
-        if (doc.has_geometry) {
-          junction.piece = read_index(*v, doc.vertices.size(), "vertex");
-        } else {
-          const std::int64_t x = v->integer();
-          if (x < 0 || x > INT32_MAX) v->fail("expected a non-negative vertex index, got " + std::to_string(x));
-          junction.piece = static_cast<int>(x);
-        }
-      }
-    }
+/// "junctions": each a set of patches and an optional vertex (a geometry vertex when there is geometry).
+void read_junction_list(const JsonField& js, ComplexDocument& doc) {
+  Complex& c = doc.complex;
+  c.junctions.resize(js.size());
+  for (std::size_t j = 0; j < js.size(); ++j) {
+    const JsonField f = js.at(j);
+    f.check_keys({"id", "patches", "vertex"}, "a junction");
+    check_id(f, j);
+    Junction& junction = c.junctions[j];
+    junction.patches = read_index_set(f.at("patches"), c.patches.size(), "patch");
+    if (auto v = f.get("vertex"))
+      junction.piece = read_geometry_index(*v, doc, doc.vertices.size(), "vertex", "vertex");
   }
-  for (std::size_t p = 0; p < n_patches; ++p) {
+}
+
+/// Each patch's junctions: its optional "junctions" field, which must list exactly the junctions that list the
+/// patch (in any order); without it, those junctions ascending.
+void attach_junctions(const JsonField& patches, Complex& c, Budget& budget) {
+  std::vector<std::vector<int>> junctions_of(c.patches.size());
+  for (std::size_t j = 0; j < c.junctions.size(); ++j)
+    for (int p : c.junctions[j].patches) junctions_of[p].push_back(static_cast<int>(j));
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
     Patch& patch = c.patches[p];
     auto list = patches.at(p).get("junctions");
     budget.spend(std::max<std::size_t>(junctions_of[p].size(), list ? list->size() : 0), patches.at(p));
@@ -866,36 +940,65 @@ ComplexDocument read_document(const json& document) {
         list->fail("does not list junction " + std::to_string(j) + ", which lists this patch");
       }
   }
+}
 
-  // Counts
-  if (auto counts = root.get("counts")) {
-    counts->check_keys({"vertices", "edges", "cells", "outer_cells", "patches", "junctions", "samples"}, "counts");
-    auto check = [&](const char* key, std::size_t actual, bool defined) {
-      auto f = counts->get(key);
-      if (!f || f->json().is_null()) return;
-      if (!defined) f->fail("given, but the document has no geometry section");
-      const std::int64_t v = f->integer();
-      if (v < 0 || static_cast<std::uint64_t>(v) != actual) {
-        f->fail("is " + std::to_string(v) + " but the document has " + std::to_string(actual));
-      }
-    };
-    check("vertices", doc.vertices.size(), doc.has_geometry);
-    check("edges", doc.edges.size(), doc.has_geometry);
-    check("cells", n_cells, true);
-    check("outer_cells", static_cast<std::size_t>(c.outer_cell_count()), true);
-    check("patches", n_patches, true);
-    check("junctions", c.junctions.size(), true);
-    check("samples", c.samples.size(), true);
-  }
+/// The optional "counts": each given count must match the document (vertices and edges only with geometry).
+void check_counts(const JsonField& counts, const ComplexDocument& doc) {
+  const Complex& c = doc.complex;
+  counts.check_keys({"vertices", "edges", "cells", "outer_cells", "patches", "junctions", "samples"}, "counts");
+  auto check = [&](const char* key, std::size_t actual, bool defined) {
+    auto f = counts.get(key);
+    if (!f || f->json().is_null()) return;
+    if (!defined) f->fail("given, but the document has no geometry section");
+    const std::int64_t v = f->integer();
+    if (v < 0 || static_cast<std::uint64_t>(v) != actual) {
+      f->fail("is " + std::to_string(v) + " but the document has " + std::to_string(actual));
+    }
+  };
+  check("vertices", doc.vertices.size(), doc.has_geometry);
+  check("edges", doc.edges.size(), doc.has_geometry);
+  check("cells", c.cells.size(), true);
+  check("outer_cells", static_cast<std::size_t>(c.outer_cell_count()), true);
+  check("patches", c.patches.size(), true);
+  check("junctions", c.junctions.size(), true);
+  check("samples", c.samples.size(), true);
+}
 
+/// The complex's own invariants (check_complex), the first 20 problems in the message.
+void check_consistency(const Complex& c) {
   const std::vector<std::string> problems = check_complex(c);
-  if (!problems.empty()) {
-    std::string message = "the complex is inconsistent: ";
-    const std::size_t shown = std::min<std::size_t>(problems.size(), 20);
-    for (std::size_t k = 0; k < shown; ++k) message += (k ? "; " : "") + problems[k];
-    if (problems.size() > shown) message += "; and " + std::to_string(problems.size() - shown) + " more";
-    throw InputError(message);
-  }
+  if (problems.empty()) return;
+  std::string message = "the complex is inconsistent: ";
+  const std::size_t shown = std::min<std::size_t>(problems.size(), 20);
+  for (std::size_t k = 0; k < shown; ++k) message += (k ? "; " : "") + problems[k];
+  if (problems.size() > shown) message += "; and " + std::to_string(problems.size() - shown) + " more";
+  throw InputError(message);
+}
+
+/// The document in its outline's order: header, halfspaces, domain, geometry, cells, patches, supports, samples,
+/// junctions, then the cross-checks (counts, the complex's invariants). Errors name the field and index.
+ComplexDocument read_document(const json& document) {
+  const JsonField root(document, "");
+  ComplexDocument doc;
+  Complex& c = doc.complex;
+  Budget budget;
+  read_header(root, c);
+  read_halfspaces(root.at("halfspaces"), c);
+  const Names names(c.halfspace_names);
+  if (auto f = root.get("domain")) doc.domain = read_domain(*f, c.dimension);
+  const JsonField cells = root.at("cells");
+  const JsonField patches = root.at("patches");
+  check_table_size(root, cells.size(), patches.size(), c.halfspace_names.size());
+  if (auto g = root.get("geometry")) read_geometry(*g, names, cells.size(), doc, budget);
+  read_cells(cells, names, doc, budget);
+  read_patches(patches, names, doc, budget);
+  read_supports(root.get("supports"), patches, c);
+  if (auto s = root.get("samples")) read_sample_sites(*s, names, c);
+  attach_samples(patches, c);
+  if (auto js = root.get("junctions")) read_junction_list(*js, doc);
+  attach_junctions(patches, c, budget);
+  if (auto counts = root.get("counts")) check_counts(*counts, doc);
+  check_consistency(c);
   return doc;
 }
 

@@ -776,3 +776,33 @@ TEST_CASE("nesting: cavities belong to the smallest outer shell around them", "[
   CHECK((region(4) == 2 && !hole(4)));
   CHECK((region(5) == 2 && hole(5)));
 }
+
+TEST_CASE("properties: outer shells are numbered by lowest triangle, whatever the face order", "[mesh][property]") {
+  // Separate boxes [10k, 10k+3]^3 with their triangles listed in a random order: box k's pieces must all get the
+  // region that is the rank of box k's lowest triangle among the boxes' lowest triangles.
+  rc::prop("regions follow the lowest triangles", [] {
+    const int boxes = *rc::gen::inRange(2, 5);
+    std::string verts, box_faces;
+    for (int k = 0; k < boxes; ++k) verts += box_obj(10L * k, 10L * k + 3, false, 8 * k, box_faces);
+    std::vector<std::string> lines;
+    std::istringstream in(box_faces);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    const auto order = *rc::gen::container<std::vector<int>>(lines.size(), rc::gen::arbitrary<int>());
+    std::vector<int> perm(lines.size());  // output position -> input face (12k..12k+11 is box k)
+    std::iota(perm.begin(), perm.end(), 0);
+    std::stable_sort(perm.begin(), perm.end(), [&](int a, int b) { return order[a] < order[b]; });
+    std::string faces;
+    for (int f : perm) faces += lines[static_cast<std::size_t>(f)] + "\n";
+    const Mesh3 m = mesh_of(verts + faces);
+    RC_ASSERT(m.shells == boxes);
+    const BoundarySurface s = boundary_from_mesh(m, std::vector<std::pair<int, int>>{});
+    std::vector<int> lowest(static_cast<std::size_t>(boxes), -1);  // per box its lowest triangle
+    for (std::size_t f = perm.size(); f-- > 0;) lowest[static_cast<std::size_t>(perm[f] / 12)] = static_cast<int>(f);
+    for (std::size_t f = 0; f < perm.size(); ++f) {
+      const int box = perm[f] / 12;
+      const auto rank = std::count_if(lowest.begin(), lowest.end(), [&](int l) { return l < lowest[box]; });
+      RC_ASSERT(s.pieces[f].region == static_cast<int>(rank));
+      RC_ASSERT(!s.pieces[f].hole);
+    }
+  });
+}

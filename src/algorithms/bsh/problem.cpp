@@ -1,8 +1,9 @@
 #include <hsx/algorithms/bsh/problem.hpp>
 
+#include "geometry/components.hpp"
+
 #include <algorithm>
 #include <map>
-#include <numeric>
 #include <set>
 #include <map>
 
@@ -134,25 +135,17 @@ SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& 
   std::vector<char> on_b(c.patches.size(), 0);
   for (int g : boundary_supports(problem, labelling))
     for (int p : problem.supports()[g].patches) on_b[p] = labelling[c.patches[p].inside_cell];
-  // Union-find over patches of the same halfspace that share a junction.
-  std::vector<int> parent(c.patches.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  // Components: patches on the boundary, of the same halfspace, joined where they share a junction.
+  DisjointSets sets(c.patches.size());
   for (const Junction& j : c.junctions)
     for (std::size_t a = 0; a < j.patches.size(); ++a)
       for (std::size_t b = a + 1; b < j.patches.size(); ++b) {
         const int p = j.patches[a], q = j.patches[b];
-        if (on_b[p] && on_b[q] && c.patches[p].halfspace == c.patches[q].halfspace) parent[find(p)] = find(q);
+        if (on_b[p] && on_b[q] && c.patches[p].halfspace == c.patches[q].halfspace) sets.union_set(p, q);
       }
-  std::map<std::pair<int, int>, int> component_of_root;  // (halfspace, smallest patch) order via root lookup
-  std::map<int, std::vector<int>> members;
-  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p)
-    if (on_b[p]) members[find(p)].push_back(p);
-  std::vector<std::pair<std::pair<int, int>, std::vector<int>>> ordered;
-  for (auto& [root, list] : members) ordered.push_back({{c.patches[list.front()].halfspace, list.front()}, list});
+  std::vector<std::pair<std::pair<int, int>, std::vector<int>>> ordered;  // ordered by (halfspace, smallest patch)
+  for (auto& list : components_of(sets, c.patches.size()).members(on_b))
+    ordered.push_back({{c.patches[list.front()].halfspace, list.front()}, std::move(list)});
   std::sort(ordered.begin(), ordered.end());
   for (auto& [key, list] : ordered) {
     Component comp;

@@ -1,5 +1,7 @@
 #include <hsx/algorithms/csg/bhc.hpp>
 
+#include "geometry/components.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <tuple>
@@ -111,19 +113,14 @@ class Builder {
           solid_[patch.inside_cell] != solid_[patch.outside_cell])
         face_patches.push_back(p);
     }
-    std::vector<int> parent(c_.patches.size());
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int x) {
-      while (parent[x] != x) x = parent[x] = parent[parent[x]];
-      return x;
-    };
+    DisjointSets faces(c_.patches.size());
     std::vector<char> on_face(c_.patches.size(), 0);
     for (int p : face_patches) on_face[p] = 1;
     for (const Junction& j : c_.junctions)
       for (int p : j.patches)
         for (int q : j.patches)
           if (p < q && on_face[p] && on_face[q] && c_.patches[p].halfspace == c_.patches[q].halfspace)
-            parent[find(p)] = find(q);
+            faces.union_set(p, q);
     std::tuple<int, int, int> best{0, 0, 0};
     int best_index = -1;
     for (int i = 0; i < c_.halfspace_count(); ++i) {
@@ -140,7 +137,7 @@ class Builder {
         const Cell& a = c_.cells[patch.inside_cell];
         const Cell& b = c_.cells[patch.outside_cell];
         if (a.inside[i] != b.inside[i]) continue;  // on psi_i's boundary
-        const int root = find(p);
+        const int root = faces.find_set(p);
         if (seen_side[root] < 0) seen_side[root] = a.inside[i];
         else if (seen_side[root] != a.inside[i] && !split[root]) {
           split[root] = 1;

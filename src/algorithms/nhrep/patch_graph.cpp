@@ -1,6 +1,7 @@
 #include <hsx/algorithms/nhrep/patch_graph.hpp>
 
 #include "algorithms/flow_graph.hpp"
+#include "geometry/components.hpp"
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/edmonds_karp_max_flow.hpp>
@@ -9,7 +10,6 @@
 #include <array>
 #include <deque>
 #include <map>
-#include <numeric>
 #include <stdexcept>
 #include <utility>
 
@@ -18,39 +18,21 @@ namespace {
 
 std::size_t at(int i) { return static_cast<std::size_t>(i); }
 
-int find_root(std::vector<int>& parent, int x) {
-  while (parent[at(x)] != x) x = parent[at(x)] = parent[at(parent[at(x)])];
-  return x;
-}
-
 bool is_convexish(FeatureType t) { return t == FeatureType::Convex || t == FeatureType::Hybrid; }
 bool is_concaveish(FeatureType t) { return t == FeatureType::Concave || t == FeatureType::Hybrid; }
 
-/// Connected components of `pieces` across non-feature links whose both ends satisfy `same(a, b)`, each sorted;
-/// components ordered by their lowest piece.
+/// Connected components of `pieces` (ascending; member[p] flags them) across non-feature links whose both ends
+/// satisfy `same(a, b)` (a symmetric test), each sorted; components ordered by their lowest piece.
 template <class Same>
 std::vector<std::vector<int>> components(const BoundarySurface& surface, const std::vector<int>& pieces,
                                          const std::vector<char>& member, Same same) {
-  std::vector<char> seen(surface.pieces.size(), 0);
-  std::vector<std::vector<int>> result;
-  for (int start : pieces) {  // ascending, so components come in order of their lowest piece
-    if (seen[at(start)]) continue;
-    std::vector<int> component{start};
-    seen[at(start)] = 1;
-    for (std::size_t k = 0; k < component.size(); ++k) {
-      const int p = component[k];
-      for (int l : surface.pieces[at(p)].links) {
-        if (surface.links[at(l)].feature) continue;
-        const int q = surface.across(l, p);
-        if (!member[at(q)] || seen[at(q)] || !same(p, q)) continue;
-        seen[at(q)] = 1;
-        component.push_back(q);
-      }
+  std::vector<std::pair<int, int>> edges;
+  for (int p : pieces)
+    for (int l : surface.pieces[at(p)].links) {
+      const int q = surface.across(l, p);
+      if (p < q && !surface.links[at(l)].feature && member[at(q)] && same(p, q)) edges.emplace_back(p, q);
     }
-    std::sort(component.begin(), component.end());
-    result.push_back(std::move(component));
-  }
-  return result;
+  return induced_components(pieces, edges);
 }
 
 }  // namespace
@@ -119,22 +101,21 @@ void rebuild_curves(PatchGraph& graph) {
     const int a = graph.piece_patch[at(link.piece_a)], b = graph.piece_patch[at(link.piece_b)];
     return std::make_pair(std::min(a, b), std::max(a, b));
   };
-  std::vector<int> parent(surface.links.size());
-  std::iota(parent.begin(), parent.end(), 0);
+  DisjointSets curve_of(surface.links.size());  // feature links joined through degree-2 corners into curves
   std::map<std::pair<std::pair<int, int>, int>, int> at_corner;  // (patch pair, corner) -> a link seen there
   for (int l : feature_links) {
     const BoundaryLink& link = surface.links[at(l)];
     for (int c : {link.corner_a, link.corner_b}) {
       if (c < 0 || corner_degree[at(c)] != 2) continue;
       auto [it, fresh] = at_corner.emplace(std::make_pair(patch_pair(l), c), l);
-      if (!fresh) parent[at(find_root(parent, l))] = find_root(parent, it->second);
+      if (!fresh) curve_of.union_set(l, it->second);
     }
   }
   std::map<int, Curve> by_root;
   std::map<int, std::array<int, 3>> votes;  // per curve: smooth, convex, concave links
   for (int l : feature_links) {
-    ++votes[find_root(parent, l)][static_cast<std::size_t>(surface.links[at(l)].type)];
-    const int root = find_root(parent, l);
+    const int root = curve_of.find_set(l);
+    ++votes[root][static_cast<std::size_t>(surface.links[at(l)].type)];
     auto [it, fresh] = by_root.emplace(root, Curve{});
     Curve& curve = it->second;
     const auto [a, b] = patch_pair(l);

@@ -1,5 +1,7 @@
 #include <hsx/algorithms/nhrep/tree.hpp>
 
+#include "geometry/components.hpp"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -28,29 +30,15 @@ std::vector<char> touches(const PatchGraph& graph, const std::vector<int>& verti
   return result;
 }
 
-/// Maximal connected subgraphs of the induced subgraph on `vertices`, each ascending, ordered by lowest vertex.
+/// Maximal connected subgraphs of the induced subgraph on `vertices` (ascending), each ascending, ordered by lowest
+/// vertex.
 std::vector<std::vector<int>> mc_subgraphs(const PatchGraph& graph, const std::vector<int>& vertices) {
-  std::vector<char> member(graph.patches.size(), 0), seen(graph.patches.size(), 0);
+  std::vector<char> member(graph.patches.size(), 0);
   for (int v : vertices) member[at(v)] = 1;
-  const auto incident = graph.incident_curves();
-  std::vector<std::vector<int>> result;
-  for (int start : vertices) {
-    if (seen[at(start)]) continue;
-    std::vector<int> component{start};
-    seen[at(start)] = 1;
-    for (std::size_t k = 0; k < component.size(); ++k)
-      for (int c : incident[at(component[k])]) {
-        const Curve& curve = graph.curves[at(c)];
-        const int w = curve.patch_a == component[k] ? curve.patch_b : curve.patch_a;
-        if (member[at(w)] && !seen[at(w)]) {
-          seen[at(w)] = 1;
-          component.push_back(w);
-        }
-      }
-    std::sort(component.begin(), component.end());
-    result.push_back(std::move(component));
-  }
-  return result;
+  std::vector<std::pair<int, int>> edges;
+  for (const Curve& c : graph.curves)
+    if (member[at(c.patch_a)] && member[at(c.patch_b)]) edges.emplace_back(c.patch_a, c.patch_b);
+  return induced_components(vertices, edges);
 }
 
 /// Thrown to start the tree construction again on the decomposed graph (restart_after_decomposition).

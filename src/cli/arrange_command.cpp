@@ -73,9 +73,11 @@ void add_arrange_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "arrange", "Build the exact arrangement of a 2D scene and its complex; print counts and patches");
   cmd->add_option("SCENE", options->scene_path, "hsx-scene/1 JSON file")->required();
-  cmd->add_option("--svg", options->svg_path, "write a picture: cells, patches per halfspace, samples");
+  cmd->add_option("--svg", options->svg_path, "write a picture: cells, patches per halfspace, samples")
+      ->check(output_path());
   cmd->add_flag("--labels", options->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the text");
-  cmd->add_option("--json", options->json_path, "write the complex as hsx-complex/1 JSON ('-' for stdout)");
+  cmd->add_option("--json", options->json_path, "write the complex as hsx-complex/1 JSON ('-' for stdout)")
+      ->check(output_path());
   cmd->add_flag("-q,--quiet", options->quiet, "do not print the summary");
   cmd->callback([options] { run_arrange(*options); });
 }

@@ -384,12 +384,14 @@ void add_bench_command(CLI::App& app) {
       "bench", "Time every BSH method on every scene of the given folders, repeatedly, side by side in one run");
   cmd->add_option("DIRS", o->dirs, "folders of scenes (default data/scenes data/figures)");
   cmd->add_option("--brute-force-limit", o->brute_force_limit, "skip the oracle above this many labellings");
-  cmd->add_option("--time-limit", o->time_limit, "seconds per search before it stops (default 60)");
+  cmd->add_option("--time-limit", o->time_limit, "seconds per search before it stops (default 60)")->check(seconds());
   cmd->add_option("--repetitions", o->repetitions, "run each measurement at least N times (default 5)");
   cmd->add_option("--min-time", o->min_time,
                   "and repeat it until the runs add up to S seconds (default 0.2; 0: exactly --repetitions runs)");
-  cmd->add_option("--csv", o->csv_path, "also write every measurement as CSV (one line per input and stage)");
-  cmd->add_option("--json", o->json_path, "also write every measurement as hsx-bench/1 JSON, with each run's time");
+  cmd->add_option("--csv", o->csv_path, "also write every measurement as CSV (one line per input and stage)")
+      ->check(output_path());
+  cmd->add_option("--json", o->json_path, "also write every measurement as hsx-bench/1 JSON, with each run's time")
+      ->check(output_path());
   cmd->add_option("--meshes", o->meshes,
                   "time NH-Rep's stages on these .obj files (each with its .fea) instead of the BSH methods");
   cmd->callback([o] {

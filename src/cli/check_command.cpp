@@ -54,7 +54,7 @@ void add_check_command(CLI::App& app) {
                                               "existence, uniqueness, certificates) on a scene or complex; exit 3 "
                                               "when one fails");
   cmd->add_option("INPUT", o->input, "hsx-scene/1 or hsx-complex/1 JSON file")->required();
-  cmd->add_option("--json", o->json_path, "write the table as JSON");
+  cmd->add_option("--json", o->json_path, "write the table as JSON")->check(output_path());
   cmd->add_option("--brute-force-limit", o->brute_force_limit,
                   "largest number of labellings the oracle may enumerate (default 200000; larger: skipped)");
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons");

@@ -4,7 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <memory>
+#include <string>
 
 namespace hsx::cli {
 
@@ -16,6 +18,28 @@ void run_with_status(CLI::App* cmd, std::shared_ptr<Options> options, int (*run)
     const int status = run(*options);
     if (status != 0) throw CLI::RuntimeError(status);
   });
+}
+
+/// For output-file options: a path, never an empty one ("-" is standard output; io/files.hpp has the policy for
+/// links, devices and FIFOs). An empty path is a parse error (exit 2), not an option silently ignored.
+inline CLI::Validator output_path() {
+  return CLI::Validator([](std::string& s) { return s.empty() ? std::string("an empty path") : std::string(); },
+                        "PATH");
+}
+
+/// For seconds: a finite number >= 0 ("nan", "inf" and negatives are refused).
+inline CLI::Validator seconds() {
+  return CLI::Validator(
+      [](std::string& s) {
+        try {
+          std::size_t used = 0;
+          const double v = std::stod(s, &used);
+          if (used == s.size() && std::isfinite(v) && v >= 0) return std::string();
+        } catch (const std::exception&) {
+        }
+        return std::string("must be a finite number of seconds >= 0, not \"" + s + "\"");
+      },
+      "SECONDS");
 }
 
 void add_arrange_command(CLI::App& app);

@@ -131,13 +131,15 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("--method", o->method, "graphcut | beam | best-first | brute-force (default beam)");
   cmd->add_option("--beam-width", o->beam_width, "K for the beam search (default 1, as in the paper)");
   cmd->add_option("--max-states", o->max_states, "stop after expanding N states (0: no limit)");
-  cmd->add_option("--time-limit", o->time_limit, "stop after S seconds (0: no limit)");
+  cmd->add_option("--time-limit", o->time_limit, "stop after S seconds (0: no limit)")->check(seconds());
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons (default 2048)");
-  cmd->add_option("--max-ties", o->max_ties, "stop enumerating optimal boundaries after N (default 16)");
-  cmd->add_option("--svg", o->svg_path, "write a picture of the shape: its boundary bold, missing samples ringed red");
+  cmd->add_option("--max-ties", o->max_ties, "stop enumerating optimal boundaries after N (default 16)")
+      ->check(CLI::Range(1, 1 << 30));
+  cmd->add_option("--svg", o->svg_path, "write a picture of the shape: its boundary bold, missing samples ringed red")
+      ->check(output_path());
   cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
   cmd->add_flag("--show-removed", o->show_removed, "highlight the removed patches in the picture (paper Fig. 10)");
-  cmd->add_option("--json", o->json_path, "write the hsx-result/1 document ('-' for stdout)");
+  cmd->add_option("--json", o->json_path, "write the hsx-result/1 document ('-' for stdout)")->check(output_path());
   cmd->add_flag("--no-timing", o->no_timing, "leave seconds out of the JSON (byte-reproducible output)");
   cmd->add_flag("-q,--quiet", o->quiet, "no summary, no progress");
   cmd->callback([o] { run_extract(*o); });

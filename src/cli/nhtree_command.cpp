@@ -338,13 +338,15 @@ void add_nhtree_command(CLI::App& app) {
                "uniting every boundary component as Section 5.2 does");
   cmd->add_option("--shape", o->solid.shape_path, "2D: the solid as an hsx-result/1 file computed from INPUT");
   cmd->add_option("--csg", o->solid.csg, "2D: the solid as a CSG expression over INPUT's halfspaces");
-  cmd->add_option("--json", o->json_path, "write the tree, patch graph, decompositions and steps (hsx-nhtree/1)");
+  cmd->add_option("--json", o->json_path, "write the tree, patch graph, decompositions and steps (hsx-nhtree/1)")
+      ->check(output_path());
   cmd->add_option("--conf", o->conf_path,
-                  "write the tree in NH-Rep's .conf form (its patch numbers are the printed tree's)");
-  cmd->add_option("--svg", o->svg_path, "2D: draw the patches coloured by tree node");
+                  "write the tree in NH-Rep's .conf form (its patch numbers are the printed tree's)")
+      ->check(output_path());
+  cmd->add_option("--svg", o->svg_path, "2D: draw the patches coloured by tree node")->check(output_path());
   cmd->add_option("--decomposed", o->decomposed_prefix,
                   "mesh: write the decomposed mesh as PREFIX.obj, PREFIX.fea and PREFIX.face-patch.txt (NH-Rep's "
-                  "form; patch ids as in --conf)");
+                  "form; patch ids as in --conf)")->check(output_path());
   cmd->add_flag("--group", o->group, "group non-adjacent patches by graph colouring (NH-Rep Section 6)");
   cmd->add_option("--max-group", o->max_group, "at most this many patches per group (default 6)");
   cmd->add_option("--reference", o->reference_conf, "compare with a tree written by NH-Rep's tool (.conf)");

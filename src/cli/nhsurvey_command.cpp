@@ -38,7 +38,7 @@
 #include <hsx/algorithms/csg/expression.hpp>
 #include <hsx/algorithms/nhrep/evaluate.hpp>
 #include "cli/commands.hpp"
-#include "cli/solid.hpp"
+#include <hsx/complex/carry_solid2.hpp>
 #include <hsx/complex/boundary_from_arrangement2.hpp>
 #include <hsx/io/csgnet.hpp>
 #include <hsx/io/exact_json.hpp>

@@ -5,7 +5,8 @@
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include "cli/commands.hpp"
 #include <hsx/io/input.hpp>
-#include "cli/solid.hpp"
+#include <hsx/complex/carry_solid2.hpp>
+#include <hsx/io/solid.hpp>
 #include <hsx/complex/boundary_from_arrangement2.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/geometry/mesh3.hpp>

@@ -419,6 +419,8 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON");
     cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)");
+    cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "
+                "1 internal error.");
     run_with_status(cmd, o, &run_describe);
   }
   {
@@ -430,8 +432,14 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--max-separators", o->max_separators, "at most this many separators (default 8)");
     cmd->add_option("--json", o->json_path, "write tree, verified, stats, area as JSON");
     cmd->add_option("--svg", o->svg_path, "draw the solid");
-    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact)");
+    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact); not written "
+                                                    "when there is no verified tree");
     cmd->add_option("--circle-segments", o->circle_segments, "OpenSCAD $fn for circles (default 96)");
+    cmd->footer("Exit codes: 0 a verified tree was built (after separators, when --separators was given and needed); "
+                "3 the solid is not describable by the halfspaces (separators included), so there is no tree: "
+                "--json and --svg are still written, --openscad is not (a message says so); 2 bad input only "
+                "(e.g. --separators or --openscad with a complex instead of a scene); 1 internal error (e.g. a tree "
+                "that fails verification).");
     run_with_status(cmd, o, &run_csg);
   }
   {

@@ -1,16 +1,21 @@
 // hsx describe / csg / convert / samples / corpus: Halfspace CSG (Shapiro-Vossler, BHC) and the conversion of
-// solids to BSH (BSH paper, Section 6).
+// solids to BSH (BSH paper, Section 6). Options are parsed and results printed here; the algorithms are the
+// library's (algorithms/csg/solid_tree.hpp, separators.hpp, convert.hpp; io/solid.hpp).
+// Exit codes of describe and csg: 0 describable (csg: a verified tree was built, after separators when asked),
+// 3 not describable (no tree), 2 bad input, 1 internal error (e.g. a tree that fails verification).
+#include <hsx/algorithms/bsh/problem.hpp>
+#include <hsx/algorithms/bsh/sample_scene.hpp>
 #include <hsx/algorithms/bsh/samples.hpp>
-#include <hsx/algorithms/csg/bhc.hpp>
+#include <hsx/algorithms/csg/convert.hpp>
+#include <hsx/algorithms/csg/solid_tree.hpp>
 #include "cli/commands.hpp"
-#include "cli/solid.hpp"
-#include "geometry/planar_points.hpp"
 #include <hsx/io/csg_text.hpp>
 #include <hsx/io/csgnet.hpp>
 #include <hsx/io/files.hpp>
 #include <hsx/io/json_values.hpp>
 #include <hsx/io/openscad.hpp>
 #include <hsx/io/scene_json.hpp>
+#include <hsx/io/solid.hpp>
 #include <hsx/io/svg.hpp>
 
 #include <chrono>
@@ -99,7 +104,7 @@ int run_describe(const DescribeOptions& o) {
       std::cout << "\n";
     }
   }
-  return 0;
+  return d.describable ? 0 : 3;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -121,202 +126,103 @@ nlohmann::json stats_json(const csg::BhcResult& r) {
           {"partitions", r.partitions}};
 }
 
+const char* to_string(csg::SeparatorStop stop) {
+  switch (stop) {
+    case csg::SeparatorStop::Describable: return "describable";
+    case csg::SeparatorStop::MaxSeparators: return "max-separators";
+    case csg::SeparatorStop::NoCandidateSeparates: return "no-candidate-separates";
+  }
+  return "?";
+}
+
+nlohmann::json separators_json(const Scene2& input, const csg::SeparatedSolid& s) {
+  nlohmann::json added = nlohmann::json::array();
+  const nlohmann::json halfspaces = write_scene2(s.scene).at("halfspaces");
+  for (std::size_t k = input.halfspaces.size(); k < s.scene.halfspaces.size(); ++k) added.push_back(halfspaces.at(k));
+  return added;
+}
+
+/// Why separators did not make the solid describable, for the summary line.
+std::string separators_outcome(const csg::SeparatedSolid& s, int max_separators) {
+  if (s.stop == csg::SeparatorStop::MaxSeparators)
+    return "stopped at --max-separators " + std::to_string(max_separators);
+  return "none of the " + std::to_string(s.candidates_tried) + " candidates tried separated the remaining mixed cells";
+}
+
+void print_tree_summary(const csg::BhcResult& r, const Complex& complex) {
+  std::cout << "tree " << csg::to_text(*r.tree, complex.halfspace_names) << "\n"
+            << "verified on every cell: " << (r.verified ? "yes" : "NO") << "\n"
+            << "depth " << r.stats.depth << ", internal nodes " << r.stats.internal_nodes << ", leaves "
+            << r.stats.leaves << ", duplicated halfspaces " << r.stats.duplicated_halfspaces << ", factored "
+            << r.factored << ", partitions " << r.partitions << "\n";
+}
+
 int run_csg(const CsgOptions& o) {
   const LoadedInput in = load_input(o.input);
+  if (o.max_separators < 0) throw InputError("--max-separators: must be >= 0");
+  if (!in.scene && o.separators)
+    throw InputError("--separators: needs a scene (separating half-planes are geometry), not a complex");
+  if (!in.scene && !o.openscad_path.empty()) throw InputError("--openscad: needs a scene, not a complex");
   const Solid solid = load_solid(in, o.solid);
-  const Complex* complex = &in.complex();
-  const Scene2* scene = in.scene ? &*in.scene : nullptr;
-  std::vector<char> cells = solid.cells;
-  csg::BhcOptions options;
-  if (scene) options.planar = planar_halfspaces(*scene);
-  csg::BhcResult r = csg::bhc(*complex, cells, options);
-  std::optional<SeparatedSolid> separated;
-  if (!r.describable && o.separators) {
-    if (!in.scene) throw InputError("--separators: needs a scene (separating half-planes are geometry)");
-    separated = add_separators(*in.scene, *in.arranged, solid.cells, o.max_separators);
-    complex = &separated->arranged.complex;
-    scene = &separated->scene;
-    cells = separated->cells;
-    options.planar = planar_halfspaces(*scene);
-    r = csg::bhc(*complex, cells, options);
-  }
+  const csg::SolidTree t = in.scene ? csg::build_tree(*in.scene, *in.arranged, solid.cells,
+                                                      csg::SolidTreeOptions{o.separators, o.max_separators})
+                                    : csg::build_tree(in.complex(), solid.cells);
+  const csg::BhcResult& r = t.bhc;
+  const Complex& complex = t.separated ? t.separated->arranged.complex : in.complex();
+  const std::vector<char>& cells = t.separated ? t.separated->cells : solid.cells;
+  const Scene2* scene = t.separated ? &t.separated->scene : (in.scene ? &*in.scene : nullptr);
   nlohmann::json j{{"format", "hsx-csg/1"}, {"describable", r.describable}, {"verified", r.verified}};
-  const Measure area = bsh::inside_measure(*complex, cells);
+  const Measure area = bsh::inside_measure(complex, cells);
   j["area"] = measure_to_json(area);
-  if (separated) {
-    nlohmann::json added = nlohmann::json::array();
-    for (std::size_t k = in.scene->halfspaces.size(); k < scene->halfspaces.size(); ++k)
-      added.push_back(write_scene2(*scene).at("halfspaces").at(k));
-    j["separators"] = added;
+  if (t.separated) {
+    j["separators"] = separators_json(*in.scene, *t.separated);
+    j["separator_candidates_tried"] = t.separated->candidates_tried;
+    j["separator_stop"] = to_string(t.separated->stop);
   }
   if (r.describable) {
-    j["tree"] = csg_to_json(*r.tree, complex->halfspace_names);
-    j["text"] = csg::to_text(*r.tree, complex->halfspace_names);
+    j["tree"] = csg_to_json(*r.tree, complex.halfspace_names);
+    j["text"] = csg::to_text(*r.tree, complex.halfspace_names);
     j["stats"] = stats_json(r);
   } else {
-    const csg::Describability d = csg::describability(*complex, cells);
-    j["mixed_terms"] = mixed_terms_json(*complex, d);
+    j["mixed_terms"] = mixed_terms_json(complex, t.describability);
   }
   std::string svg_text, scad_text;
   if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - BHC", nullptr);
-  if (!o.openscad_path.empty()) {
-    if (!scene) throw InputError("--openscad: needs a scene");
-    if (!r.describable) throw InputError("--openscad: the solid is not describable, there is no tree to export");
+  const bool write_scad = !o.openscad_path.empty() && t.has_verified_tree();
+  if (write_scad) {
     OpenScadOptions so;
     so.circle_segments = o.circle_segments;
     scad_text = to_openscad(*r.tree, *scene, so);
   }
   if (!o.json_path.empty()) write_file_atomically(o.json_path, j.dump(2) + "\n");
   if (!o.svg_path.empty()) write_file_atomically(o.svg_path, svg_text);
-  if (!o.openscad_path.empty()) write_file_atomically(o.openscad_path, scad_text);
+  if (write_scad) write_file_atomically(o.openscad_path, scad_text);
+  if (!o.openscad_path.empty() && !write_scad)
+    std::cerr << "hsx: --openscad: " << o.openscad_path << " not written: there is no verified tree\n";
   if (o.json_path != "-") {
-    if (separated) std::cout << "added " << separated->separators << " separating half-plane(s)\n";
+    if (t.separated) std::cout << "added " << t.separated->separators << " separating half-plane(s)\n";
     if (r.describable) {
-      std::cout << "tree " << csg::to_text(*r.tree, complex->halfspace_names) << "\n"
-                << "verified on every cell: " << (r.verified ? "yes" : "NO") << "\n"
-                << "depth " << r.stats.depth << ", internal nodes " << r.stats.internal_nodes << ", leaves "
-                << r.stats.leaves << ", duplicated halfspaces " << r.stats.duplicated_halfspaces << ", factored "
-                << r.factored << ", partitions " << r.partitions << "\n";
+      print_tree_summary(r, complex);
     } else {
       std::cout << "not describable: BHC stopped at a canonical intersection term holding inside cells";
       for (int k : r.witness.inside_cells) std::cout << " " << k;
       std::cout << " and outside cells";
       for (int k : r.witness.outside_cells) std::cout << " " << k;
-      std::cout << (o.separators ? " (separators did not help)" : " (try --separators)") << "\n";
+      if (t.separated)
+        std::cout << " (" << separators_outcome(*t.separated, o.max_separators) << ")";
+      else if (in.scene)
+        std::cout << " (try --separators)";
+      std::cout << "\n";
     }
     std::cout << "area " << area.decimal_string(30);
     if (auto e = area.exact_string()) std::cout << " = " << *e;
     std::cout << "\n";
   }
-  return r.describable && r.verified ? 0 : (r.describable ? 1 : 0);
+  if (t.has_verified_tree()) return 0;
+  return r.describable ? 1 : 3;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-/// A BSH scene whose samples sit on the given patches: the scene's halfspaces and domain, one exact `at` sample
-/// per patch, on the patch's middle arrangement edge (geometry/planar_points.hpp says where exactly).
-Scene2 scene_with_samples(const Scene2& scene, const Arranged2& arranged, const std::vector<int>& patches,
-                          const std::string& description) {
-  Scene2 out = scene;
-  out.description = description;
-  out.samples.clear();
-  for (int p : patches) {
-    const Patch& patch = arranged.complex.patches.at(p);
-    const int edge = patch.pieces.at(patch.pieces.size() / 2);
-    Sample2 s;
-    s.halfspace = patch.halfspace;
-    s.given = rational_point_inside_edge(arranged.arrangement.edges().at(edge), arranged.arrangement.vertices());
-    s.location = OneRootPoint(s.given);
-    out.samples.push_back(s);
-  }
-  return out;
-}
-
-struct ConversionReport {
-  Scene2 scene;                   // the BSH scene written
-  bsh::SampleGenResult samples;
-  std::vector<std::string> flipped;  // halfspaces complemented because the solid uses their boundary reversed
-  bool round_trip = false;        // extracting the written scene (re-read from its JSON text) gives the solid
-  std::string failure;
-};
-
-/// A BSH boundary must run along every halfspace with that halfspace's orientation (Def. 3.1). A CSG solid may
-/// use a boundary reversed (A - B runs along B with the solid outside B): those halfspaces are complemented in the
-/// BSH scene. One boundary used both ways would need a halfspace and its coincident complement, which hsx's
-/// coincidence convention keeps off every boundary (algorithms/bsh/problem.hpp): reported as a failure.
-std::optional<Scene2> orient_for_bsh(const Scene2& scene, const Complex& complex, const std::vector<char>& solid,
-                                     std::vector<std::string>& flipped, std::string& failure) {
-  std::vector<char> normal(scene.halfspaces.size(), 0), reversed(scene.halfspaces.size(), 0);
-  std::vector<const std::vector<int>*> reversed_only;  // supports on b that no halfspace runs along correctly
-  for (const auto& group : complex.supports) {
-    const Patch& first = complex.patches[group.front()];
-    if (solid[first.inside_cell] == solid[first.outside_cell]) continue;
-    bool agrees = false;
-    for (int p : group) {
-      const Patch& patch = complex.patches[p];
-      if (solid[patch.inside_cell]) {
-        agrees = true;
-        normal[patch.halfspace] = 1;
-      }
-    }
-    if (!agrees) reversed_only.push_back(&group);
-  }
-  // Each such support needs one of its (coincident) halfspaces complemented: prefer one used nowhere else; when
-  // every one of them also runs along the solid correctly somewhere, add a complemented copy instead.
-  std::vector<char> copy(scene.halfspaces.size(), 0);
-  for (const auto* group : reversed_only) {
-    int pick = complex.patches[group->front()].halfspace;
-    for (int p : *group) {
-      const int h = complex.patches[p].halfspace;
-      if (reversed[h] || copy[h]) { pick = h; break; }
-      if (normal[pick] && !normal[h]) pick = h;
-    }
-    (normal[pick] ? copy : reversed)[pick] = 1;
-  }
-  Scene2 out = scene;
-  for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
-    if (reversed[i]) {
-      out.halfspaces[i].complement = !out.halfspaces[i].complement;
-      flipped.push_back(scene.halfspaces[i].name);
-    }
-    if (copy[i]) {
-      Halfspace2 h = scene.halfspaces[i];
-      h.complement = !h.complement;
-      h.name += "~";
-      while (out.find_halfspace(h.name) >= 0) h.name += "~";
-      flipped.push_back(h.name + " (a complemented copy of " + scene.halfspaces[i].name + ")");
-      out.halfspaces.push_back(h);
-    }
-  }
-  (void)failure;
-  return out;
-}
-
-/// Section 6.2: the solid's boundary patches (one sample each reproduces it, Prop. 4.1), reduced by
-/// GENERATE-SAMPLES; then the written scene is read back and extracted with `search` to check the round trip.
-ConversionReport convert_to_bsh(const Scene2& scene, const Arranged2& arranged, const std::vector<char>& solid,
-                                bsh::Method search) {
-  ConversionReport report;
-  for (std::size_t k = 0; k < solid.size(); ++k)
-    if (solid[k] && arranged.complex.cells[k].outer)
-      throw InputError("the solid reaches the domain boundary (cell " + std::to_string(k) +
-                       " touches it); enlarge the domain");
-  const std::optional<Scene2> oriented = orient_for_bsh(scene, arranged.complex, solid, report.flipped, report.failure);
-  if (!oriented) return report;
-  Scene2 bare = *oriented;
-  bare.samples.clear();
-  const Arranged2 oriented_arranged = report.flipped.empty() && scene.samples.empty() ? arranged : arrange(bare);
-  // Cell order may differ after adding copies: carry the solid over by point location.
-  const std::vector<char> oriented_solid =
-      report.flipped.empty() && scene.samples.empty()
-          ? solid
-          : carry_solid_over(arranged.arrangement, solid, oriented_arranged.arrangement);
-  bsh::SampleGenOptions options;
-  options.search = search;
-  report.samples = bsh::generate_samples(oriented_arranged.complex, oriented_solid, options);
-  if (!report.samples.reproduced) {
-    report.failure = report.samples.failure;
-    return report;
-  }
-  std::string description = "BSH conversion: " + std::to_string(report.samples.sample_patches.size()) +
-                            " samples from GENERATE-SAMPLES";
-  if (!report.flipped.empty()) {
-    description += "; complemented (the solid uses them reversed):";
-    for (const auto& n : report.flipped) description += " " + n;
-  }
-  report.scene = scene_with_samples(bare, oriented_arranged, report.samples.sample_patches, description);
-  // Round trip through the file format: write, read back, arrange, extract.
-  const Scene2 back = read_scene_text(write_scene2(report.scene).dump());
-  const Arranged2 again = arrange(back);
-  const bsh::Problem problem(again.complex);
-  bsh::ExtractOptions extract_options;
-  extract_options.method = search;
-  extract_options.enumerate_ties = false;
-  const bsh::ExtractResult r = bsh::extract(problem, extract_options);
-  report.round_trip = r.labelling == oriented_solid;
-  if (!report.round_trip) report.failure = "extracting the written scene does not give the solid back";
-  return report;
-}
-
 std::optional<bsh::Method> search_method(const std::string& name) {
   if (name == "beam") return bsh::Method::Beam;
   if (name == "best-first") return bsh::Method::BestFirst;
@@ -332,26 +238,19 @@ int run_convert(const ConvertOptions& o) {
   const auto search = search_method(o.search);
   if (!search) throw InputError("--search: beam or best-first");
   if (o.out_path.empty()) throw InputError("--out: required (the BSH scene to write)");
-  Scene2 scene;
-  Arranged2 arranged;
-  std::vector<char> solid;
+  csg::ConversionReport report;
   if (!o.csgnet.empty()) {
     if (!o.input.empty() || !o.solid.csg.empty() || !o.solid.shape_path.empty())
       throw InputError("--csgnet: give the program alone (it defines the scene and the solid)");
-    CsgnetProgram program = read_csgnet(o.csgnet, "--csgnet");
-    scene = program.scene;
-    arranged = arrange(scene);
-    solid = csg::evaluate(*program.expression, arranged.complex);
+    const CsgnetProgram program = read_csgnet(o.csgnet, "--csgnet");
+    report = csg::convert_to_bsh(program.scene, *program.expression, *search);
   } else {
     if (o.input.empty()) throw InputError("give a SCENE with --csg/--shape, or --csgnet PROGRAM");
     const LoadedInput in = load_input(o.input);
     if (!in.scene) throw InputError(o.input + ": convert needs a scene, not a complex");
-    scene = *in.scene;
-    arranged = *in.arranged;
-    solid = load_solid(in, o.solid).cells;
+    report = csg::convert_to_bsh(*in.scene, *in.arranged, load_solid(in, o.solid).cells, *search);
   }
-  const ConversionReport report = convert_to_bsh(scene, arranged, solid, *search);
-  if (!report.samples.reproduced || !report.round_trip) {
+  if (!report.ok()) {
     std::cerr << "hsx: conversion failed: " << report.failure << "\n";
     return 3;
   }
@@ -379,7 +278,7 @@ int run_samples(const SamplesOptions& o) {
   const auto search = search_method(o.search);
   if (!search) throw InputError("--search: beam or best-first");
   const LoadedInput in = load_input(o.input);
-  const Solid solid = load_solid(in, SolidSource{o.target, o.csg});
+  const Solid solid = load_solid(in, SolidSource{o.target, o.csg, "--target", "--csg"});
   const bsh::Problem problem(in.complex());
   std::string why;
   if (!bsh::is_orientation_preserving(problem, solid.cells, &why))
@@ -401,7 +300,7 @@ int run_samples(const SamplesOptions& o) {
   std::string scene_text;
   if (!o.out_path.empty()) {
     if (!in.scene) throw InputError("--out: needs a scene input");
-    scene_text = write_scene2(scene_with_samples(*in.scene, *in.arranged, r.sample_patches,
+    scene_text = write_scene2(bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches,
                                                  "samples from GENERATE-SAMPLES (" + o.search + ")"))
                      .dump(2) + "\n";
   }
@@ -458,52 +357,29 @@ int run_corpus(const CorpusOptions& o) {
       continue;
     }
     try {
-      CsgnetProgram& program = *parsed;
-      const Arranged2 arranged = arrange(program.scene);
-      const std::vector<char> solid = csg::evaluate(*program.expression, arranged.complex);
-      const csg::Describability d = csg::describability(arranged.complex, solid);
-      csg::BhcOptions bhc_options;
-      bhc_options.planar = planar_halfspaces(program.scene);
-      const csg::BhcResult tree = csg::bhc(arranged.complex, solid, bhc_options);
-      row.leaves = tree.stats.leaves;
-      row.duplicated = tree.stats.duplicated_halfspaces;
-      if (!d.describable) {
-        ++not_describable;
-        row.failure = "not describable";
-      } else if (!tree.describable || !tree.verified) {
-        ++bhc_failed;
-        row.failure = "BHC tree missing or wrong";
-      } else if (std::none_of(solid.begin(), solid.end(), [](char c) { return c != 0; })) {
-        ++ok;  // an empty solid converts to the empty sample set trivially
-      } else {
-        const ConversionReport report = convert_to_bsh(program.scene, arranged, solid, *search);
-        if (!report.samples.reproduced) {
-          ++round_trip_failed;
-          row.failure = report.failure;
-          row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          total_seconds += row.seconds;
-          std::cout << "line " << row.line << ": " << row.failure << "\n  " << row.program << "\n";
-          rows.push_back(row);
-          continue;
-        }
-        row.samples = report.samples.sample_patches.size();
-        row.sufficient_set = report.samples.used_sufficient_set;
-        if (row.sufficient_set) {
-          ++sufficient_sets;
-          std::cout << "line " << row.line << ": GENERATE-SAMPLES missed the target (search incomplete at "
-                    << "non-generic junctions); used one sample per boundary patch\n";
-        }
-        row.lower = report.samples.initial;
-        row.upper = report.samples.upper_bound;
-        if (!report.round_trip) {
-          ++round_trip_failed;
-          row.failure = report.failure;
-        } else {
+      const csg::ProgramCheck c = csg::check_program(parsed->scene, *parsed->expression, *search);
+      row.leaves = c.leaves;
+      row.duplicated = c.duplicated;
+      row.samples = c.samples;
+      row.lower = c.lower_bound;
+      row.upper = c.upper_bound;
+      row.sufficient_set = c.sufficient_set;
+      row.failure = c.failure;
+      if (c.sufficient_set) {
+        ++sufficient_sets;
+        std::cout << "line " << row.line << ": GENERATE-SAMPLES missed the target (search incomplete at "
+                  << "non-generic junctions); used one sample per boundary patch\n";
+      }
+      switch (c.outcome) {
+        case csg::ProgramOutcome::Ok:
           ++ok;
           total_samples += static_cast<long>(row.samples);
           total_lower += row.lower;
           total_upper += row.upper;
-        }
+          break;
+        case csg::ProgramOutcome::NotDescribable: ++not_describable; break;
+        case csg::ProgramOutcome::BhcFailed: ++bhc_failed; break;
+        case csg::ProgramOutcome::ConversionFailed: ++round_trip_failed; break;
       }
     } catch (const std::exception& e) {
       ++errors;
@@ -543,6 +419,8 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON");
     cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)");
+    cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "
+                "1 internal error.");
     run_with_status(cmd, o, &run_describe);
   }
   {
@@ -554,8 +432,14 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--max-separators", o->max_separators, "at most this many separators (default 8)");
     cmd->add_option("--json", o->json_path, "write tree, verified, stats, area as JSON");
     cmd->add_option("--svg", o->svg_path, "draw the solid");
-    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact)");
+    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact); not written "
+                                                    "when there is no verified tree");
     cmd->add_option("--circle-segments", o->circle_segments, "OpenSCAD $fn for circles (default 96)");
+    cmd->footer("Exit codes: 0 a verified tree was built (after separators, when --separators was given and needed); "
+                "3 the solid is not describable by the halfspaces (separators included), so there is no tree: "
+                "--json and --svg are still written, --openscad is not (a message says so); 2 bad input only "
+                "(e.g. --separators or --openscad with a complex instead of a scene); 1 internal error (e.g. a tree "
+                "that fails verification).");
     run_with_status(cmd, o, &run_csg);
   }
   {

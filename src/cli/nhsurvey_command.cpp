@@ -18,7 +18,7 @@
 //   skipped and counted; a missing file is reported as skipped).
 //
 // Whole-plane evaluation (survey.hpp): each solid is moved to the arrangement of its scene (samples dropped) in a
-// domain that contains the scene's own domain and the domain hsx would choose (cli/solid.hpp's whole_plane_scene);
+// domain that contains the scene's own domain and the domain hsx would choose (complex/carry_solid2.hpp's whole_plane_scene);
 // BSH shapes are carried over by exact point location of cell witnesses (carry_to_whole_plane).
 //
 // Output: a table per source (counts and rates), then the first `--keep-count` "describable but fails" examples of
@@ -33,7 +33,8 @@
 #include <hsx/algorithms/csg/random_solid.hpp>
 #include <hsx/algorithms/nhrep/survey.hpp>
 #include "cli/commands.hpp"
-#include "cli/solid.hpp"
+#include <hsx/complex/carry_solid2.hpp>
+#include <hsx/complex/boundary_from_arrangement2.hpp>
 #include <hsx/io/csgnet.hpp>
 #include <hsx/io/exact_json.hpp>
 #include <hsx/io/nhrep_survey.hpp>

@@ -1,7 +1,7 @@
 // `hsx nhtree`: NH-Rep's Boolean tree (Guo et al. 2022, Section 5) of a 2D solid or a 3D mesh, with the patch
 // graph, the cross-checks, and optional comparison with a tree written by NH-Rep's own tool.
 #include "cli/commands.hpp"
-#include "cli/solid.hpp"
+#include <hsx/io/solid.hpp>
 
 #include <hsx/algorithms/nhrep/compare.hpp>
 #include <hsx/algorithms/nhrep/evaluate.hpp>

@@ -3,6 +3,10 @@
 # - hsx describe SCENE --csg/--shape --json: describable, terms, mixed_terms (signs, cells, witness points);
 # - hsx csg SCENE --csg/--shape --json: tree, text, verified, stats, area {decimal, exact}; --separators on BSH
 #   Fig. 2's non-describable shapes 5 and 6 (data/figures/fig02-{5,6}.json) makes them describable, verified;
+# - exit codes of describe and csg: 0 describable / a verified tree, 3 not describable (no tree; --openscad not
+#   written, with a message), 2 bad input only; separators are tried before anything is written; the lens's
+#   best-first shape is separated by a supporting line of a polygon edge; a hole inside a ring of the same sign
+#   vector is not separable by one line ("none of the N candidates tried separated");
 # - hsx convert SCENE --csg EXPR --out S, then hsx extract S: the same area as hsx csg gives for the solid;
 #   hsx convert --csgnet PROGRAM --out S, then hsx extract S: the area of the same solid written as CSG over S;
 #   orientation rule: a halfspace used reversed is complemented; used both ways: a failure (exit 3);
@@ -91,7 +95,7 @@ if run 0 "describe --csg" "$HSX" describe "$FIG/fig02-1.json" --csg "A & ~B" --j
     json "$TMP/d1.json" 'd["format"] == "hsx-describe/1" and d["describable"] is True and d["mixed_terms"] == [] and d["terms"] == 4'
 fi
 for k in 5 6; do
-  if run 0 "describe fig02-$k" "$HSX" describe "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/d$k.json"; then
+  if run 3 "describe fig02-$k" "$HSX" describe "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/d$k.json"; then
     # One mixed term: A in, B out (the arms L and R), L inside, R outside; witness points on either side of x = 0.
     check "describe fig02-$k: one mixed term A & ~B with witnesses" json "$TMP/d$k.json" '
       d["describable"] is False and len(d["mixed_terms"]) == 1 and
@@ -128,9 +132,9 @@ for k in 1 2 3 4; do
     check "csg fig02-$k: verified, area ${areas[$k]}" \
       json "$TMP/c$k.json" "d['verified'] is True and d['area']['exact'] == '${areas[$k]}'"
 done
-# Shapes 5 and 6: not describable (exit 0, mixed terms, no tree); with --separators: describable and verified.
+# Shapes 5 and 6: not describable (exit 3, mixed terms, no tree); with --separators: describable and verified.
 for k in 5 6; do
-  if run 0 "csg fig02-$k" "$HSX" csg "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/c$k.json"; then
+  if run 3 "csg fig02-$k" "$HSX" csg "$FIG/fig02-$k.json" --shape "$TMP/r$k.json" --json "$TMP/c$k.json"; then
     check "csg fig02-$k: not describable, mixed term, no tree" \
       json "$TMP/c$k.json" "d['describable'] is False and 'tree' not in d and len(d['mixed_terms']) == 1"
   fi
@@ -142,6 +146,98 @@ for k in 5 6; do
         any(leaf == s['name'] for s in d['separators'] for leaf in d['text'].replace('(', ' ').replace(')', ' ').split())"
   fi
 done
+
+# ---- exit codes of describe and csg, --openscad, and the separators' candidates ----
+# The lens's best-first shape is not describable by A, B, C, T (one mixed term); the supporting lines of T's edges
+# separate it (y = -1, T's top edge, does; so does the line through (1, -3) and (4, -1)). Before the fix: "added 0
+# ... separators did not help" and exit 0; with --openscad, exit 2 without trying separators.
+run 0 "extract lens best-first" "$HSX" extract "$SCENES/lens.json" --method best-first --json "$TMP/lens.json"
+rm -f "$TMP/lens.scad"
+if run 3 "csg lens shape: not describable, exit 3" "$HSX" csg "$SCENES/lens.json" --shape "$TMP/lens.json" \
+  --json "$TMP/lensc.json"; then
+  check "csg lens shape: no tree, one mixed term" json "$TMP/lensc.json" \
+    "d['describable'] is False and 'tree' not in d and len(d['mixed_terms']) == 1 and 'separators' not in d"
+  check "csg lens shape: stdout suggests --separators" grep -qF "(try --separators)" "$TMP/out"
+fi
+run 3 "describe lens shape: exit 3" "$HSX" describe "$SCENES/lens.json" --shape "$TMP/lens.json"
+run 0 "describe lens A | B: exit 0" "$HSX" describe "$SCENES/lens.json" --csg "A | B"
+if run 3 "csg lens shape --openscad: exit 3 (not 2)" "$HSX" csg "$SCENES/lens.json" --shape "$TMP/lens.json" \
+  --openscad "$TMP/lens.scad"; then
+  err_names "--openscad" "not written"
+  if [[ -e "$TMP/lens.scad" ]]; then fail "--openscad written without a tree"; else pass; fi
+fi
+separator_on_edge_of_T() {  # separator_on_edge_of_T CSG_JSON SCENE_JSON
+  python3 - "$1" "$2" <<'EOF'
+import json, sys
+from fractions import Fraction as F
+d = json.load(open(sys.argv[1]))
+scene = json.load(open(sys.argv[2]))
+T = [[F(str(c)) for c in v] for h in scene["halfspaces"] if h["name"] == "T" for v in h["vertices"]]
+seps = d.get("separators", [])
+def on(s, p):
+    n = [F(str(c)) for c in s["normal"]]
+    return n[0] * p[0] + n[1] * p[1] == F(str(s["offset"]))
+edge_lines = [s for s in seps if any(on(s, T[i]) and on(s, T[(i + 1) % 3]) for i in range(3))]
+ok = (d["describable"] and d["verified"] and len(seps) == 1 and len(edge_lines) == 1 and
+      seps[0]["name"] in d["text"].replace("(", " ").replace(")", " ").split())
+if not ok: print("separators: %r, text %r" % (seps, d.get("text")), file=sys.stderr)
+sys.exit(0 if ok else 1)
+EOF
+}
+if run 0 "csg lens shape --separators: exit 0" "$HSX" csg "$SCENES/lens.json" --shape "$TMP/lens.json" --separators \
+  --json "$TMP/lenss.json"; then
+  check "csg lens --separators: one separator, on a supporting line of one of T's edges; verified tree using it" \
+    separator_on_edge_of_T "$TMP/lenss.json" "$SCENES/lens.json"
+  check "csg lens --separators: says it added one, not that separators did not help" \
+    bash -c "grep -qF 'added 1 separating' '$TMP/out' && ! grep -qF 'did not help' '$TMP/out'"
+fi
+if run 0 "csg lens shape --separators --openscad: exit 0, written" "$HSX" csg "$SCENES/lens.json" \
+  --shape "$TMP/lens.json" --separators --openscad "$TMP/lens.scad"; then
+  check "--openscad written after separators" test -s "$TMP/lens.scad"
+fi
+# A hole (the cell in neither P nor D) inside a ring of the outer region with the same sign vector: every line that
+# cuts the hole cuts the outer region too, so no single separator reduces the mixed cells.
+cat >"$TMP/cring.json" <<'EOF'
+{"format": "hsx-scene/1", "dimension": 2, "domain": {"min": [-5, -5], "max": [5, 5]},
+ "halfspaces": [{"name": "P", "kind": "polygon", "vertices": [[3, 0.5], [3, 3], [-3, 3], [-3, -3], [3, -3], [3, -0.5],
+                  [2, -0.5], [2, -2], [-2, -2], [-2, 2], [2, 2], [2, 0.5]]},
+                {"name": "D", "kind": "disk", "center": [2.5, 0], "radius": 1}]}
+EOF
+if run 0 "arrange the C ring" "$HSX" arrange "$TMP/cring.json" --json "$TMP/cringc.json"; then
+  python3 - "$TMP/cringc.json" "$TMP/hole.json" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+hole = [c["id"] for c in d["cells"] if c["inside"] == [] and not c["outer"]]
+json.dump({"format": "hsx-result/1", "inside_cells": hole}, open(sys.argv[2], "w"))
+EOF
+  rm -f "$TMP/hole.scad"
+  if run 3 "csg hole --separators --openscad: exit 3" "$HSX" csg "$TMP/cring.json" --shape "$TMP/hole.json" \
+    --separators --openscad "$TMP/hole.scad" --json "$TMP/holec.json"; then
+    check "csg hole --separators: 'none of the N candidates tried separated' with N > 0" \
+      grep -qE "none of the [1-9][0-9]* candidates tried separated" "$TMP/out"
+    check "csg hole --separators: JSON says why" json "$TMP/holec.json" \
+      "d['describable'] is False and d['separators'] == [] and d['separator_stop'] == 'no-candidate-separates' and
+       d['separator_candidates_tried'] > 0 and len(d['mixed_terms']) == 1"
+    err_names "--openscad" "not written"
+    if [[ -e "$TMP/hole.scad" ]]; then fail "--openscad written without a tree"; else pass; fi
+  fi
+  run 3 "csg hole --separators --max-separators 0: exit 3" "$HSX" csg "$TMP/cring.json" --shape "$TMP/hole.json" \
+    --separators --max-separators 0 &&
+    check "--max-separators 0: says where it stopped" grep -qF "stopped at --max-separators 0" "$TMP/out"
+  run 3 "describe hole: exit 3" "$HSX" describe "$TMP/cring.json" --shape "$TMP/hole.json"
+fi
+# Bad input (exit 2): options that need a scene given a complex, a negative --max-separators.
+if run 0 "arrange fig02-5 as a complex" "$HSX" arrange "$FIG/fig02-5.json" --json "$TMP/c5complex.json"; then
+  run 3 "csg on a complex: not describable, exit 3" "$HSX" csg "$TMP/c5complex.json" --shape "$TMP/r5.json"
+  run 2 "csg on a complex --separators: exit 2" "$HSX" csg "$TMP/c5complex.json" --shape "$TMP/r5.json" --separators &&
+    err_names "--separators"
+  run 2 "csg on a complex --openscad: exit 2" "$HSX" csg "$TMP/c5complex.json" --shape "$TMP/r5.json" \
+    --openscad "$TMP/bad.scad" && err_names "--openscad"
+fi
+run 2 "csg --max-separators -1: exit 2" "$HSX" csg "$FIG/fig02-5.json" --shape "$TMP/r5.json" --separators \
+  --max-separators -1 && err_names "--max-separators"
+check "csg --help documents the exit codes" bash -c "'$HSX' csg --help | grep -qF '3 the solid is not describable'"
+check "describe --help documents the exit codes" bash -c "'$HSX' describe --help | grep -qF '3 not describable'"
 
 # ---- convert (SCENE --csg) then extract: same area ----
 for expr in "A - B" "(A - B) | (B & ~C)" "A | B"; do
@@ -267,8 +363,7 @@ if [[ "$(field "$TMP/r3a.json" 'max(d["inside_cells"])')" -ge 6 ]]; then
 else
   fail "fig03-a's result has no cell id >= 6 (test setup)"
 fi
-# samples spells the shape option --target: its message must say so. FAILS at the time of writing: the message
-# comes from load_solid (src/cli/solid.cpp) and names --shape, an option `hsx samples` does not have.
+# samples spells the shape option --target: its message must say so (io/solid.hpp: SolidSource's option names).
 run 2 "samples: both --target and --csg" "$HSX" samples "$FIG/fig02-5.json" --target "$TMP/r5.json" --csg "A" \
   --json "$TMP/bad.json" && err_names "--target" "--csg"
 run 2 "samples: an unbounded target" "$HSX" samples "$FIG/fig02-1.json" --csg "~A" \

@@ -1,7 +1,7 @@
 #include <hsx/algorithms/nhrep/planar.hpp>
 
 #include <hsx/complex/boundary_from_arrangement2.hpp>
-#include <hsx/complex/whole_plane.hpp>
+#include <hsx/complex/carry_solid2.hpp>
 #include "geometry/planar_corners.hpp"
 
 #include <algorithm>

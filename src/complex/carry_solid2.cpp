@@ -1,10 +1,23 @@
-#include <hsx/complex/whole_plane.hpp>
+#include <hsx/complex/carry_solid2.hpp>
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace hsx {
+
+std::vector<char> carry_solid_over(const Arrangement2& old_arrangement, const std::vector<char>& solid,
+                                   const Arrangement2& refined) {
+  std::vector<char> out;
+  out.reserve(refined.faces().size());
+  for (const ArrFace2& f : refined.faces()) {
+    const PointLocation2 loc = old_arrangement.locate(f.interior);
+    if (loc.kind != PointLocation2::Face)
+      throw std::logic_error("carrying a solid to a refinement: a refined cell is not inside an old cell");
+    out.push_back(solid.at(static_cast<std::size_t>(loc.index)));
+  }
+  return out;
+}
 
 Scene2 whole_plane_scene(const Scene2& scene) {
   Scene2 free = scene;
@@ -26,6 +39,7 @@ Scene2 whole_plane_scene(const Scene2& scene) {
 
 std::vector<char> carry_to_whole_plane(const Arranged2& from, const std::vector<char>& solid, const Arranged2& to) {
   std::vector<char> out;
+  out.reserve(to.arrangement.faces().size());
   long carried = 0;
   for (const ArrFace2& f : to.arrangement.faces()) {
     const PointLocation2 loc = from.arrangement.locate(f.interior);
@@ -33,9 +47,10 @@ std::vector<char> carry_to_whole_plane(const Arranged2& from, const std::vector<
     out.push_back(in ? 1 : 0);
     carried += in;
   }
-  if (carried != std::count(solid.begin(), solid.end(), 1))
+  const long expected = std::count(solid.begin(), solid.end(), 1);
+  if (carried != expected)
     throw std::logic_error("carrying the solid to the larger domain: " + std::to_string(carried) + " cells for " +
-                           std::to_string(std::count(solid.begin(), solid.end(), 1)));
+                           std::to_string(expected));
   return out;
 }
 

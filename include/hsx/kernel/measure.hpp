@@ -42,7 +42,7 @@ const char* to_string(Order o);
 /// How hard `compare` tries before answering Tie. Passed explicitly: no global settings.
 struct CompareOptions {
   mpfr_prec_t start_bits = 64;
-  mpfr_prec_t max_bits = 2048;  ///< precision cap for special terms; purely algebraic values ignore it
+  mpfr_prec_t max_bits = 2048;  ///< cap for special terms; provably non-zero values (see sign) ignore it
 };
 
 /// A special (non-square-root) term: knows its canonical key, an exact text when it has a closed form, and how to
@@ -169,8 +169,8 @@ class Measure {
   friend Order compare(const Measure& a, const Measure& b, const CompareOptions& options);
 };
 
-/// Certified comparison: Less/Equal/Greater are proofs; Tie means the values were not separated at
-/// options.max_bits. Tie never happens when a - b has no special terms left (all-straight boundaries).
+/// Certified comparison: Less/Equal/Greater are proofs; Tie (not separated at options.max_bits) never happens when
+/// a - b has only square roots and pi left, nor with a non-zero pi coefficient and no arc-angle term (sign()).
 Order compare(const Measure& a, const Measure& b, const CompareOptions& options = {});
 
 }  // namespace hsx

@@ -368,12 +368,25 @@ std::string algebraic_text(const Measure& m) { return *m.exact_string(); }
 
 using IntervalNT = CGAL::Interval_nt<true>;  // protected: every operation sets and restores the rounding mode
 
+bool fits_double_exactly(mpz_srcptr z) { return mpz_sizeinbase(z, 2) <= 53; }
+
+/// Certified enclosure of q: numerator and denominator below 2^53 are doubles exactly, and Interval_nt's division
+/// rounds outward (the common, fast case); otherwise CGAL::to_interval (MPFR, rounded away from zero).
 IntervalNT to_interval_nt(const Rational& q) {
-  const std::pair<double, double> e = CGAL::to_interval(q);  // certified (MPFR, rounded away from zero)
+  if (fits_double_exactly(q.get_num_mpz_t()) && fits_double_exactly(q.get_den_mpz_t())) {
+    const IntervalNT num(mpz_get_d(q.get_num_mpz_t()));
+    if (q.get_den() == 1) return num;
+    return num / IntervalNT(mpz_get_d(q.get_den_mpz_t()));
+  }
+  const std::pair<double, double> e = CGAL::to_interval(q);
   return IntervalNT(e.first, e.second);
 }
 
-IntervalNT to_interval_nt(const Integer& z) { return to_interval_nt(Rational(z)); }
+IntervalNT to_interval_nt(const Integer& z) {
+  if (fits_double_exactly(z.get_mpz_t())) return IntervalNT(mpz_get_d(z.get_mpz_t()));
+  const std::pair<double, double> e = CGAL::to_interval(z);
+  return IntervalNT(e.first, e.second);
+}
 
 /// k exactly when |k| <= 2^53 (a double holds it), else the doubles either side of the nearest one: a long
 /// above 2^53 is rounded on conversion, by at most half an ulp.
@@ -752,22 +765,32 @@ std::string Measure::decimal_string(int significant) const {
 std::optional<DoubleBounds> Measure::double_bounds() const {
   // CGAL::Interval_nt keeps every end rounded outward (proofs/measures.md, Claim 4.7). Terms are limited to
   // |c| in [2^-401, 2^401] and k < 2^800 so that nothing overflows (no infinite ends, no 0 * inf).
-  IntervalNT sum(0);
+  // Two passes: the conversions (which may call MPFR) in the caller's rounding mode, then the arithmetic with
+  // unprotected intervals inside one Protect_FPU_rounding block (one mode switch instead of one per operation).
+  std::vector<std::pair<IntervalNT, IntervalNT>> terms;  // (c, k), k = 1 for the rational part
+  terms.reserve(algebraic_.size() + special_.size());
   for (const auto& [k, c] : algebraic_) {
     const long e = static_cast<long>(mpz_sizeinbase(c.get_num_mpz_t(), 2)) -
                    static_cast<long>(mpz_sizeinbase(c.get_den_mpz_t(), 2));
     if (e > 400 || e < -400) return std::nullopt;
-    if (k == 1) {
-      sum += to_interval_nt(c);
-      continue;
-    }
     if (mpz_sizeinbase(k.get_mpz_t(), 2) > 800) return std::nullopt;
-    sum += to_interval_nt(c) * CGAL::sqrt(to_interval_nt(k));
+    terms.emplace_back(to_interval_nt(c), to_interval_nt(k));
   }
   for (const auto& [key, s] : special_) {
     if (s.term != pi_term()) return std::nullopt;
-    sum += to_interval_nt(s.coefficient) * pi_interval_nt();
+    terms.emplace_back(to_interval_nt(s.coefficient), IntervalNT(1));
   }
+  const IntervalNT pi = pi_interval_nt();
+  using Fast = CGAL::Interval_nt<false>;
+  const CGAL::Protect_FPU_rounding<true> upward;  // restores the caller's mode on leaving the scope
+  Fast sum(0);
+  std::size_t i = 0;
+  for (const auto& [k, c] : algebraic_) {
+    const auto& [ci, ki] = terms[i++];
+    const Fast cf(ci.inf(), ci.sup());
+    sum += k == 1 ? cf : cf * CGAL::sqrt(Fast(ki.inf(), ki.sup()));
+  }
+  for (; i < terms.size(); ++i) sum += Fast(terms[i].first.inf(), terms[i].first.sup()) * Fast(pi.inf(), pi.sup());
   return DoubleBounds{sum.inf(), sum.sup()};
 }
 

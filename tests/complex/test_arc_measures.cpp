@@ -79,3 +79,22 @@ TEST_CASE("witness points are short rationals strictly inside their cells", "[co
     }
   }
 }
+
+TEST_CASE("measure_to_json marks uncertified digits", "[io][decimal]") {
+  // q plus a zero that is not known to be zero (two keys of one nested radical), with q = 1 + 5*10^-30 exactly
+  // half-way between two 30-digit decimals: the 30 digits cannot be pinned down at the precision cap.
+  const Measure d = Measure::distance(OneRootPoint(Rational(0), Rational(0)),
+                                      OneRootPoint(Rational(1), OneRoot(Rational(1), Rational(1), Rational(2))));
+  const Measure d2 = Measure::distance(OneRootPoint(Rational(0), Rational(0)),
+                                       OneRootPoint(Rational(2), OneRoot(Rational(2), Rational(2), Rational(2))));
+  const Rational q = 1 + make_rational(Integer(5), Integer("1000000000000000000000000000000"));
+  const Measure m = Measure(q) + d - d2 * Rational(1, 2);
+  REQUIRE_FALSE(m.decimal(30).certified);
+  const nlohmann::json j = measure_to_json(m);
+  CHECK(j["certified"] == false);
+  CHECK(j["decimal"].get<std::string>().find('~') == std::string::npos);  // JSON keeps the digits parseable
+  CHECK(m.decimal_string(30).back() == '~');
+  // certified values have no such field (documents without special cases are unchanged)
+  CHECK_FALSE(measure_to_json(Measure(q)).contains("certified"));
+  CHECK_FALSE(measure_to_json(Measure::pi()).contains("certified"));
+}

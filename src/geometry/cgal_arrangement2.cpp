@@ -79,12 +79,20 @@ std::optional<std::pair<PointQ2, PointQ2>> clip_line_to_box(const PointQ2& n, co
   return std::make_pair(*lo, *hi);
 }
 
-/// Exact interval refinement until two distinct one-root numbers separate; returns a rational strictly between.
+/// The simplest rational (smallest denominator) strictly between two one-root numbers lo < hi, as far as their
+/// certified enclosures show it: rational ends are used as they are, irrational ones through the upper end of
+/// lo's enclosure and the lower end of hi's, refined until those separate. Short witnesses, still exact.
 Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi) {
+  auto to_q = [](const mpfr_t x) {
+    Rational q;
+    mpfr_get_q(q.get_mpq_t(), x);
+    return q;
+  };
   for (mpfr_prec_t bits = 64;; bits *= 2) {
-    Interval a = lo.enclose(bits), b = hi.enclose(bits);
-    Interval gap = b - a;
-    if (gap.certain_sign() > 0) return Interval::rational_between(a, b);
+    const Interval a = lo.enclose(bits), b = hi.enclose(bits);
+    const Rational above_lo = lo.is_rational() ? lo.a0 : to_q(a.hi());
+    const Rational below_hi = hi.is_rational() ? hi.a0 : to_q(b.lo());
+    if (above_lo < below_hi) return simplest_rational_in(above_lo, below_hi);
     if (bits > (1 << 22)) throw std::logic_error("rational_strictly_between: values do not separate");
   }
 }

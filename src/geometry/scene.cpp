@@ -1,9 +1,12 @@
-// Scene validation and resolution: exact checks on GMP rationals, no CGAL (see scene.hpp for the conventions).
+// Scene validation and resolution: exact checks on GMP rationals (CGAL only for its interval filter, Interval_nt)
 //
 // Limits (documented in docs/scene-format.md):
 // - a polygon has at most kMaxPolygonVertices vertices and all polygons together at most kMaxTotalPolygonVertices:
 //   the simplicity test is a bounding-box sweep with filtered exact predicates, quadratic in the worst case.
 #include <hsx/geometry/scene.hpp>
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/gmpxx.h>
 
 #include <mpfr.h>
 
@@ -139,47 +142,33 @@ std::pair<PointQ2, Rational> nearest_on_segment(const PointQ2& a, const PointQ2&
   return {q, dot(d, d)};
 }
 
-// Conservative double intervals: a filter in front of the exact predicates of the simplicity test. Every operation
-// widens its result by one ulp on each side, which covers round-to-nearest; NaN (inf - inf) becomes [-inf, inf].
-struct DI {
-  double lo, hi;
-};
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-DI widen(double lo, double hi) {
-  if (std::isnan(lo) || std::isnan(hi)) return {-kInf, kInf};
-  return {std::nextafter(lo, -kInf), std::nextafter(hi, kInf)};
-}
-
-DI enclose(const Rational& q) {
-  double d = q.get_d();  // GMP truncates towards zero: the true value is within one ulp of d
-  return {std::nextafter(d, -kInf), std::nextafter(d, kInf)};
-}
-
-DI sub(DI a, DI b) { return widen(a.lo - b.hi, a.hi - b.lo); }
-
-DI mul(DI a, DI b) {
-  double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-  double lo = p[0], hi = p[0];
-  for (double v : p) {
-    if (std::isnan(v)) return {-kInf, kInf};
-    lo = std::min(lo, v);
-    hi = std::max(hi, v);
-  }
-  return widen(lo, hi);
-}
+// CGAL's interval arithmetic (Interval_nt rounds every end outward and restores the rounding mode itself) is the
+// filter in front of the exact predicates of the simplicity test. Coordinates beyond 2^500 in magnitude skip the
+// filter, so that no difference or product overflows (no infinite ends, no 0 * inf).
+using DI = CGAL::Interval_nt<true>;
 
 struct PointDI {
   DI x, y;
+  bool filtered = false;  ///< both coordinates within [-2^500, 2^500]
 };
+
+PointDI enclose(const PointQ2& p) {
+  const auto ex = CGAL::to_interval(p.x), ey = CGAL::to_interval(p.y);  // certified
+  const double limit = std::ldexp(1.0, 500);
+  PointDI out{DI(ex.first, ex.second), DI(ey.first, ey.second)};
+  out.filtered = std::fabs(ex.first) <= limit && std::fabs(ex.second) <= limit && std::fabs(ey.first) <= limit &&
+                 std::fabs(ey.second) <= limit;
+  return out;
+}
 
 /// Sign of cross(a, b, c): the interval filter first, exact arithmetic when the filter cannot decide.
 int orient_filtered(const PointQ2& a, const PointQ2& b, const PointQ2& c, const PointDI& ad, const PointDI& bd,
                     const PointDI& cd) {
-  DI v = sub(mul(sub(bd.x, ad.x), sub(cd.y, ad.y)), mul(sub(bd.y, ad.y), sub(cd.x, ad.x)));
-  if (v.lo > 0) return 1;
-  if (v.hi < 0) return -1;
+  if (ad.filtered && bd.filtered && cd.filtered) {
+    const DI v = (bd.x - ad.x) * (cd.y - ad.y) - (bd.y - ad.y) * (cd.x - ad.x);
+    if (v.inf() > 0) return 1;
+    if (v.sup() < 0) return -1;
+  }
   return orient_exact(a, b, c);
 }
 
@@ -245,7 +234,7 @@ void check_polygon(std::size_t index, const Halfspace2& h) {
   // conservative double bounding boxes sorted by their lower x, then filtered exact tests. Stops at the first
   // offending pair found (deterministic: the order only depends on the input).
   std::vector<PointDI> vd(n);
-  for (std::size_t i = 0; i < n; ++i) vd[i] = {enclose(v[i].x), enclose(v[i].y)};
+  for (std::size_t i = 0; i < n; ++i) vd[i] = enclose(v[i]);
   struct EdgeBox {
     double xlo, xhi, ylo, yhi;
   };
@@ -253,8 +242,8 @@ void check_polygon(std::size_t index, const Halfspace2& h) {
   for (std::size_t i = 0; i < n; ++i) {
     const PointDI& p = vd[i];
     const PointDI& q = vd[(i + 1) % n];
-    box[i] = {std::min(p.x.lo, q.x.lo), std::max(p.x.hi, q.x.hi), std::min(p.y.lo, q.y.lo),
-              std::max(p.y.hi, q.y.hi)};
+    box[i] = {std::min(p.x.inf(), q.x.inf()), std::max(p.x.sup(), q.x.sup()), std::min(p.y.inf(), q.y.inf()),
+              std::max(p.y.sup(), q.y.sup())};
   }
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});

@@ -3,6 +3,7 @@
 
 #include "geometry/planar_measures.hpp"
 #include <hsx/io/exact_json.hpp>
+#include <hsx/io/json_values.hpp>
 #include <hsx/kernel/interval.hpp>
 
 #include <mpfr.h>
@@ -51,7 +52,8 @@ class Budget {
 
 struct Term {
   Rational coefficient;
-  std::optional<Rational> radicand;  ///< nullopt: a rational term
+  std::optional<Rational> radicand;  ///< nullopt: a rational term (or pi)
+  bool pi = false;                   ///< coefficient*pi
 };
 
 bool fail_with(std::string* why, std::string reason) {
@@ -62,7 +64,7 @@ bool fail_with(std::string* why, std::string reason) {
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 
-/// Terms of "t1 + t2 - t3 ...", each t: q | q*sqrt(m) | sqrt(m), each optionally with its own sign.
+/// Terms of "t1 + t2 - t3 ...", each t: q | q*sqrt(m) | sqrt(m) | q*pi | pi, each optionally with its own sign.
 bool parse_terms(std::string_view text, std::vector<Term>& terms, std::string* why) {
   const std::size_t n = text.size();
   std::size_t i = 0;
@@ -118,7 +120,15 @@ bool parse_terms(std::string_view text, std::vector<Term>& terms, std::string* w
     }
     if (i >= n) return fail_with(why, "missing term at the end");
     Term term;
-    if (text[i] == 's') {
+    auto parse_pi = [&] {  // at "pi"
+      if (text.substr(i, 2) != "pi") return false;
+      i += 2;
+      return term.pi = true;
+    };
+    if (text[i] == 'p') {
+      if (!parse_pi()) return fail_with(why, "expected a number, sqrt(...) or pi " + at(i));
+      term.coefficient = sign;
+    } else if (text[i] == 's') {
       Rational m;
       if (!parse_sqrt(m)) return false;
       term.coefficient = sign;
@@ -148,9 +158,13 @@ bool parse_terms(std::string_view text, std::vector<Term>& terms, std::string* w
       if (i < n && text[i] == '*') {
         ++i;
         skip();
-        Rational m;
-        if (!parse_sqrt(m)) return false;
-        term.radicand = m;
+        if (i < n && text[i] == 'p') {
+          if (!parse_pi()) return fail_with(why, "expected sqrt(...) or pi " + at(i));
+        } else {
+          Rational m;
+          if (!parse_sqrt(m)) return false;
+          term.radicand = m;
+        }
       }
     } else {
       return fail_with(why, "expected a number or sqrt(...) " + at(i));
@@ -167,7 +181,9 @@ bool parse_terms(std::string_view text, std::vector<Term>& terms, std::string* w
 Measure sum_of(const std::vector<Term>& terms) {
   Measure m;
   for (const Term& t : terms) {
-    if (!t.radicand) {
+    if (t.pi) {
+      m += Measure::pi(t.coefficient);
+    } else if (!t.radicand) {
       m += Measure(t.coefficient);
     } else {
       m += Measure::sqrt_of(*t.radicand) * t.coefficient;
@@ -272,13 +288,7 @@ DecimalText read_decimal(const JsonField& f) {
 // ---------------------------------------------------------------------------------------------------------------
 // Measures in documents
 
-json measure_json(const Measure& m) {
-  json j = json::object();
-  j["decimal"] = m.decimal_string(30);
-  const auto exact = m.exact_string();
-  j["exact"] = exact ? json(*exact) : json(nullptr);
-  return j;
-}
+json measure_json(const Measure& m) { return measure_to_json(m); }
 
 struct MeasureFields {
   std::optional<JsonField> exact, decimal;
@@ -292,7 +302,7 @@ MeasureFields measure_fields(const JsonField& f) {
     return out;
   }
   if (!v.is_object()) f.fail("expected a measure {\"decimal\": ..., \"exact\": ...}, got " + describe_json(v));
-  f.check_keys({"decimal", "exact"}, "a measure");
+  f.check_keys({"certified", "decimal", "exact"}, "a measure");
   if (auto e = f.get("exact"); e && !e->json().is_null()) out.exact = e;
   if (auto d = f.get("decimal"); d && !d->json().is_null()) out.decimal = d;
   return out;

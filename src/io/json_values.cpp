@@ -4,7 +4,9 @@ namespace hsx {
 
 nlohmann::json measure_to_json(const Measure& m) {
   nlohmann::json j;
-  j["decimal"] = m.decimal_string(30);
+  const Measure::Decimal decimal = m.decimal(30);
+  j["decimal"] = decimal.digits;
+  if (!decimal.certified) j["certified"] = false;  // digits not pinned down at the precision cap
   if (auto exact = m.exact_string())
     j["exact"] = *exact;
   else

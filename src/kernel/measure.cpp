@@ -10,6 +10,9 @@
 // product, so a new proven radicand only has to be checked against the (rare) unproven ones, kept in unsure_.
 #include <hsx/kernel/measure.hpp>
 
+#include <CGAL/Interval_nt.h>
+#include <CGAL/gmpxx.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -277,12 +280,12 @@ class SqrtTerm final : public SpecialTerm {
   std::string key_;
 };
 
-/// The constant pi (full circles are 2*pi, half circles pi): keyed "pi", so all of them cancel with each other.
+/// The constant pi: every arc angle that is a rational multiple of pi is a multiple of this one term (key "pi").
 class PiTerm final : public SpecialTerm {
  public:
   const std::string& key() const override { return key_; }
   Interval enclose(mpfr_prec_t bits) const override { return Interval::pi(bits); }
-  std::optional<std::string> exact_string() const override { return std::nullopt; }
+  std::optional<std::string> exact_string() const override { return key_; }
 
  private:
   std::string key_ = "pi";
@@ -293,34 +296,114 @@ const std::shared_ptr<const SpecialTerm>& pi_term() {
   return t;
 }
 
-/// theta in (0, 2*pi), the ccw angle of an arc whose chord^2 and orientation (sign of the cross product) are exact.
-class ArcTerm final : public SpecialTerm {
+/// theta in (0, pi), not a multiple of pi/12, given by its exact rotation (cos theta, sin theta), sin > 0 (a
+/// rotation with sin < 0 is 2*pi minus its conjugate's angle: Measure::arc_angle keys only the upper half).
+/// Enclosed through the half angle, on the well-conditioned side of asin (argument <= 1/sqrt(2)):
+///   theta/2 = asin(sqrt((1 - cos)/2))          when cos >= 0 (theta/2 <= pi/4),
+///   theta/2 = pi/2 - asin(sqrt((1 + cos)/2))   when cos < 0.
+class RotationTerm final : public SpecialTerm {
  public:
-  ArcTerm(Measure chord2, Rational radius, int cross_sign, std::string key)
-      : chord2_(std::move(chord2)), radius_(std::move(radius)), cross_sign_(cross_sign), key_(std::move(key)) {}
+  RotationTerm(const Measure& cosine, int cos_sign, std::string key)
+      : half_sine2_((cos_sign >= 0 ? Measure(Rational(1)) - cosine : Measure(Rational(1)) + cosine) *
+                    Rational(1, 2)),
+        cos_negative_(cos_sign < 0),
+        key_(std::move(key)) {}
   const std::string& key() const override { return key_; }
   Interval enclose(mpfr_prec_t bits) const override {
-    // half = chord / (2r) in [0, 1] (asin clamps); minor arc: 2*asin(half); major arc: 2*pi - 2*asin(half).
-    const Interval half = Interval::sqrt(chord2_.enclose(bits)) / Interval(Rational(2 * radius_), bits);
     const Interval two(Rational(2), bits);
-    const Interval minor = two * Interval::asin(half);
-    if (cross_sign_ > 0) return minor;
-    return two * Interval::pi(bits) - minor;
+    const Interval a = Interval::asin(Interval::sqrt(half_sine2_.enclose(bits)));
+    return two * (cos_negative_ ? Interval::pi(bits) / two - a : a);
   }
   std::optional<std::string> exact_string() const override { return std::nullopt; }
 
  private:
-  Measure chord2_;
-  Rational radius_;
-  int cross_sign_;
+  Measure half_sine2_;  // (1 - cos)/2 or (1 + cos)/2, see above
+  bool cos_negative_;
   std::string key_;
 };
 
-/// Canonical exact text of a one-root coordinate (sqrt(8) and 2*sqrt(2) print the same).
-std::string canonical_text(const OneRoot& x) { return *Measure::product(x, Rational(1)).exact_string(); }
+/// cos(k*pi/12) for k = 0..6, exactly: 1, (sqrt6 + sqrt2)/4, sqrt3/2, sqrt2/2, 1/2, (sqrt6 - sqrt2)/4, 0.
+Measure cos_first_quadrant(int k) {
+  switch (k) {
+    case 0: return Rational(1);
+    case 1: return (Measure::sqrt_of(6) + Measure::sqrt_of(2)) * Rational(1, 4);
+    case 2: return Measure::sqrt_of(Rational(3, 4));
+    case 3: return Measure::sqrt_of(Rational(1, 2));
+    case 4: return Rational(1, 2);
+    case 5: return (Measure::sqrt_of(6) - Measure::sqrt_of(2)) * Rational(1, 4);
+    default: return Measure();
+  }
+}
 
-std::string canonical_text(const OneRootPoint& p) {
-  return "[" + canonical_text(p.x) + ", " + canonical_text(p.y) + "]";
+/// cos(k*pi/12) for k = 0..23 by the quadrant symmetries; sin(k*pi/12) = cos((k - 6)*pi/12).
+const std::vector<Measure>& cos_twelfths() {
+  static const std::vector<Measure> table = [] {
+    std::vector<Measure> out;
+    for (int k = 0; k < 24; ++k) {
+      if (k <= 6) out.push_back(cos_first_quadrant(k));
+      else if (k <= 12) out.push_back(-cos_first_quadrant(12 - k));
+      else if (k <= 18) out.push_back(-cos_first_quadrant(k - 12));
+      else out.push_back(cos_first_quadrant(24 - k));
+    }
+    return out;
+  }();
+  return table;
+}
+
+/// k in 0..23 when (cosine, sine) is exactly the rotation by k*pi/12. The double values only choose the one
+/// candidate; the answer is decided by exact equality of algebraic sums (Claim 4.3).
+std::optional<int> twelfths_of_pi(const Measure& cosine, const Measure& sine) {
+  const double theta = std::atan2(sine.to_double(), cosine.to_double());
+  const double step = 3.14159265358979323846 / 12;
+  const long k = ((std::lround(theta / step) % 24) + 24) % 24;
+  const auto& table = cos_twelfths();
+  if ((cosine - table[k]).is_zero() && (sine - table[(k + 18) % 24]).is_zero()) return static_cast<int>(k);
+  return std::nullopt;
+}
+
+/// Canonical exact text of an algebraic measure ("0" for zero).
+std::string algebraic_text(const Measure& m) { return *m.exact_string(); }
+
+// ---- CGAL interval filter (one for the whole library: Measure::double_bounds, DoubleCombination) ----
+
+using IntervalNT = CGAL::Interval_nt<true>;  // protected: every operation sets and restores the rounding mode
+
+bool fits_double_exactly(mpz_srcptr z) { return mpz_sizeinbase(z, 2) <= 53; }
+
+/// Certified enclosure of q: numerator and denominator below 2^53 are doubles exactly, and Interval_nt's division
+/// rounds outward (the common, fast case); otherwise CGAL::to_interval (MPFR, rounded away from zero).
+IntervalNT to_interval_nt(const Rational& q) {
+  if (fits_double_exactly(q.get_num_mpz_t()) && fits_double_exactly(q.get_den_mpz_t())) {
+    const IntervalNT num(mpz_get_d(q.get_num_mpz_t()));
+    if (q.get_den() == 1) return num;
+    return num / IntervalNT(mpz_get_d(q.get_den_mpz_t()));
+  }
+  const std::pair<double, double> e = CGAL::to_interval(q);
+  return IntervalNT(e.first, e.second);
+}
+
+IntervalNT to_interval_nt(const Integer& z) {
+  if (fits_double_exactly(z.get_mpz_t())) return IntervalNT(mpz_get_d(z.get_mpz_t()));
+  const std::pair<double, double> e = CGAL::to_interval(z);
+  return IntervalNT(e.first, e.second);
+}
+
+/// k exactly when |k| <= 2^53 (a double holds it), else the doubles either side of the nearest one: a long
+/// above 2^53 is rounded on conversion, by at most half an ulp.
+IntervalNT to_interval_nt(long k) {
+  constexpr long kExact = 1L << 53;
+  const double d = static_cast<double>(k);
+  if (-kExact <= k && k <= kExact) return IntervalNT(d);
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return IntervalNT(std::nextafter(d, -inf), std::nextafter(d, inf));
+}
+
+IntervalNT pi_interval_nt() {
+  static const IntervalNT pi = [] {
+    const Interval e = Interval::pi(128);
+    return IntervalNT(e.lo_double(), e.hi_double());  // MPFR, rounded outward
+  }();
+  return pi;
 }
 
 }  // namespace
@@ -548,33 +631,36 @@ Measure Measure::distance(const OneRootPoint& p, const OneRootPoint& q) {
   return out;
 }
 
+Measure Measure::pi(const Rational& coefficient) {
+  Measure out;
+  out.add_special(pi_term(), coefficient);
+  return out;
+}
+
 Measure Measure::arc_angle(const PointQ2& center, const Rational& radius, const OneRootPoint& from,
                            const OneRootPoint& to, const Rational& coefficient) {
   if (sgn(radius) <= 0) throw std::domain_error("Measure::arc_angle: radius must be positive");
-  Measure out;
-  if (sgn(coefficient) == 0) return out;
-  if (compare(from.x, to.x) == 0 && compare(from.y, to.y) == 0) {
-    out.add_special(pi_term(), Rational(2 * coefficient));  // full circle: 2*pi
-    return out;
-  }
+  if (sgn(coefficient) == 0) return Measure();
+  if (compare(from.x, to.x) == 0 && compare(from.y, to.y) == 0) return pi(Rational(2 * coefficient));
+  // Rotation z = v * conj(u) with u = (from - c)/r, v = (to - c)/r: cos = u.v, sin = u x v (exact sums).
   OneRoot fx = from.x, fy = from.y, tx = to.x, ty = to.y;
   fx.a0 -= center.x;
   fy.a0 -= center.y;
   tx.a0 -= center.x;
   ty.a0 -= center.y;
-  const Measure cross = product(fx, ty) - product(fy, tx);
-  const int cross_sign = cross.algebraic_sign(64);
-  if (cross_sign == 0) {
-    out.add_special(pi_term(), coefficient);  // diametrically opposite end points: half circle
-    return out;
-  }
-  const Measure dx = product(to.x, Rational(1)) - product(from.x, Rational(1));
-  const Measure dy = product(to.y, Rational(1)) - product(from.y, Rational(1));
-  Measure chord2 = multiply_algebraic(dx, dx);
-  chord2 += multiply_algebraic(dy, dy);
-  std::string key = "arc([" + hsx::exact_string(center.x) + ", " + hsx::exact_string(center.y) + "], " +
-                    hsx::exact_string(radius) + ", " + canonical_text(from) + ", " + canonical_text(to) + ")";
-  out.add_special(std::make_shared<ArcTerm>(std::move(chord2), radius, cross_sign, std::move(key)), coefficient);
+  const Rational inv_r2 = 1 / Rational(radius * radius);
+  const Measure cosine = (product(fx, tx) + product(fy, ty)) * inv_r2;
+  const Measure sine = (product(fx, ty) - product(fy, tx)) * inv_r2;
+  const int sin_sign = sine.algebraic_sign(64);
+  if (sin_sign == 0) return pi(coefficient);  // distinct points on the circle with u x v = 0: opposite ends
+  if (const auto k = twelfths_of_pi(cosine, sine)) return pi(Rational(coefficient * *k / 12));
+  // theta(z) = 2*pi - theta(conj z) for sin < 0: one key per pair of conjugate rotations, so that an arc and its
+  // reverse add up to the full circle exactly.
+  const Measure upper_sine = sin_sign > 0 ? sine : -sine;
+  std::string key = "rot(" + algebraic_text(cosine) + ", " + algebraic_text(upper_sine) + ")";
+  Measure out = sin_sign > 0 ? Measure() : pi(Rational(2 * coefficient));
+  out.add_special(std::make_shared<RotationTerm>(cosine, cosine.algebraic_sign(64), std::move(key)),
+                  sin_sign > 0 ? coefficient : Rational(-coefficient));
   return out;
 }
 
@@ -629,64 +715,90 @@ double Measure::to_double() const {
   return enclose(80).mid_double();
 }
 
+Rational Measure::pi_coefficient() const {
+  const auto it = special_.find(pi_term()->key());
+  return it == special_.end() ? Rational(0) : it->second.coefficient;
+}
+
 std::optional<std::string> Measure::exact_string() const {
   if (is_zero()) return std::string("0");
-  if (!is_algebraic()) return std::nullopt;
+  for (const auto& [key, s] : special_)
+    if (!s.term->exact_string()) return std::nullopt;
   std::string out;
   bool first = true;
+  const Rational q = pi_coefficient();
+  if (sgn(q) != 0) {
+    append_term(out, q, pi_term()->key(), first);
+    first = false;
+  }
   for (const auto& [k, c] : algebraic_) {
     append_term(out, c, k == 1 ? std::string() : "sqrt(" + k.get_str(10) + ")", first);
     first = false;
   }
   for (const auto& [key, s] : special_) {
+    if (key == pi_term()->key()) continue;
     append_term(out, s.coefficient, *s.term->exact_string(), first);
     first = false;
   }
   return out;
 }
 
-std::string Measure::decimal_string(int significant) const {
-  if (auto r = rational_value()) return hsx::decimal_string(*r, significant);
+Measure::Decimal Measure::decimal(int significant) const {
+  if (auto r = rational_value()) return {hsx::decimal_string(*r, significant), true};
   const int sig = std::max(significant, 1);
   mpfr_prec_t bits = std::max<mpfr_prec_t>(64, static_cast<mpfr_prec_t>(sig) * 4 + 32);
   while (true) {
     const Interval e = enclose(bits);
     const std::string lo = hsx::decimal_string(to_rational(e.lo()), sig);
-    if (lo == hsx::decimal_string(to_rational(e.hi()), sig)) return lo;  // rounding is monotone
-    if (bits >= kDecimalCapBits) return e.mid_decimal(sig);
+    if (lo == hsx::decimal_string(to_rational(e.hi()), sig)) return {lo, true};  // rounding is monotone
+    if (bits >= kDecimalCapBits) return {e.mid_decimal(sig), false};
     bits = std::min(bits * 2, kDecimalCapBits);
   }
 }
 
-bool Measure::double_enclosure(double& lo, double& hi) const {
-  // Floating-point filter (proofs/measures.md, "Double filter"). With u = 2^-53 and no overflow/underflow
-  // (guaranteed by the range checks): mpq_get_d/mpz_get_d truncate (relative error < 2u), sqrt and * round to
-  // nearest (u each), so each term t_i = fl(fl(c) * fl(sqrt(fl(k)))) has |t_i - c sqrt(k)| <= 6u|t_i|; recursive
-  // summation adds at most (n-1)u/(1-(n-1)u) * sum|t_i|. So |S - value| <= (n + 8) u * sum|t_i| for n < 2^30;
-  // the 1/64 slack absorbs the rounding of the bound's own computation. One ulp outward on each side covers the
-  // rounding of S -/+ B.
-  if (!special_.empty()) return false;
-  const std::size_t n = algebraic_.size();
-  if (n > (std::size_t(1) << 30)) return false;
-  double sum = 0, abs_sum = 0;
+std::string Measure::decimal_string(int significant) const {
+  Decimal d = decimal(significant);
+  if (!d.certified) d.digits += '~';
+  return d.digits;
+}
+
+std::optional<DoubleBounds> Measure::double_bounds() const {
+  // CGAL::Interval_nt keeps every end rounded outward (proofs/measures.md, Claim 4.7). Terms are limited to
+  // |c| in [2^-401, 2^401] and k < 2^800 so that nothing overflows (no infinite ends, no 0 * inf).
+  // Two passes: the conversions (which may call MPFR) in the caller's rounding mode, then the arithmetic with
+  // unprotected intervals inside one Protect_FPU_rounding block (one mode switch instead of one per operation).
+  std::vector<std::pair<IntervalNT, IntervalNT>> terms;  // (c, k), k = 1 for the rational part
+  terms.reserve(algebraic_.size() + special_.size());
   for (const auto& [k, c] : algebraic_) {
-    const mpz_srcptr num = c.get_num_mpz_t(), den = c.get_den_mpz_t();
-    const long e = static_cast<long>(mpz_sizeinbase(num, 2)) - static_cast<long>(mpz_sizeinbase(den, 2));
-    if (e > 400 || e < -400) return false;  // |c| within [2^-401, 2^401]
-    double t = mpq_get_d(c.get_mpq_t());
-    if (k != 1) {
-      if (mpz_sizeinbase(k.get_mpz_t(), 2) > 800) return false;  // sqrt(k) < 2^400
-      t *= std::sqrt(mpz_get_d(k.get_mpz_t()));
-    }
-    sum += t;
-    abs_sum += std::fabs(t);
+    const long e = static_cast<long>(mpz_sizeinbase(c.get_num_mpz_t(), 2)) -
+                   static_cast<long>(mpz_sizeinbase(c.get_den_mpz_t(), 2));
+    if (e > 400 || e < -400) return std::nullopt;
+    if (mpz_sizeinbase(k.get_mpz_t(), 2) > 800) return std::nullopt;
+    terms.emplace_back(to_interval_nt(c), to_interval_nt(k));
   }
-  const double u = std::ldexp(1.0, -53);
-  const double bound = abs_sum * (static_cast<double>(n) + 8.0) * u * (1.0 + 1.0 / 64);
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  lo = std::nextafter(sum - bound, -inf);
-  hi = std::nextafter(sum + bound, inf);
-  return std::isfinite(lo) && std::isfinite(hi);
+  for (const auto& [key, s] : special_) {
+    if (s.term != pi_term()) return std::nullopt;
+    terms.emplace_back(to_interval_nt(s.coefficient), IntervalNT(1));
+  }
+  const IntervalNT pi = pi_interval_nt();
+  using Fast = CGAL::Interval_nt<false>;
+  const CGAL::Protect_FPU_rounding<true> upward;  // restores the caller's mode on leaving the scope
+  Fast sum(0);
+  std::size_t i = 0;
+  for (const auto& [k, c] : algebraic_) {
+    const auto& [ci, ki] = terms[i++];
+    const Fast cf(ci.inf(), ci.sup());
+    sum += k == 1 ? cf : cf * CGAL::sqrt(Fast(ki.inf(), ki.sup()));
+  }
+  for (; i < terms.size(); ++i) sum += Fast(terms[i].first.inf(), terms[i].first.sup()) * Fast(pi.inf(), pi.sup());
+  return DoubleBounds{sum.inf(), sum.sup()};
+}
+
+void DoubleCombination::add(long k, const DoubleBounds& m) {
+  if (!(m.lo <= m.hi)) throw std::invalid_argument("DoubleCombination::add: not an interval (lo > hi or NaN)");
+  if (k == 0) return;
+  const IntervalNT sum = IntervalNT(sum_.lo, sum_.hi) + to_interval_nt(k) * IntervalNT(m.lo, m.hi);
+  sum_ = {sum.inf(), sum.sup()};
 }
 
 int Measure::algebraic_sign(mpfr_prec_t start_bits) const {
@@ -704,10 +816,8 @@ int Measure::algebraic_sign(mpfr_prec_t start_bits) const {
     const auto b = std::next(it), c = std::next(b);
     return compare(OneRoot(it->second, b->second, Rational(b->first)), OneRoot(0, -c->second, Rational(c->first)));
   }
-  double lo = 0, hi = 0;
-  if (double_enclosure(lo, hi)) {
-    if (lo > 0) return 1;
-    if (hi < 0) return -1;
+  if (const auto bounds = double_bounds()) {
+    if (const int s = bounds->certain_sign()) return s;
   }
   // Non-zero (the radicands are in distinct square classes and some coefficient is non-zero), so refinement ends.
   for (mpfr_prec_t bits = std::max<mpfr_prec_t>(start_bits, 32);; bits *= 2) {
@@ -718,9 +828,31 @@ int Measure::algebraic_sign(mpfr_prec_t start_bits) const {
   }
 }
 
+bool Measure::provably_nonzero() const {
+  if (is_zero()) return false;
+  if (special_.empty()) return true;  // Claim 4.3
+  if (sgn(pi_coefficient()) == 0) return false;
+  for (const auto& [key, s] : special_)  // q*pi + algebraic with q != 0: pi is transcendental (Claim 6.4)
+    if (s.term != pi_term() && !dynamic_cast<const SqrtTerm*>(s.term.get())) return false;
+  return true;
+}
+
+int Measure::refined_sign(mpfr_prec_t start_bits) const {
+  if (special_.empty()) return algebraic_sign(start_bits);
+  if (const auto bounds = double_bounds()) {
+    if (const int s = bounds->certain_sign()) return s;
+  }
+  for (mpfr_prec_t bits = std::max<mpfr_prec_t>(start_bits, 32);; bits *= 2) {
+    if (bits > kAlgebraicCeilingBits)
+      throw std::runtime_error("Measure: sign of a provably non-zero value not found at 2^20 bits");
+    const int s = enclose(bits).certain_sign();
+    if (s != 0) return s;
+  }
+}
+
 std::optional<int> Measure::sign(const CompareOptions& options) const {
   if (is_zero()) return 0;
-  if (special_.empty()) return algebraic_sign(options.start_bits);
+  if (provably_nonzero()) return refined_sign(options.start_bits);
   for (mpfr_prec_t bits = std::max<mpfr_prec_t>(options.start_bits, 32);;) {
     const int s = enclose(bits).certain_sign();
     if (s != 0) return s;
@@ -731,10 +863,10 @@ std::optional<int> Measure::sign(const CompareOptions& options) const {
 
 Order compare(const Measure& a, const Measure& b, const CompareOptions& options) {
   // Filter: disjoint certified enclosures decide without building a - b (most comparisons in a search).
-  double alo = 0, ahi = 0, blo = 0, bhi = 0;
-  if (a.double_enclosure(alo, ahi) && b.double_enclosure(blo, bhi)) {
-    if (ahi < blo) return Order::Less;
-    if (bhi < alo) return Order::Greater;
+  const auto da = a.double_bounds(), db = b.double_bounds();
+  if (da && db) {
+    if (da->hi < db->lo) return Order::Less;
+    if (db->hi < da->lo) return Order::Greater;
   } else {
     const mpfr_prec_t bits = std::max<mpfr_prec_t>(options.start_bits, 32);
     const Interval ea = a.enclose(bits), eb = b.enclose(bits);

@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 namespace hsx {
 
@@ -209,6 +211,49 @@ std::string decimal_string(const Rational& q, int significant) {
     out += std::to_string(E);
   }
   return out;
+}
+
+namespace {
+
+/// Simplest rational in the open interval (lo, hi) with 0 <= lo < hi (hi = nullopt: +infinity). If the
+/// smallest integer n > lo is below hi it is the answer (denominator 1, least value). Otherwise (lo, hi) lies in
+/// [f, f + 1] with f = floor(lo), and x = f + 1/y maps it onto the open interval of y, (1/(hi - f), 1/(lo - f))
+/// (the upper end infinite when lo = f); x has the smallest denominator iff y has the smallest numerator, and the
+/// continued-fraction step preserves simplicity (proofs/measures.md, Claim 1.4). Iterative: the partial
+/// quotients are collected and folded back at the end.
+Rational simplest_nonnegative(Rational lo, std::optional<Rational> hi) {
+  std::vector<Integer> quotients;
+  while (true) {
+    Integer f;
+    mpz_fdiv_q(f.get_mpz_t(), lo.get_num_mpz_t(), lo.get_den_mpz_t());
+    const Integer n = f + 1;
+    if (!hi || Rational(n) < *hi) {
+      Rational x(n);
+      for (auto it = quotients.rbegin(); it != quotients.rend(); ++it) x = Rational(*it) + 1 / x;
+      return x;
+    }
+    quotients.push_back(f);
+    const Rational frac_lo = lo - Rational(f);
+    const Rational frac_hi = *hi - Rational(f);  // in (0, 1]
+    lo = 1 / frac_hi;
+    if (sgn(frac_lo) == 0) {
+      hi.reset();
+    } else {
+      hi = 1 / frac_lo;
+    }
+  }
+}
+
+}  // namespace
+
+Rational simplest_rational_in(const Rational& lo, const Rational& hi) {
+  if (!(lo < hi)) {
+    throw std::invalid_argument("simplest_rational_in: empty interval (" + exact_string(lo) + ", " +
+                                exact_string(hi) + ")");
+  }
+  if (sgn(lo) < 0 && sgn(hi) > 0) return Rational(0);
+  if (sgn(hi) <= 0) return -simplest_nonnegative(-hi, Rational(-lo));
+  return simplest_nonnegative(lo, hi);
 }
 
 }  // namespace hsx

@@ -981,10 +981,12 @@ TEST_CASE("bsh unit: Fig. 6 with T-junctions - the oracle certifies the tie wher
 
 TEST_CASE("bsh unit: ties that are only unseparated are never reported as a unique proven answer",
           "[bsh][unit][ties][arcs]") {
-  // Both Fig. 6 complexes, with the two differing pieces replaced by quarter arcs of radius 1 on two different
-  // circles: equal in value, different in key, so no comparison can prove them equal or different.
-  const Measure arc_a = Measure::arc_angle(PointQ2{0, 0}, R(1), PointQ2{1, 0}, PointQ2{0, 1}, R(1));
-  const Measure arc_b = Measure::arc_angle(PointQ2{10, 0}, R(1), PointQ2{11, 0}, PointQ2{10, 1}, R(1));
+  // Both Fig. 6 complexes, with the two differing pieces replaced by arcs of equal value and different keys, so
+  // that no comparison can prove them equal or different: 5/6 * 2*theta for the rotation z = (3/5, 4/5) against
+  // 5/6 * the angle of z^2 = (-7/25, 24/25), on two different circles (quarter arcs are exact now: pi/2).
+  const Measure arc_a = Measure::arc_angle(PointQ2{0, 0}, R(1), PointQ2{1, 0}, PointQ2{R(3, 5), R(4, 5)}, R(5, 3));
+  const Measure arc_b =
+      Measure::arc_angle(PointQ2{10, 0}, R(1), PointQ2{11, 0}, PointQ2{R(243, 25), R(24, 25)}, R(5, 6));
   REQUIRE(compare(arc_a, arc_b) == Order::Tie);
   ThreeRooms generic(arc_b, arc_a);
   for (int p : {generic.p0, generic.p1, generic.p2, generic.p3, generic.p4, generic.p5}) generic.h.sample(p);

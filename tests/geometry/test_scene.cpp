@@ -542,3 +542,21 @@ TEST_CASE("10,000 half-planes and disks validate quickly", "[scene][limits]") {
   CHECK(seconds < 10.0);
   CHECK(s.domain.min.x < s.domain.max.x);
 }
+
+TEST_CASE("the simplicity filter leaves near misses and huge coordinates to exact arithmetic", "[scene][filter]") {
+  // Vertex 3 lies 2^-80 above (or on, or below) edge 0 from (0,0) to (3,1): in doubles 1/2 + 2^-80 is 1/2, so only
+  // a certified filter that falls back to exact predicates gets all three right.
+  const Rational tiny = Rational(1) / Rational(Integer(1) << 80);
+  auto with = [](const Rational& dy, const Rational& scale) {
+    auto p = [&](const Rational& x, const Rational& y) { return PointQ2{Rational(x * scale), Rational(y * scale)}; };
+    return scene_of({polygon("C", {p(0, 0), p(3, 1), p(3, 3), p(Rational(3, 2), Rational(Rational(1, 2) + dy)),
+                                   p(0, 3)})});
+  };
+  // ordinary, tiny and beyond-double magnitudes (the filter is skipped above 2^500; below, intervals hold 0)
+  for (const Rational& scale : {Rational(1), make_rational(Integer(1), Integer(1) << 600), Rational(Integer(1) << 1100)}) {
+    INFO("scale " << scale.get_d());
+    CHECK(validation_error(with(tiny, scale)).empty());
+    CHECK_THAT(validation_error(with(Rational(0), scale)), Catch::Contains("touch"));
+    CHECK_THAT(validation_error(with(Rational(-tiny), scale)), Catch::Contains("self-intersecting"));
+  }
+}

@@ -197,7 +197,12 @@ TEST_CASE("parse_closed_form reads sums of square roots", "[io][complex_json]") 
   std::string why;
   CHECK_FALSE(parse_closed_form("sqrt(5 + 2*sqrt(6))", &why));
   CHECK_THAT(why, Catch::Contains("nested"));
-  for (const char* bad : {"", "+", "1 + + 2 +", "pi", "1e99999999", "sqrt(-2)", "2**sqrt(2)", "(1)"}) {
+  // pi terms (the exact areas and lengths of arcs whose angles are multiples of pi/12)
+  CHECK(compare(*parse_closed_form("4/3*pi + 1/2*sqrt(3)"), Measure::pi(Rational(4, 3)) + Measure::sqrt_of(Rational(3, 4))) ==
+        Order::Equal);
+  CHECK(compare(*parse_closed_form("-pi + 1"), Measure(Rational(1)) - Measure::pi()) == Order::Equal);
+  for (const char* bad : {"", "+", "1 + + 2 +", "pie", "2*pi*sqrt(2)", "sqrt(pi)", "1e99999999", "sqrt(-2)",
+                          "2**sqrt(2)", "(1)"}) {
     INFO(bad);
     CHECK_FALSE(parse_closed_form(bad));
   }
@@ -381,10 +386,11 @@ TEST_CASE("measures are recomputed from the geometry and checked", "[io][complex
   const Arranged2 arranged = arrange(scene);
   const json good = complex_to_json(arranged.complex, &arranged.arrangement, &scene.domain);
   REQUIRE(import_error(good).empty());
-  // Find a straight patch (exact length) and a curved one (exact null).
+  // Find a straight patch (algebraic length) and a curved one (exact null, or a closed form with pi).
   int straight = -1, curved = -1;
   for (std::size_t p = 0; p < good["patches"].size(); ++p) {
-    if (good["patches"][p]["measure"]["exact"].is_null()) {
+    const json& exact = good["patches"][p]["measure"]["exact"];
+    if (exact.is_null() || exact.get<std::string>().find("pi") != std::string::npos) {
       if (curved < 0) curved = static_cast<int>(p);
     } else if (straight < 0) {
       straight = static_cast<int>(p);

@@ -4,8 +4,10 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <stdexcept>
 #include <string>
 #include <vector>
+#include <utility>
 
 using hsx::NumberLimits;
 using hsx::parse_rational;
@@ -228,5 +230,49 @@ TEST_CASE("decimal_string is the nearest sig-digit decimal", "[rational][decimal
     const long k = E - s + 1;
     for (long i = 0; i < (k < 0 ? -k : k); ++i) ulp = (k < 0) ? Rational(ulp / 10) : Rational(ulp * 10);
     RC_ASSERT(abs(Rational(*back - r)) <= ulp / 2);
+  });
+}
+
+TEST_CASE("simplest_rational_in: fixed cases", "[rational][simplest]") {
+  using hsx::simplest_rational_in;
+  CHECK(simplest_rational_in(q("0"), q("1")) == q("1/2"));
+  CHECK(simplest_rational_in(q("1/3"), q("1/2")) == q("2/5"));
+  CHECK(simplest_rational_in(q("-1/2"), q("1/3")) == 0);
+  CHECK(simplest_rational_in(q("-7/2"), q("-3")) == q("-10/3"));
+  CHECK(simplest_rational_in(q("2"), q("5")) == 3);          // open: 2 itself is excluded
+  CHECK(simplest_rational_in(q("-5"), q("-2")) == -3);       // least absolute value among integers
+  CHECK(simplest_rational_in(q("3"), q("31/10")) == q("34/11"));
+  CHECK(simplest_rational_in(q("314159/100000"), q("314160/100000")) == q("355/113"));
+  // a dyadic-midpoint-sized interval around 1/3 gives 1/3 back
+  CHECK(simplest_rational_in(q("6148914691236517205/18446744073709551616"),
+                             q("6148914691236517206/18446744073709551616")) == q("1/3"));
+  CHECK_THROWS_AS(simplest_rational_in(q("1"), q("1")), std::invalid_argument);
+  CHECK_THROWS_AS(simplest_rational_in(q("2"), q("1")), std::invalid_argument);
+}
+
+TEST_CASE("simplest_rational_in: inside, and no smaller denominator fits", "[rational][simplest][property]") {
+  rc::prop("brute force over all smaller denominators", [] {
+    const long n1 = *rc::gen::inRange(-2000, 2000), d1 = *rc::gen::inRange(1, 300);
+    const long n2 = *rc::gen::inRange(-2000, 2000), d2 = *rc::gen::inRange(1, 300);
+    Rational a = hsx::make_rational(hsx::Integer(n1), hsx::Integer(d1));
+    Rational b = hsx::make_rational(hsx::Integer(n2), hsx::Integer(d2));
+    RC_PRE(a != b);
+    if (b < a) std::swap(a, b);
+    const Rational x = hsx::simplest_rational_in(a, b);
+    RC_ASSERT(a < x);
+    RC_ASSERT(x < b);
+    const hsx::Integer den = x.get_den();
+    for (long d = 1; hsx::Integer(d) < den; ++d) {
+      // the least n with n/d > a is floor(a*d) + 1; it must not be below b
+      const Rational ad = a * Rational(d);
+      hsx::Integer f;
+      mpz_fdiv_q(f.get_mpz_t(), ad.get_num_mpz_t(), ad.get_den_mpz_t());
+      RC_ASSERT(hsx::make_rational(f + 1, hsx::Integer(d)) >= b);
+    }
+    // among denominator-1 answers, the least absolute value
+    if (den == 1 && sgn(x) != 0) {
+      const Rational closer = x - Rational(sgn(x));
+      RC_ASSERT(!(a < closer && closer < b));
+    }
   });
 }

@@ -83,8 +83,8 @@ Complex read_complex_file(const std::string& path);
 /// (spaces optional). nullopt and *why set otherwise.
 std::optional<OneRoot> parse_one_root(std::string_view text, std::string* why = nullptr);
 
-/// A closed form: a sum of terms q, q*sqrt(m), sqrt(m), each optionally negated, with rationals q and m >= 0
-/// ("1/2 + 3*sqrt(2) - sqrt(5)"). Nested radicals are not accepted. nullopt and *why set otherwise.
+/// A closed form: a sum of terms q, q*sqrt(m), sqrt(m), q*pi, pi, each optionally negated, with rationals q, m >= 0
+/// ("1/2 + 3*sqrt(2) - sqrt(5)", "4/3*pi + 1/2*sqrt(3)"). Nested radicals are not accepted; nullopt, *why set.
 std::optional<Measure> parse_closed_form(std::string_view text, std::string* why = nullptr);
 
 }  // namespace hsx

@@ -9,7 +9,9 @@
 
 namespace hsx {
 
-/// {"decimal": "<30 significant digits>", "exact": "<closed form>" | null}
+/// {"decimal": "<30 significant digits>", "exact": "<closed form>" | null}; the closed form may contain "pi"
+/// ("4/3*pi + 1/2*sqrt(3)"). When the digits could not be certified at the precision cap (Measure::decimal) the
+/// object also has "certified": false (and "decimal" is the midpoint of the enclosure); otherwise no such field.
 nlohmann::json measure_to_json(const Measure& m);
 /// [x, y] as exact strings ("1/2", "1 + 2*sqrt(5)").
 nlohmann::json point_to_json(const OneRootPoint& p);

@@ -7,9 +7,14 @@
 //     zero, and its sign is decided by interval refinement, which terminates for a non-zero value.
 //   - special terms T_t, each identified by a canonical key so that the same term on both sides of a comparison
 //     cancels exactly:
-//       * angle of a counter-clockwise circular arc (transcendental: arc length r*theta, area r^2/2*theta);
+//       * pi (key "pi"): every arc whose angle is a rational multiple of pi (multiples of pi/12; by Theorem 6.5 of
+//         proofs/measures.md no other rational multiple of pi has a rotation with one-root end points);
+//       * any other arc angle theta, keyed by its rotation (cos theta, sin theta), exact algebraic numbers, so that
+//         congruent arcs on different circles, and arcs of equal angle on circles of any radius, share one key
+//         (arc length r*theta, area r^2/2*theta);
 //       * nested radical sqrt(A + B*sqrt(c)) that does not denest (a segment ending on a circle).
-//     Their signs are decided only by certified MPFR enclosures.
+//     pi is transcendental, so a value q*pi + (sum of square roots) is zero iff q = 0 and the sum is zero: signs
+//     of such values are exact. Values with other special terms are decided by certified MPFR enclosures.
 // See proofs/measures.md for what is exact, what is certified, and why.
 #pragma once
 
@@ -37,18 +42,39 @@ const char* to_string(Order o);
 /// How hard `compare` tries before answering Tie. Passed explicitly: no global settings.
 struct CompareOptions {
   mpfr_prec_t start_bits = 64;
-  mpfr_prec_t max_bits = 2048;  ///< precision cap for special terms; purely algebraic values ignore it
+  mpfr_prec_t max_bits = 2048;  ///< cap for special terms; provably non-zero values (see sign) ignore it
 };
 
-/// A special (non-square-root) term: knows its canonical key, an exact text when algebraic, and how to enclose
-/// its value at any precision.
+/// A special (non-square-root) term: knows its canonical key, an exact text when it has a closed form, and how to
+/// enclose its value at any precision.
 class SpecialTerm {
  public:
   virtual ~SpecialTerm() = default;
   virtual const std::string& key() const = 0;
   virtual Interval enclose(mpfr_prec_t bits) const = 0;
-  /// Closed form when the term is algebraic ("sqrt(3 + 2*sqrt(2))"), nullopt when transcendental.
+  /// Closed form when known: nested radicals ("sqrt(3 + 2*sqrt(2))") and "pi"; nullopt for other arc angles.
   virtual std::optional<std::string> exact_string() const = 0;
+};
+
+/// Certified double enclosure [lo, hi] of a real number (lo <= value <= hi; ends may be infinite).
+struct DoubleBounds {
+  double lo = 0, hi = 0;
+  /// -1 if hi < 0, +1 if lo > 0, 0 when the enclosure contains 0 (not decided).
+  int certain_sign() const { return lo > 0 ? 1 : (hi < 0 ? -1 : 0); }
+};
+
+/// Certified double enclosure of an integer combination sum_i k_i * m_i of reals m_i known only by certified
+/// double enclosures (for instance the measures of a max-flow's capacities). Start from zero and `add` terms;
+/// the running enclosure is kept with outward rounding (CGAL::Interval_nt inside measure.cpp), and any long k_i is
+/// enclosed exactly (|k_i| > 2^53 is not representable as a double: it is widened to the neighbouring doubles).
+class DoubleCombination {
+ public:
+  /// Adds k * m where m lies in `m` (lo <= hi, not NaN; throws std::invalid_argument otherwise).
+  void add(long k, const DoubleBounds& m);
+  const DoubleBounds& bounds() const { return sum_; }
+
+ private:
+  DoubleBounds sum_;
 };
 
 class Measure {
@@ -60,12 +86,17 @@ class Measure {
   static Measure sqrt_of(const Rational& q);
   /// a*b exactly, as an algebraic sum (sqrt(c)*sqrt(d) = sqrt(c*d)).
   static Measure product(const OneRoot& a, const OneRoot& b);
+  /// coefficient * pi, exactly.
+  static Measure pi(const Rational& coefficient = Rational(1));
   /// Euclidean distance |p - q|: exact sqrt of a rational when both points are rational, a denested sum when
   /// sqrt(A + B sqrt(c)) denests, otherwise a nested-radical special term.
   static Measure distance(const OneRootPoint& p, const OneRootPoint& q);
   /// coefficient * theta, theta in (0, 2*pi] the counter-clockwise angle from `from` to `to` around the circle
-  /// (center, radius); from == to means the full circle (2*pi). Both points must lie on the circle (caller's
-  /// duty). theta is a special term keyed by (center, radius, from, to), so the same arc cancels exactly.
+  /// (center, radius > 0; throws std::domain_error otherwise); from == to means the full circle (2*pi). Both
+  /// points must lie on the circle (caller's duty). When theta is a multiple of pi/12 the result is the exact
+  /// term (coefficient * k/12) * pi; otherwise theta is a special term keyed by the rotation
+  /// (cos theta, sin theta) = ((to - center) / radius) * conj((from - center) / radius), whose coordinates are
+  /// exact algebraic sums: arcs with the same rotation share the key and cancel exactly, whatever their circle.
   /// Arc length: coefficient = radius. Area swept (Green's theorem): coefficient = radius^2/2.
   static Measure arc_angle(const PointQ2& center, const Rational& radius, const OneRootPoint& from,
                            const OneRootPoint& to, const Rational& coefficient);
@@ -79,22 +110,39 @@ class Measure {
   Measure operator-() const;
 
   bool is_zero() const;       ///< exact: no terms left
-  bool is_algebraic() const;  ///< no transcendental term (nested radicals are algebraic)
+  bool is_algebraic() const;  ///< no transcendental term (nested radicals are algebraic; pi is not)
+  /// The rational q of the term q*pi (0 when there is none).
+  Rational pi_coefficient() const;
   bool has_special_terms() const { return !special_.empty(); }
   std::optional<Rational> rational_value() const;  ///< set when the value is rational
 
   /// Certified enclosure of the whole sum.
   Interval enclose(mpfr_prec_t bits) const;
   double to_double() const;
-  /// Closed form ("1/2 + 3*sqrt(2) + sqrt(5 + 2*sqrt(6))") when algebraic, nullopt otherwise. Deterministic.
+  /// Closed form ("4/3*pi + 1/2 + 3*sqrt(2) + sqrt(5 + 2*sqrt(6))": the pi term first, then the algebraic part in
+  /// radicand order, then nested radicals) when every term has one; nullopt when an arc angle other than a
+  /// multiple of pi/12 is left. Deterministic.
   std::optional<std::string> exact_string() const;
-  /// At least `significant` correct significant digits (the enclosure is refined until they are pinned down, or
-  /// until 8192 bits, after which the midpoint is printed). "0" for zero.
+
+  /// Decimal text and whether its digits are proven.
+  struct Decimal {
+    std::string digits;     ///< "3.14159..." (significant digits, see hsx::decimal_string for the format)
+    bool certified = true;  ///< false: the enclosure did not pin the digits down at 8192 bits (midpoint shown)
+  };
+  /// `significant` (>= 1) significant digits, refined until both ends of the enclosure round to the same text
+  /// (then certified), or up to 8192 bits, after which the midpoint is returned with certified = false.
+  Decimal decimal(int significant = 30) const;
+  /// decimal(significant).digits, followed by "~" when not certified. "0" for zero.
   std::string decimal_string(int significant = 30) const;
 
-  /// Exact sign where decidable: -1, 0, +1; for values with special terms, the sign of a certified enclosure
-  /// or nullopt when it contains 0 at `options.max_bits`.
+  /// Exact sign where decidable: -1, 0, +1. Decided exactly (never nullopt) when the value is provably non-zero:
+  /// no special terms, or a non-zero pi coefficient with only square roots and nested radicals besides (pi is
+  /// transcendental). Otherwise the sign of a certified enclosure, or nullopt when it contains 0 at
+  /// `options.max_bits`.
   std::optional<int> sign(const CompareOptions& options = {}) const;
+  /// Certified double enclosure of the value (CGAL::Interval_nt arithmetic); nullopt when a term is outside the
+  /// safe double range or the value has special terms other than pi.
+  std::optional<DoubleBounds> double_bounds() const;
 
  private:
   // radicand (positive integer, no two with a perfect-square product) -> coefficient; radicand 1 = rational part
@@ -116,14 +164,13 @@ class Measure {
   void add_special(const std::shared_ptr<const SpecialTerm>& term, const Rational& coefficient);
   static Measure multiply_algebraic(const Measure& a, const Measure& b);  // special terms are ignored
   int algebraic_sign(mpfr_prec_t start_bits) const;                      // exact sign of the algebraic part
-  // Certified double enclosure [lo, hi] of the algebraic part (fast filter); false when not applicable
-  // (special terms present, or magnitudes outside the safe double range).
-  bool double_enclosure(double& lo, double& hi) const;
+  bool provably_nonzero() const;  // non-empty and (no special terms, or pi-coefficient != 0 and no arc angles)
+  int refined_sign(mpfr_prec_t start_bits) const;  // sign of a provably non-zero value by refinement
   friend Order compare(const Measure& a, const Measure& b, const CompareOptions& options);
 };
 
-/// Certified comparison: Less/Equal/Greater are proofs; Tie means the values were not separated at
-/// options.max_bits. Tie never happens when a - b has no special terms left (all-straight boundaries).
+/// Certified comparison: Less/Equal/Greater are proofs; Tie (not separated at options.max_bits) never happens when
+/// a - b has only square roots and pi left, nor with a non-zero pi coefficient and no arc-angle term (sign()).
 Order compare(const Measure& a, const Measure& b, const CompareOptions& options = {});
 
 }  // namespace hsx

@@ -41,6 +41,12 @@ std::string exact_string(const Rational& q);
 /// finite expansion that fits are printed without trailing zeros ("0.25").
 std::string decimal_string(const Rational& q, int significant = 30);
 
+/// The simplest rational strictly inside the OPEN interval (lo, hi): the one with the smallest positive
+/// denominator; when several share it (only possible for denominator 1), the integer of least absolute value.
+/// Found by continued fractions (a descent of the Stern-Brocot tree), exact. Used to choose short witness points
+/// ("1/2" rather than "4611686018427387905/9223372036854775808"). Throws std::invalid_argument unless lo < hi.
+Rational simplest_rational_in(const Rational& lo, const Rational& hi);
+
 /// A rational point of the plane or of space; `dimension()` coordinates.
 struct PointQ2 {
   Rational x, y;

@@ -5,7 +5,6 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/edmonds_karp_max_flow.hpp>
 
-#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -84,21 +83,15 @@ Capacity operator-(const Capacity& a, const Capacity& b) {
 }
 Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
 
-/// Sign of sum k_g * |g|: rigorous double enclosure first (each operation widened outward by one ulp), then the
-/// exact Measure; nullopt when even that does not separate at the precision cap.
+/// Sign of sum k_g * |g|: the kernel's certified double enclosure of the combination first (exact for any long
+/// k_g), then the exact Measure; nullopt when even that does not separate at the precision cap.
 std::optional<int> sign_of(const Capacity& d) {
-  double lo = 0, hi = 0;
-  const double inf = std::numeric_limits<double>::infinity();
+  DoubleCombination sum;
   for (const auto& [g, k] : d.atoms) {
-    const auto& [mlo, mhi] = d.problem->support_enclosures()[g];
-    const double kd = static_cast<double>(k);
-    const double plo = std::nextafter(kd * (k > 0 ? mlo : mhi), -inf);
-    const double phi = std::nextafter(kd * (k > 0 ? mhi : mlo), inf);
-    lo = std::nextafter(lo + plo, -inf);
-    hi = std::nextafter(hi + phi, inf);
+    const auto& [lo, hi] = d.problem->support_enclosures()[g];
+    sum.add(k, DoubleBounds{lo, hi});
   }
-  if (lo > 0) return 1;
-  if (hi < 0) return -1;
+  if (const int s = sum.bounds().certain_sign()) return s;
   return d.measure().sign();
 }
 

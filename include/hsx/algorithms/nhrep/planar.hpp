@@ -7,7 +7,7 @@
 // - A solid is one flag per cell of the arrangement's complex (1 = inside); it must be non-empty and bounded inside
 //   the domain (no solid cell is outer), as NH-Rep needs a closed boundary.
 // - Evaluation must see every sign vector of the plane (evaluate.hpp): evaluate_on_whole_plane arranges the scene
-//   in a domain holding every vertex when its own domain does not (complex/whole_plane.hpp) and carries the solid
+//   in a domain holding every vertex when its own domain does not (complex/carry_solid2.hpp) and carries the solid
 //   there; evaluate_planar_tree takes such an arrangement ready-made.
 // - Diagnosis of a tree that fails although the solid is describable by its natural halfspaces: with holes and
 //   without BuildOptions::nest_holes, Section 5.2's initialisation united a hole's boundary where it should be

@@ -78,18 +78,22 @@ struct DescribeOptions {
 };
 
 int run_describe(const DescribeOptions& o) {
+  OutputFiles out;  // checked before computing, written all or none at the end
+  out.expect(o.json_path, "--json");
+  out.expect(o.svg_path, "--svg");
   const LoadedInput in = load_input(o.input);
   const Solid solid = load_solid(in, o.solid);
   const csg::Describability d = csg::describability(in.complex(), solid.cells);
   std::string svg_text;
   if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - describability", &d);
   if (!o.json_path.empty())
-    write_file_atomically(o.json_path, nlohmann::json{{"format", "hsx-describe/1"},
-                                                      {"describable", d.describable},
-                                                      {"terms", d.terms},
-                                                      {"mixed_terms", mixed_terms_json(in.complex(), d)}}
-                                               .dump(2) + "\n");
-  if (!o.svg_path.empty()) write_file_atomically(o.svg_path, svg_text);
+    out.put(o.json_path, nlohmann::json{{"format", "hsx-describe/1"},
+                                        {"describable", d.describable},
+                                        {"terms", d.terms},
+                                        {"mixed_terms", mixed_terms_json(in.complex(), d)}}
+                                 .dump(2) + "\n");
+  out.put(o.svg_path, svg_text);
+  out.commit();
   if (o.json_path != "-") {
     std::cout << (d.describable ? "describable" : "not describable") << " by the " << in.complex().halfspace_count()
               << " halfspaces (" << d.terms << " canonical intersection terms, " << d.mixed.size() << " mixed)\n";
@@ -158,6 +162,10 @@ void print_tree_summary(const csg::BhcResult& r, const Complex& complex) {
 }
 
 int run_csg(const CsgOptions& o) {
+  OutputFiles out;  // checked before computing, written all or none at the end
+  out.expect(o.json_path, "--json");
+  out.expect(o.svg_path, "--svg");
+  out.expect(o.openscad_path, "--openscad");
   const LoadedInput in = load_input(o.input);
   if (o.max_separators < 0) throw InputError("--max-separators: must be >= 0");
   if (!in.scene && o.separators)
@@ -194,9 +202,10 @@ int run_csg(const CsgOptions& o) {
     so.circle_segments = o.circle_segments;
     scad_text = to_openscad(*r.tree, *scene, so);
   }
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, j.dump(2) + "\n");
-  if (!o.svg_path.empty()) write_file_atomically(o.svg_path, svg_text);
-  if (write_scad) write_file_atomically(o.openscad_path, scad_text);
+  if (!o.json_path.empty()) out.put(o.json_path, j.dump(2) + "\n");
+  out.put(o.svg_path, svg_text);
+  if (write_scad) out.put(o.openscad_path, scad_text);
+  out.commit();
   if (!o.openscad_path.empty() && !write_scad)
     std::cerr << "hsx: --openscad: " << o.openscad_path << " not written: there is no verified tree\n";
   if (o.json_path != "-") {
@@ -238,6 +247,9 @@ int run_convert(const ConvertOptions& o) {
   const auto search = search_method(o.search);
   if (!search) throw InputError("--search: beam or best-first");
   if (o.out_path.empty()) throw InputError("--out: required (the BSH scene to write)");
+  OutputFiles out;  // checked before computing, written all or none at the end
+  out.expect(o.out_path, "--out");
+  out.expect(o.json_path, "--json");
   csg::ConversionReport report;
   if (!o.csgnet.empty()) {
     if (!o.input.empty() || !o.solid.csg.empty() || !o.solid.shape_path.empty())
@@ -254,13 +266,14 @@ int run_convert(const ConvertOptions& o) {
     std::cerr << "hsx: conversion failed: " << report.failure << "\n";
     return 3;
   }
-  write_file_atomically(o.out_path, write_scene2(report.scene).dump(2) + "\n");
+  out.put(o.out_path, write_scene2(report.scene).dump(2) + "\n");
   const nlohmann::json summary{{"samples", report.samples.sample_patches.size()},
                                {"lower_bound", report.samples.initial},
                                {"upper_bound", report.samples.upper_bound},
                                {"rounds", report.samples.rounds},
                                {"round_trip", report.round_trip}};
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, summary.dump(2) + "\n");
+  out.put(o.json_path, summary.dump(2) + "\n");
+  out.commit();
   std::cout << "wrote " << o.out_path << ": " << report.samples.sample_patches.size() << " samples (lower bound "
             << report.samples.initial << ", upper bound " << report.samples.upper_bound << ", "
             << report.samples.rounds << " extraction rounds); hsx extract gives the solid back: yes\n";
@@ -277,6 +290,9 @@ struct SamplesOptions {
 int run_samples(const SamplesOptions& o) {
   const auto search = search_method(o.search);
   if (!search) throw InputError("--search: beam or best-first");
+  OutputFiles out;  // checked before computing, written all or none at the end
+  out.expect(o.json_path, "--json");
+  out.expect(o.out_path, "--out");
   const LoadedInput in = load_input(o.input);
   const Solid solid = load_solid(in, SolidSource{o.target, o.csg, "--target", "--csg"});
   const bsh::Problem problem(in.complex());
@@ -304,8 +320,9 @@ int run_samples(const SamplesOptions& o) {
                                                  "samples from GENERATE-SAMPLES (" + o.search + ")"))
                      .dump(2) + "\n";
   }
-  if (!o.json_path.empty()) write_file_atomically(o.json_path, j.dump(2) + "\n");
-  if (!o.out_path.empty()) write_file_atomically(o.out_path, scene_text);
+  out.put(o.json_path, j.dump(2) + "\n");
+  out.put(o.out_path, scene_text);
+  out.commit();
   std::cout << r.sample_patches.size() << " samples (lower bound " << r.initial << ", upper bound " << r.upper_bound
             << ", " << r.rounds << " rounds, reproduced: " << (r.reproduced ? "yes" : "NO") << ")";
   if (minimum >= 0) std::cout << "; true minimum " << minimum << " (greedy excess " << r.sample_patches.size() - minimum << ")";
@@ -324,8 +341,11 @@ int run_corpus(const CorpusOptions& o) {
   if (o.kind != "csgnet") throw InputError("corpus: the only corpus kind is csgnet");
   const auto search = search_method(o.search);
   if (!search) throw InputError("--search: beam or best-first");
-  std::ifstream in(o.file);
-  if (!in) throw InputError("corpus: cannot read \"" + o.file + "\"");
+  if (o.first < 1) throw InputError("--from: lines are numbered from 1");
+  if (o.limit < 0) throw InputError("--limit: must be >= 0 (0: no limit)");
+  OutputFiles out;  // checked before the run, written at the end
+  out.expect(o.json_path, "--json");
+  std::istringstream in(read_file(o.file));  // a directory, FIFO or device is refused, never read
   struct Row {
     long line;
     std::string program, failure;
@@ -402,8 +422,10 @@ int run_corpus(const CorpusOptions& o) {
                       {"samples", r.samples}, {"lower_bound", r.lower}, {"upper_bound", r.upper},
                       {"leaves", r.leaves}, {"duplicated_halfspaces", r.duplicated},
                       {"sufficient_set", r.sufficient_set}, {"seconds", r.seconds}});
-    write_file_atomically(o.json_path, nlohmann::json{{"format", "hsx-corpus/1"}, {"programs", list}}.dump(1) + "\n");
+    out.put(o.json_path, nlohmann::json{{"format", "hsx-corpus/1"}, {"programs", list}}.dump(1) + "\n");
   }
+  if (rows.empty()) throw InputError("corpus: " + o.file + " has no program in the lines asked for");
+  out.commit();
   std::cout << (ok == static_cast<long>(rows.size()) ? "all" : "NOT all") << " programs passed\n";
   return ok == static_cast<long>(rows.size()) ? 0 : 3;
 }
@@ -417,8 +439,10 @@ void add_csg_commands(CLI::App& app) {
                                                    "(Shapiro-Vossler)? Mixed canonical terms with witness cells");
     cmd->add_option("SCENE", o->input, "hsx-scene/1 or hsx-complex/1 file")->required();
     add_solid_options(cmd, o->solid);
-    cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON");
-    cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)");
+    cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON")
+        ->check(output_path());
+    cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)")
+        ->check(output_path());
     cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "
                 "1 internal error.");
     run_with_status(cmd, o, &run_describe);
@@ -430,10 +454,13 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_flag("--separators", o->separators, "when not describable, add separating half-planes (2D) and retry");
     cmd->add_option("--max-separators", o->max_separators, "at most this many separators (default 8)");
-    cmd->add_option("--json", o->json_path, "write tree, verified, stats, area as JSON");
-    cmd->add_option("--svg", o->svg_path, "draw the solid");
+    cmd->add_option("--json", o->json_path, "write tree, verified, stats, area as JSON")
+        ->check(output_path());
+    cmd->add_option("--svg", o->svg_path, "draw the solid")
+        ->check(output_path());
     cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact); not written "
-                                                    "when there is no verified tree");
+                                                    "when there is no verified tree")
+        ->check(output_path());
     cmd->add_option("--circle-segments", o->circle_segments, "OpenSCAD $fn for circles (default 96)");
     cmd->footer("Exit codes: 0 a verified tree was built (after separators, when --separators was given and needed); "
                 "3 the solid is not describable by the halfspaces (separators included), so there is no tree: "
@@ -449,9 +476,11 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("SCENE", o->input, "hsx-scene/1 file (with --csg or --shape)");
     add_solid_options(cmd, o->solid);
     cmd->add_option("--csgnet", o->csgnet, "a CSGNet postfix program, e.g. \"c(32,32,16)s(32,40,12)-\"");
-    cmd->add_option("--out", o->out_path, "the BSH scene to write")->required();
+    cmd->add_option("--out", o->out_path, "the BSH scene to write")->required()
+        ->check(output_path());
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
-    cmd->add_option("--json", o->json_path, "write sample counts and bounds as JSON");
+    cmd->add_option("--json", o->json_path, "write sample counts and bounds as JSON")
+        ->check(output_path());
     run_with_status(cmd, o, &run_convert);
   }
   {
@@ -464,8 +493,10 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
     cmd->add_option("--exhaustive-patches", o->exhaustive_patches,
                     "compute the true minimum when the boundary has at most this many patches (default 14)");
-    cmd->add_option("--out", o->out_path, "write the scene with the generated samples");
-    cmd->add_option("--json", o->json_path, "write counts as JSON");
+    cmd->add_option("--out", o->out_path, "write the scene with the generated samples")
+        ->check(output_path());
+    cmd->add_option("--json", o->json_path, "write counts as JSON")
+        ->check(output_path());
     run_with_status(cmd, o, &run_samples);
   }
   {
@@ -477,7 +508,8 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--from", o->first, "start at this line (1-based, default 1)");
     cmd->add_option("--limit", o->limit, "run at most N programs");
     cmd->add_option("--search", o->search, "beam (default) or best-first for the conversion");
-    cmd->add_option("--json", o->json_path, "write one row per program as JSON");
+    cmd->add_option("--json", o->json_path, "write one row per program as JSON")
+        ->check(output_path());
     run_with_status(cmd, o, &run_corpus);
   }
 }

@@ -364,11 +364,19 @@ void check_measure(const JsonField& f, const Measure& recomputed, const std::str
 // ---------------------------------------------------------------------------------------------------------------
 // Reading helpers
 
+/// "patch" -> "patches", "vertex" -> "vertices", "cell" -> "cells".
+std::string plural(const std::string& noun) {
+  if (noun.size() > 2 && noun.compare(noun.size() - 2, 2, "ex") == 0) return noun.substr(0, noun.size() - 2) + "ices";
+  if (noun.size() > 1 && (noun.back() == 's' || noun.back() == 'x' || noun.compare(noun.size() - 2, 2, "ch") == 0))
+    return noun + "es";
+  return noun + "s";
+}
+
 int read_index(const JsonField& f, std::size_t count, const std::string& what) {
   const std::int64_t v = f.integer();
   if (v < 0 || static_cast<std::uint64_t>(v) >= count) {
     f.fail(what + " " + std::to_string(v) + " is out of range (there " + (count == 1 ? "is " : "are ") +
-           std::to_string(count) + " " + what + (count == 1 ? "" : "s") + ")");
+           std::to_string(count) + " " + (count == 1 ? what : plural(what)) + ")");
   }
   return static_cast<int>(v);
 }

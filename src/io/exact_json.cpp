@@ -8,6 +8,7 @@
 // pass only replaces tokens that match the JSON number grammar exactly, so it never turns invalid JSON into valid
 // JSON, and on valid JSON its tokens are exactly the lexer's.
 #include <hsx/io/exact_json.hpp>
+#include <hsx/io/files.hpp>
 
 #include <cctype>
 #include <cerrno>
@@ -349,9 +350,21 @@ json parse_exact_json(std::string_view text, const JsonLimits& limits) {
   return root;
 }
 
+namespace {
+json parse_file_text(const std::string& path, const std::string& text, const JsonLimits& limits) {
+  try {
+    return parse_exact_json(text, limits);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+}  // namespace
+
 json read_exact_json_file(const std::string& path, const JsonLimits& limits) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a file");
+  if (!std::filesystem::is_regular_file(path, ec) && std::filesystem::exists(path, ec))
+    return parse_file_text(path, read_file(path, limits.max_bytes), limits);  // a FIFO or device: never blocks
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file (" + std::strerror(errno) + ")");
   // Read in blocks, at most max_bytes + 1 bytes, so that pipes work and a huge file is refused without reading it.
@@ -370,11 +383,7 @@ json read_exact_json_file(const std::string& path, const JsonLimits& limits) {
     if (text.size() > limits.max_bytes) throw too_large("more than " + std::to_string(limits.max_bytes));
   }
   if (in.bad()) throw InputError(path + ": cannot read file");
-  try {
-    return parse_exact_json(text, limits);
-  } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
-  }
+  return parse_file_text(path, text, limits);
 }
 
 bool is_exact_number(const json& value) {

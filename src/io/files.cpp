@@ -295,15 +295,18 @@ std::string read_file(const std::string& path, std::size_t max_bytes) {
   struct stat info {};
   if (::stat(path.c_str(), &info) != 0) throw InputError("cannot read \"" + path + "\": " + reason(errno));
   if (S_ISDIR(info.st_mode)) throw InputError("cannot read \"" + path + "\": it is a directory");
-  if (!S_ISREG(info.st_mode))
-    throw InputError("cannot read \"" + path + "\": not a regular file (a FIFO, device or socket)");
-  if (static_cast<std::size_t>(info.st_size) > max_bytes)
+  const bool stream = S_ISFIFO(info.st_mode) || S_ISCHR(info.st_mode);
+  if (!S_ISREG(info.st_mode) && !stream)
+    throw InputError("cannot read \"" + path + "\": not a regular file, FIFO or character device");
+  if (S_ISREG(info.st_mode) && static_cast<std::size_t>(info.st_size) > max_bytes)
     throw InputError("\"" + path + "\" is too large (" + std::to_string(info.st_size) + " bytes; the limit is " +
                      std::to_string(max_bytes) + ")");
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  // O_NONBLOCK: opening a FIFO never waits for a writer. Reads then block again, and a FIFO without a writer
+  // reads as empty (end of file) instead of hanging.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
   if (fd < 0) throw InputError("cannot read \"" + path + "\": " + reason(errno));
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
   std::string content;
-  content.reserve(static_cast<std::size_t>(info.st_size));
   char buffer[1 << 16];
   for (;;) {
     const ssize_t n = ::read(fd, buffer, sizeof buffer);

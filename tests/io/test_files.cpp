@@ -162,12 +162,12 @@ TEST_CASE("files: SIGTERM removes the temporary files of outputs not yet committ
   CHECK(dir.entries().empty());
 }
 
-TEST_CASE("files: reading refuses directories and FIFOs without blocking", "[files]") {
+TEST_CASE("files: reading refuses directories; a FIFO never blocks", "[files]") {
   TempDir dir;
   ::mkdir((dir / "d").c_str(), 0700);
   CHECK_THROWS_WITH(read_file(dir / "d"), Catch::Contains("is a directory"));
   REQUIRE(::mkfifo((dir / "fifo").c_str(), 0600) == 0);
-  CHECK_THROWS_WITH(read_file(dir / "fifo"), Catch::Contains("not a regular file"));
+  CHECK(read_file(dir / "fifo").empty());  // no writer: end of file at once, not a hang
   CHECK_THROWS_WITH(read_file(dir / "missing"), Catch::Contains("No such file"));
   spit(dir / "big", std::string(100, 'x'));
   CHECK_THROWS_WITH(read_file(dir / "big", 99), Catch::Contains("too large"));

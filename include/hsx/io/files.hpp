@@ -68,8 +68,9 @@ class OutputFiles {
 /// need not call it (temporary files are still removed on every failure and by ~OutputFiles).
 void remove_temporary_outputs_on_signals();
 
-/// Reads a whole regular file; throws InputError naming the path when it does not exist, is a directory, a FIFO
-/// or a device (never opened, so a FIFO cannot block), cannot be read, or exceeds `max_bytes`.
+/// Reads a whole file: a regular file, or a FIFO or character device read to its end (a FIFO is opened without
+/// waiting for a writer, and one without a writer reads as empty, so a run never hangs on it). Throws InputError
+/// naming the path when it does not exist, is a directory or a socket, cannot be read, or exceeds `max_bytes`.
 std::string read_file(const std::string& path, std::size_t max_bytes = std::size_t(256) << 20);
 
 }  // namespace hsx

@@ -56,10 +56,11 @@ nlohmann::json mixed_terms_json(const Complex& c, const csg::Describability& d) 
 }
 
 std::string svg_of_solid(const LoadedInput& in, const std::vector<char>& cells, const std::string& title,
-                         const csg::Describability* marks) {
+                         const csg::Describability* marks, bool labels) {
   if (!in.scene) throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
   SvgOptions o;
   o.title = title;
+  o.show_cell_ids = o.show_patch_ids = labels;
   o.cell_fill = cells;
   if (marks) {
     o.cell_marks.assign(cells.size(), 0);
@@ -74,6 +75,7 @@ std::string svg_of_solid(const LoadedInput& in, const std::vector<char>& cells, 
 // ---------------------------------------------------------------------------------------------------------------
 struct DescribeOptions {
   std::string input, json_path, svg_path;
+  bool labels = false;
   SolidSource solid;
 };
 
@@ -85,7 +87,7 @@ int run_describe(const DescribeOptions& o) {
   const Solid solid = load_solid(in, o.solid);
   const csg::Describability d = csg::describability(in.complex(), solid.cells);
   std::string svg_text;
-  if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - describability", &d);
+  if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - describability", &d, o.labels);
   if (!o.json_path.empty())
     out.put(o.json_path, nlohmann::json{{"format", "hsx-describe/1"},
                                         {"describable", d.describable},
@@ -118,6 +120,7 @@ struct CsgOptions {
   bool separators = false;
   int max_separators = 8;
   int circle_segments = 96;
+  bool labels = false;
 };
 
 nlohmann::json stats_json(const csg::BhcResult& r) {
@@ -195,7 +198,7 @@ int run_csg(const CsgOptions& o) {
     j["mixed_terms"] = mixed_terms_json(complex, t.describability);
   }
   std::string svg_text, scad_text;
-  if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - BHC", nullptr);
+  if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - BHC", nullptr, o.labels);
   const bool write_scad = !o.openscad_path.empty() && t.has_verified_tree();
   if (write_scad) {
     OpenScadOptions so;
@@ -443,6 +446,7 @@ void add_csg_commands(CLI::App& app) {
         ->check(output_path());
     cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)")
         ->check(output_path());
+    cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
     cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "
                 "1 internal error.");
     run_with_status(cmd, o, &run_describe);
@@ -458,6 +462,7 @@ void add_csg_commands(CLI::App& app) {
         ->check(output_path());
     cmd->add_option("--svg", o->svg_path, "draw the solid")
         ->check(output_path());
+    cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
     cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact); not written "
                                                     "when there is no verified tree")
         ->check(output_path());

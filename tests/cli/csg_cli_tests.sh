@@ -379,6 +379,14 @@ run 2 "convert: --out missing" "$HSX" convert "$FIG/fig02-1.json" --csg "A"
 run 2 "corpus: unknown kind" "$HSX" corpus shapenet /dev/null && err_names "csgnet"
 if [[ -e "$TMP/bad.json" ]]; then fail "a failed command left $TMP/bad.json behind"; else pass; fi
 
+# ---- --labels on describe and csg: cell and patch ids in the picture ----
+run 0 "describe --labels" "$HSX" describe "$FIG/fig02-1.json" --csg "A" --svg "$TMP/dl.svg" --labels &&
+  check "describe --labels draws ids" grep -q 'class="cell-id"' "$TMP/dl.svg"
+run 0 "csg --labels" "$HSX" csg "$FIG/fig02-1.json" --csg "A" --svg "$TMP/cl.svg" --labels &&
+  check "csg --labels draws ids" grep -q 'class="patch-id"' "$TMP/cl.svg"
+run 0 "csg without --labels" "$HSX" csg "$FIG/fig02-1.json" --csg "A" --svg "$TMP/cn.svg" &&
+  check "csg without --labels draws no ids" bash -c "! grep -q 'class=\"cell-id\"' '$TMP/cn.svg'"
+
 # ---- corpus ----
 CORPUS="$SRC/../shared/data/csgnet/best_st_expressions.txt"
 if [[ -f "$CORPUS" ]]; then

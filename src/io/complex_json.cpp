@@ -340,6 +340,14 @@ Measure measure_from_fields(const JsonField& f, Budget& budget) {
   f.fail("needs \"exact\" or \"decimal\"");
 }
 
+/// A length or area read without geometry: it must be positive (a proven sign <= 0 is refused).
+Measure positive_measure_from_fields(const JsonField& f, Budget& budget, const std::string& what) {
+  Measure value = measure_from_fields(f, budget);
+  const std::optional<int> sign = value.sign();
+  if (sign && *sign <= 0) f.fail("a " + what + " must be positive, not " + show(value));
+  return value;
+}
+
 /// Checks given measure fields against a value recomputed from the geometry.
 void check_measure(const JsonField& f, const Measure& recomputed, const std::string& what, Budget& budget) {
   const MeasureFields m = measure_fields(f);
@@ -731,7 +739,7 @@ void read_cells(const JsonField& cells, const Names& names, ComplexDocument& doc
       face.inside = cell.inside;
       if (cell.witness.size() == 2) face.interior = PointQ2{cell.witness[0], cell.witness[1]};
     } else {
-      cell.measure = measure_from_fields(f.at("measure"), budget);
+      cell.measure = positive_measure_from_fields(f.at("measure"), budget, "cell's area");
     }
   }
 }
@@ -807,7 +815,7 @@ void read_patches(const JsonField& patches, const Names& names, ComplexDocument&
       patch.measure = patch_length(f, patch, doc, budget);
       if (auto m = f.get("measure")) check_measure(*m, patch.measure, "length", budget);
     } else {
-      patch.measure = measure_from_fields(f.at("measure"), budget);
+      patch.measure = positive_measure_from_fields(f.at("measure"), budget, "patch's length");
     }
   }
 }

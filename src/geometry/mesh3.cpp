@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <istream>
 #include <numeric>
@@ -34,6 +35,19 @@ constexpr mpfr_prec_t kMaxBits = mpfr_prec_t(1) << 20;
 }
 
 [[noreturn]] void fail(const std::string& source, const std::string& what) { throw InputError(source + ": " + what); }
+
+/// Opens a mesh or feature file: a directory, FIFO, device or socket is refused before it is opened (a FIFO would
+/// block), a missing file is named as such.
+std::ifstream open_regular_file(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) fail(path, "no such file");
+  if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a file");
+  if (!std::filesystem::is_regular_file(status)) fail(path, "not a regular file (a FIFO, device or socket)");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, "cannot open the file");
+  return in;
+}
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
@@ -257,8 +271,7 @@ ObjMesh read_obj(std::istream& in, const std::string& source, const MeshReadLimi
 }
 
 ObjMesh read_obj_file(const std::string& path, const MeshReadLimits& limits) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open the file");
+  std::ifstream in = open_regular_file(path);
   return read_obj(in, path, limits);
 }
 
@@ -306,8 +319,7 @@ FeatureEdgeList read_fea(std::istream& in, const std::string& source, const Mesh
 }
 
 FeatureEdgeList read_fea_file(const std::string& path, const MeshReadLimits& limits) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, "cannot open the file");
+  std::ifstream in = open_regular_file(path);
   return read_fea(in, path, limits);
 }
 

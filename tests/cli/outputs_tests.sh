@@ -84,5 +84,12 @@ mkfifo "$work/in.fifo"
 expect 2 "in.fifo" -- "$hsx" arrange "$work/in.fifo"   # no writer: read as empty, refused as invalid JSON
 expect 2 "is a directory" -- "$hsx" arrange "$work/adir"
 
+mkdir "$work/dir.obj" "$work/dir.fea"
+expect 2 "dir.obj: is a directory" -- "$hsx" nhtree "$work/dir.obj" --fea "$fea"
+expect 2 "dir.fea: is a directory" -- "$hsx" nhtree "$mesh" --fea "$work/dir.fea"
+mkfifo "$work/pipe.obj"
+expect 2 "pipe.obj: not a regular file" -- "$hsx" nhtree "$work/pipe.obj" --fea "$fea"
+expect 2 "missing.obj: no such file" -- "$hsx" nhtree "$work/missing.obj" --fea "$fea"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -41,7 +41,7 @@ constexpr mpfr_prec_t kMaxBits = mpfr_prec_t(1) << 20;
 std::ifstream open_regular_file(const std::string& path) {
   std::error_code ec;
   const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) fail(path, "no such file");
+  if (!std::filesystem::exists(status)) fail(path, "cannot open it: no such file");
   if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a file");
   if (!std::filesystem::is_regular_file(status)) fail(path, "not a regular file (a FIFO, device or socket)");
   std::ifstream in(path, std::ios::binary);

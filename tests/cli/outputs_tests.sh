@@ -89,7 +89,7 @@ expect 2 "dir.obj: is a directory" -- "$hsx" nhtree "$work/dir.obj" --fea "$fea"
 expect 2 "dir.fea: is a directory" -- "$hsx" nhtree "$mesh" --fea "$work/dir.fea"
 mkfifo "$work/pipe.obj"
 expect 2 "pipe.obj: not a regular file" -- "$hsx" nhtree "$work/pipe.obj" --fea "$fea"
-expect 2 "missing.obj: no such file" -- "$hsx" nhtree "$work/missing.obj" --fea "$fea"
+expect 2 "missing.obj: cannot open it: no such file" -- "$hsx" nhtree "$work/missing.obj" --fea "$fea"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

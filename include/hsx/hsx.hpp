@@ -64,7 +64,9 @@ std::vector<char> solid_from_csg(const Complex& complex, const std::string& expr
 csg::BhcResult csg_tree(const LoadedInput& input, const std::vector<char>& solid);
 
 /// NH-Rep's Boolean tree (Algorithm 1 with patch decomposition, the paper's reading) of a 2D solid: `solid` per
-/// cell of `arranged` (1 inside). The tree's leaves are the patches of the solid's boundary.
+/// cell of `arranged` (1 inside). The tree's leaves are the patches of the solid's boundary. Throws InputError for
+/// a flag vector of the wrong size, an empty solid, or one that reaches the domain's boundary (an outer cell).
+/// For natural-halfspace names and the exact evaluation, use nhrep::build_planar_tree (algorithms/nhrep/planar.hpp).
 nhrep::BuildResult nhrep_tree(const Arranged2& arranged, const std::vector<char>& solid,
                               const nhrep::BuildOptions& options = {});
 

@@ -1,7 +1,8 @@
 #include <hsx/hsx.hpp>
 
 #include <hsx/algorithms/nhrep/patch_graph.hpp>
-#include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/algorithms/csg/solid_tree.hpp>
+#include <hsx/algorithms/nhrep/planar.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/io/complex_json.hpp>
 #include <hsx/io/csg_text.hpp>
@@ -36,15 +37,14 @@ csg::BhcResult csg_tree(const LoadedInput& input, const std::vector<char>& solid
     throw InputError("the solid has " + std::to_string(solid.size()) + " cell flags, the complex " +
                      std::to_string(complex.cells.size()) + " cells");
   csg::BhcOptions options;
-  if (input.scene)
-    for (const Halfspace2& h : input.scene->halfspaces) options.planar.push_back(h.kind == HalfspaceKind2::Halfplane);
+  if (input.scene) options.planar = csg::planar_halfspaces(*input.scene);
   return csg::bhc(complex, solid, options);
 }
 
 nhrep::BuildResult nhrep_tree(const Arranged2& arranged, const std::vector<char>& solid,
                               const nhrep::BuildOptions& options) {
   try {
-    return nhrep::build_tree(nhrep::build_patch_graph(boundary_from_arrangement2(arranged, solid)), options);
+    return nhrep::build_planar_tree(arranged, solid, options).built;
   } catch (const std::invalid_argument& e) {
     throw InputError(std::string("nhrep_tree: ") + e.what());
   }

@@ -109,11 +109,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       result = hsx::nhrep::build_tree(
           hsx::nhrep::build_patch_graph(surface, tool ? hsx::nhrep::CurveRule::Majority : hsx::nhrep::CurveRule::Paper),
           options);
-    } catch (const std::invalid_argument& e) {
-      // --nest-holes on nesting it cannot use is bad input in the CLI (exit 2). Known open case, kept as
-      // data/crashes/mesh/nest-two-outer-components: two outward shells reported in one part (to be fixed).
-      if (mode != 2) throw;
-      continue;
     } catch (const std::runtime_error& e) {
       // The paper's algorithm provably needs fewer decompositions than patches (proofs/nhrep.md, Lemma 4.3); the
       // tool's scoped decomposition has no such bound, so hitting the guard there is a property of the tool.

@@ -20,7 +20,8 @@ namespace {
 /// Shells (components of triangles across edges) with their exact signed volumes: a shell of positive volume is an
 /// outer boundary, one of negative volume a cavity. A cavity belongs to the smallest outer shell that contains one
 /// of its vertices (exact ray parity, geometry/mesh3.hpp); when none does, or the vertex lies on another shell,
-/// its region stays -1 (unknown).
+/// its region stays -1 (unknown). A shell of zero volume (flat: it encloses nothing) is neither, and its region
+/// stays -1 too.
 void set_mesh_nesting(const Mesh3& mesh, BoundarySurface& surface) {
   const std::size_t n = mesh.faces.size();
   DisjointSets sets(n);
@@ -44,7 +45,7 @@ void set_mesh_nesting(const Mesh3& mesh, BoundarySurface& surface) {
       outer_shells.push_back(static_cast<int>(r));
     }
   for (std::size_t r = 0; r < count; ++r) {
-    if (volume[r] > 0) continue;
+    if (sgn(volume[r]) >= 0) continue;  // outer, or flat (unknown)
     const PointQ3& probe = mesh.vertices[static_cast<std::size_t>(mesh.faces[static_cast<std::size_t>(shell_faces[r].front())][0])];
     int best = -1;
     for (int o : outer_shells) {

@@ -777,6 +777,17 @@ TEST_CASE("nesting: cavities belong to the smallest outer shell around them", "[
   CHECK((region(5) == 2 && hole(5)));
 }
 
+TEST_CASE("nesting: a flat shell (zero volume) is neither outer nor a cavity: its part is unknown", "[mesh]") {
+  // fuzz_mesh's finding (data/crashes/mesh/nest-two-outer-components): a box [0,3]^3 and, inside it, a closed
+  // shell whose eight vertices were mangled so that it encloses no volume. It used to be filed as an outer shell
+  // of the box's part, and --nest-holes then failed its "one outer boundary per part" check as an internal error.
+  const Mesh3 m = build_mesh3(read_obj_file(std::string(HSX_SOURCE_DIR) + "/data/crashes/mesh/nest-two-outer-components"));
+  REQUIRE(m.shells == 2);
+  const BoundarySurface s = boundary_from_mesh(m, std::vector<std::pair<int, int>>{});
+  CHECK((s.pieces[0].region == 0 && !s.pieces[0].hole));
+  CHECK((s.pieces[12].region == -1 && !s.pieces[12].hole));
+}
+
 TEST_CASE("properties: outer shells are numbered by lowest triangle, whatever the face order", "[mesh][property]") {
   // Separate boxes [10k, 10k+3]^3 with their triangles listed in a random order: box k's pieces must all get the
   // region that is the rank of box k's lowest triangle among the boxes' lowest triangles.

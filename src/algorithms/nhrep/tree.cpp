@@ -171,7 +171,7 @@ int build_nested(Builder& builder, BuildResult& result, const std::vector<std::v
       }
     if (region < 0)
       throw std::invalid_argument("nesting: patch " + std::to_string(components[k].front()) +
-                                  " has no known solid part (e.g. a cavity in a mesh with several outer shells)");
+                                  " has no known solid part (a cavity outside every outer shell or touching one, or a flat shell that encloses no volume)");
     auto& part = parts[region];
     (hole ? part.second : part.first).push_back(static_cast<int>(k));
   }

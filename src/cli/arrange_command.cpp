@@ -20,6 +20,7 @@ struct ArrangeOptions {
   std::string json_path;
   bool labels = false;
   bool quiet = false;
+  ArrangementLimits limits;
 };
 
 std::string summary_text(const Scene2& scene, const Arranged2& arranged) {
@@ -50,18 +51,18 @@ void run_arrange(const ArrangeOptions& options) {
   out.expect(options.json_path, "--json");
   out.expect(options.svg_path, "--svg");
   const Scene2 scene = read_scene_file(options.scene_path);
-  const Arranged2 arranged = arrange(scene);
+  const Arranged2 arranged = arrange(scene, options.limits);
   std::string json_text, svg_text;
   if (!options.json_path.empty())
-    json_text = complex_to_json(arranged.complex, &arranged.arrangement, &scene.domain).dump(2) + "\n";
+    json_text = complex_json_text(arranged.complex, &arranged.arrangement, &scene.domain);
   if (!options.svg_path.empty()) {
     SvgOptions svg_options;
     svg_options.title = options.scene_path;
     svg_options.show_cell_ids = svg_options.show_patch_ids = options.labels;
     svg_text = arrangement_svg(scene, arranged.arrangement, arranged.complex, svg_options);
   }
-  out.put(options.json_path, json_text);
-  out.put(options.svg_path, svg_text);
+  out.put(options.json_path, std::move(json_text));
+  out.put(options.svg_path, std::move(svg_text));
   out.commit();
   if (!options.quiet && options.json_path != "-") std::cout << summary_text(scene, arranged);
 }
@@ -79,6 +80,7 @@ void add_arrange_command(CLI::App& app) {
   cmd->add_option("--json", options->json_path, "write the complex as hsx-complex/1 JSON ('-' for stdout)")
       ->check(output_path());
   cmd->add_flag("-q,--quiet", options->quiet, "do not print the summary");
+  add_arrangement_limits(cmd, options->limits);
   cmd->callback([options] { run_arrange(*options); });
 }
 

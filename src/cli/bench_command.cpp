@@ -27,6 +27,7 @@ namespace hsx::cli {
 namespace {
 
 struct BenchOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::vector<std::string> dirs{"data/scenes", "data/figures"};
   std::vector<std::string> meshes;  ///< NH-Rep mode: .obj files, each with a .fea beside it
   long brute_force_limit = 200000;
@@ -256,7 +257,7 @@ BenchRow bench_scene(const std::string& file, const BenchOptions& o, const Repea
   row.input = std::filesystem::path(file).filename().string();
   LoadedInput in;
   try {
-    in = load_input(file);
+    in = load_input(file, o.limits);
   } catch (const InputError& e) {
     row.skipped = e.what();
     return row;
@@ -394,6 +395,7 @@ void add_bench_command(CLI::App& app) {
       ->check(output_path());
   cmd->add_option("--meshes", o->meshes,
                   "time NH-Rep's stages on these .obj files (each with its .fea) instead of the BSH methods");
+  add_arrangement_limits(cmd, o->limits);
   cmd->callback([o] {
     OutputFiles files;  // checked before the measurements, written at the end
     files.expect(o->csv_path, "--csv");

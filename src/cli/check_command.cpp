@@ -13,6 +13,7 @@ namespace hsx::cli {
 namespace {
 
 struct CheckCommandOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::string input;
   std::string json_path;
   long brute_force_limit = 200000;
@@ -26,7 +27,7 @@ int run_check(const CheckCommandOptions& o) {
   if (o.brute_force_limit < 1) throw InputError("--brute-force-limit: must be at least 1");
   OutputFiles out;
   out.expect(o.json_path, "--json");
-  const LoadedInput in = load_input(o.input);
+  const LoadedInput in = load_input(o.input, o.limits);
   CompareOptions compare;
   compare.max_bits = o.precision_bits;
   const auto results = bsh::check_all(in.complex(), o.brute_force_limit, compare);
@@ -58,6 +59,7 @@ void add_check_command(CLI::App& app) {
   cmd->add_option("--brute-force-limit", o->brute_force_limit,
                   "largest number of labellings the oracle may enumerate (default 200000; larger: skipped)");
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons");
+  add_arrangement_limits(cmd, o->limits);
   run_with_status(cmd, o, &run_check);
 }
 

@@ -2,6 +2,8 @@
 // exceptions: InputError -> exit 2 (bad input), anything else -> exit 1 (internal error).
 #pragma once
 
+#include <hsx/geometry/arrangement2.hpp>
+
 #include <CLI/CLI.hpp>
 
 #include <cmath>
@@ -40,6 +42,19 @@ inline CLI::Validator seconds() {
         return std::string("must be a finite number of seconds >= 0, not \"" + s + "\"");
       },
       "SECONDS");
+}
+
+/// The arrangement size limits (geometry/arrangement2.hpp, docs/limits.md) as `--max-cells N` and
+/// `--max-side-table N` (0: no limit) on a command that arranges a scene; `limits` must outlive the parse.
+inline void add_arrangement_limits(CLI::App* cmd, ArrangementLimits& limits) {
+  cmd->add_option("--max-cells", limits.max_cells,
+                  "refuse a scene whose arrangement has more cells than this (default " +
+                      std::to_string(limits.max_cells) + "; 0: no limit; see docs/limits.md)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-side-table", limits.max_side_entries,
+                  "refuse a scene whose cells x halfspaces exceeds this (default " +
+                      std::to_string(limits.max_side_entries) + "; 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
 }
 
 void add_arrange_command(CLI::App& app);

@@ -74,6 +74,7 @@ std::string svg_of_solid(const LoadedInput& in, const std::vector<char>& cells, 
 
 // ---------------------------------------------------------------------------------------------------------------
 struct DescribeOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::string input, json_path, svg_path;
   bool labels = false;
   SolidSource solid;
@@ -83,7 +84,7 @@ int run_describe(const DescribeOptions& o) {
   OutputFiles out;  // checked before computing, written all or none at the end
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
-  const LoadedInput in = load_input(o.input);
+  const LoadedInput in = load_input(o.input, o.limits);
   const Solid solid = load_solid(in, o.solid);
   const csg::Describability d = csg::describability(in.complex(), solid.cells);
   std::string svg_text;
@@ -115,6 +116,7 @@ int run_describe(const DescribeOptions& o) {
 
 // ---------------------------------------------------------------------------------------------------------------
 struct CsgOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::string input, json_path, svg_path, openscad_path;
   SolidSource solid;
   bool separators = false;
@@ -169,7 +171,7 @@ int run_csg(const CsgOptions& o) {
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
   out.expect(o.openscad_path, "--openscad");
-  const LoadedInput in = load_input(o.input);
+  const LoadedInput in = load_input(o.input, o.limits);
   if (o.max_separators < 0) throw InputError("--max-separators: must be >= 0");
   if (!in.scene && o.separators)
     throw InputError("--separators: needs a scene (separating half-planes are geometry), not a complex");
@@ -242,6 +244,7 @@ std::optional<bsh::Method> search_method(const std::string& name) {
 }
 
 struct ConvertOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::string input, csgnet, out_path, json_path, search = "beam";
   SolidSource solid;
 };
@@ -261,7 +264,7 @@ int run_convert(const ConvertOptions& o) {
     report = csg::convert_to_bsh(program.scene, *program.expression, *search);
   } else {
     if (o.input.empty()) throw InputError("give a SCENE with --csg/--shape, or --csgnet PROGRAM");
-    const LoadedInput in = load_input(o.input);
+    const LoadedInput in = load_input(o.input, o.limits);
     if (!in.scene) throw InputError(o.input + ": convert needs a scene, not a complex");
     report = csg::convert_to_bsh(*in.scene, *in.arranged, load_solid(in, o.solid).cells, *search);
   }
@@ -285,6 +288,7 @@ int run_convert(const ConvertOptions& o) {
 
 // ---------------------------------------------------------------------------------------------------------------
 struct SamplesOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::string input, target, out_path, json_path, search = "beam";
   std::string csg;
   int exhaustive_patches = 14;
@@ -296,7 +300,7 @@ int run_samples(const SamplesOptions& o) {
   OutputFiles out;  // checked before computing, written all or none at the end
   out.expect(o.json_path, "--json");
   out.expect(o.out_path, "--out");
-  const LoadedInput in = load_input(o.input);
+  const LoadedInput in = load_input(o.input, o.limits);
   const Solid solid = load_solid(in, SolidSource{o.target, o.csg, "--target", "--csg"});
   const bsh::Problem problem(in.complex());
   std::string why;
@@ -449,6 +453,7 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
     cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "
                 "1 internal error.");
+    add_arrangement_limits(cmd, o->limits);
     run_with_status(cmd, o, &run_describe);
   }
   {
@@ -472,6 +477,7 @@ void add_csg_commands(CLI::App& app) {
                 "--json and --svg are still written, --openscad is not (a message says so); 2 bad input only "
                 "(e.g. --separators or --openscad with a complex instead of a scene); 1 internal error (e.g. a tree "
                 "that fails verification).");
+    add_arrangement_limits(cmd, o->limits);
     run_with_status(cmd, o, &run_csg);
   }
   {
@@ -486,6 +492,7 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
     cmd->add_option("--json", o->json_path, "write sample counts and bounds as JSON")
         ->check(output_path());
+    add_arrangement_limits(cmd, o->limits);
     run_with_status(cmd, o, &run_convert);
   }
   {
@@ -502,6 +509,7 @@ void add_csg_commands(CLI::App& app) {
         ->check(output_path());
     cmd->add_option("--json", o->json_path, "write counts as JSON")
         ->check(output_path());
+    add_arrangement_limits(cmd, o->limits);
     run_with_status(cmd, o, &run_samples);
   }
   {

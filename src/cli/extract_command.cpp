@@ -14,6 +14,7 @@ namespace hsx::cli {
 namespace {
 
 struct ExtractCommandOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::string input;
   std::string method = "beam";
   int beam_width = 1;
@@ -77,7 +78,7 @@ void run_extract(const ExtractCommandOptions& o) {
   OutputFiles out;  // checked before computing, written all or none at the end
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
-  const LoadedInput in = load_input(o.input);
+  const LoadedInput in = load_input(o.input, o.limits);
   if (!o.svg_path.empty() && !in.scene)
     throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
 
@@ -142,6 +143,7 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("--json", o->json_path, "write the hsx-result/1 document ('-' for stdout)")->check(output_path());
   cmd->add_flag("--no-timing", o->no_timing, "leave seconds out of the JSON (byte-reproducible output)");
   cmd->add_flag("-q,--quiet", o->quiet, "no summary, no progress");
+  add_arrangement_limits(cmd, o->limits);
   cmd->callback([o] { run_extract(*o); });
 }
 

@@ -2,11 +2,14 @@
 #include "cli/commands.hpp"
 #include <hsx/geometry/scene.hpp>
 #include <hsx/io/files.hpp>
+#include <hsx/kernel/memory.hpp>
 
 #include <iostream>
+#include <new>
 
 int main(int argc, char** argv) {
   hsx::remove_temporary_outputs_on_signals();
+  hsx::install_gmp_allocation_handlers();
   CLI::App app{"hsx: exact arrangements, BSH shapes and halfspace CSG, with certified answers"};
   app.set_version_flag("--version", std::string("hsx ") + HSX_VERSION);
   app.require_subcommand(1);
@@ -28,6 +31,10 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const hsx::InputError& e) {
     std::cerr << "hsx: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "hsx: error: out of memory: this input needs more memory than the process may use (docs/limits.md"
+                 " says how time and memory grow with the input, and which limits bound them)\n";
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "hsx: internal error: " << e.what() << "\n";

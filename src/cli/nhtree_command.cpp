@@ -25,6 +25,7 @@ namespace hsx::cli {
 namespace {
 
 struct NhtreeOptions {
+  ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::string input, fea_path, sharp_angle;  ///< empty: 0, or 20 with --nhrep-tool
   bool nhrep_tool = false;
   bool nest_holes = false;
@@ -285,7 +286,7 @@ int run_planar(const NhtreeOptions& o, OutputFiles& files) {
   if (!o.decomposed_prefix.empty()) throw InputError("nhtree: --decomposed writes meshes; use --json for 2D");
   if (!o.reference_conf.empty() || !o.reference_face_patch.empty() || !o.reference_graph.empty())
     throw InputError("nhtree: --reference, --reference-face-patch and --reference-graph compare meshes (.obj)");
-  const LoadedInput in = load_input(o.input);
+  const LoadedInput in = load_input(o.input, o.limits);
   if (!in.arranged)
     throw InputError(o.input + ": nhtree needs a scene, not a complex: corner angles need the geometry");
   const Solid solid = load_solid(in, o.solid);
@@ -354,6 +355,7 @@ void add_nhtree_command(CLI::App& app) {
                   "compare the original patch graph with NH-Rep's 'edge: a-b : t' listing");
   cmd->add_option("--reference-face-patch", o->reference_face_patch,
                   "the reference's patch id per triangle, to compare through decompositions");
+  add_arrangement_limits(cmd, o->limits);
   run_with_status(cmd, o, &run_nhtree);
 }
 

@@ -130,8 +130,8 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
   return c;
 }
 
-Arranged2 arrange(const Scene2& scene) {
-  Arranged2 out{Arrangement2::build(scene), {}};
+Arranged2 arrange(const Scene2& scene, const ArrangementLimits& limits) {
+  Arranged2 out{Arrangement2::build(scene, limits), {}};
   out.complex = complex_from_arrangement(scene, out.arrangement);
   return out;
 }

@@ -6,12 +6,15 @@
 
 #include <CGAL/Arr_circle_segment_traits_2.h>
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
+#include <CGAL/Arr_observer.h>
 #include <CGAL/Arr_walk_along_line_point_location.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Cartesian.h>
 
 #include <algorithm>
 #include <deque>
+#include <map>
+#include <set>
 #include <sstream>
 #include <unordered_map>
 
@@ -113,6 +116,121 @@ OneRoot y_at(const XCurve& cv, const Rational& x0) {
   return y;
 }
 
+/// The curves handed to CGAL, each distinct point set once. Coincident boundaries (a halfspace given twice, a
+/// disk and its complement, a polygon edge on a half-plane's line clipped to the same segment, a box side) are
+/// merged here rather than left to the sweep, whose cost grows with the number of curves overlapping at once
+/// (cubically for n copies of one circle). A curve's data is its index g; tags[g] lists what it bounds:
+/// halfspace indices and kBoxCurve.
+/// `cells_at_least` is a lower bound on the bounded faces, known before the sweep: inserted first, each distinct
+/// half-plane chord (ends on the box, meets every other chord or circle in finitely many points) and each
+/// distinct circle splits at least one face, and later curves never merge faces.
+struct DistinctCurves {
+  std::vector<Curve> curves;
+  std::vector<std::vector<int>> tags;
+  long cells_at_least = 1;
+};
+
+class CurveCollector {
+ public:
+  void segment(const PointQ2& a, const PointQ2& b, int tag) {
+    const auto [lo, hi] = std::minmax(a, b, [](const PointQ2& p, const PointQ2& q) {
+      return p.x < q.x || (p.x == q.x && p.y < q.y);
+    });
+    add({Rational(0), lo.x, lo.y, hi.x, hi.y}, tag,
+        [&] { return BaseCurve(Kernel::Segment_2(to_kernel(lo), to_kernel(hi))); });
+  }
+  void circle(const PointQ2& center, const Rational& radius, int tag) {
+    const Rational squared = radius * radius;
+    add({Rational(1), center.x, center.y, squared}, tag,
+        [&] { return BaseCurve(Kernel::Circle_2(to_kernel(center), squared, CGAL::COUNTERCLOCKWISE)); });
+  }
+  /// A half-plane's chord or a circle: counted in DistinctCurves::cells_at_least unless on the box.
+  void mark_splitting() { splitting_.insert(last_); }
+  DistinctCurves take() {
+    for (int g : splitting_) {
+      const std::vector<int>& tags = out_.tags[static_cast<std::size_t>(g)];
+      if (std::find(tags.begin(), tags.end(), kBoxCurve) == tags.end()) ++out_.cells_at_least;
+    }
+    return std::move(out_);
+  }
+
+ private:
+  template <typename Make>
+  void add(std::vector<Rational> key, int tag, Make make) {
+    const auto [it, fresh] = index_.emplace(std::move(key), static_cast<int>(out_.curves.size()));
+    if (fresh) {
+      out_.curves.emplace_back(make(), it->second);
+      out_.tags.emplace_back();
+    }
+    last_ = it->second;
+    std::vector<int>& tags = out_.tags[static_cast<std::size_t>(it->second)];
+    if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+  }
+  std::map<std::vector<Rational>, int> index_;
+  std::set<int> splitting_;
+  int last_ = -1;
+  DistinctCurves out_;
+};
+
+DistinctCurves distinct_curves(const Scene2& scene) {
+  CurveCollector collect;
+  const Box2& box = scene.domain;
+  const PointQ2 corners[4] = {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
+  for (int k = 0; k < 4; ++k) collect.segment(corners[k], corners[(k + 1) % 4], kBoxCurve);
+  for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
+    const Halfspace2& h = scene.halfspaces[static_cast<std::size_t>(i)];
+    switch (h.kind) {
+      case HalfspaceKind2::Halfplane:
+        if (auto seg = clip_line_to_box(h.normal, h.offset, box)) {
+          collect.segment(seg->first, seg->second, i);
+          collect.mark_splitting();
+        }
+        break;
+      case HalfspaceKind2::Disk:
+        collect.circle(h.center, h.radius, i);
+        collect.mark_splitting();
+        break;
+      case HalfspaceKind2::Polygon:
+        for (std::size_t k = 0; k < h.vertices.size(); ++k)
+          collect.segment(h.vertices[k], h.vertices[(k + 1) % h.vertices.size()], i);
+        break;
+    }
+  }
+  return collect.take();
+}
+
+/// Watches CGAL build the arrangement and stops it, by throwing InputError, as soon as it has more bounded
+/// faces than ArrangementLimits allow, so that an oversized input costs time and memory in proportion to the
+/// limit, not to its own arrangement (which can be quadratic in the input).
+class SizeGuard : public CGAL::Arr_observer<CgalArrangement> {
+ public:
+  /// Checks `cells_at_least` first, so that an input known to be too large is refused before the sweep.
+  SizeGuard(CgalArrangement& arr, const ArrangementLimits& limits, int halfspaces, long cells_at_least)
+      : CGAL::Arr_observer<CgalArrangement>(arr), limits_(limits), halfspaces_(halfspaces) {
+    check(cells_at_least);
+  }
+  void after_split_face(Face_handle, Face_handle, bool) override {
+    ++cells_;
+    check(cells_);
+  }
+
+ private:
+  void check(long cells) const {
+    if (limits_.max_cells > 0 && cells > limits_.max_cells)
+      throw InputError("the arrangement has at least " + std::to_string(cells) + " cells, over the limit of " +
+                       std::to_string(limits_.max_cells) + " (raise it with --max-cells; see docs/limits.md)");
+    const long entries = cells * halfspaces_;
+    if (limits_.max_side_entries > 0 && entries > limits_.max_side_entries)
+      throw InputError("the arrangement has at least " + std::to_string(cells) + " cells over " +
+                       std::to_string(halfspaces_) + " halfspaces: its side table (cells x halfspaces) exceeds " +
+                       std::to_string(limits_.max_side_entries) +
+                       " entries, the limit (raise it with --max-side-table; see docs/limits.md)");
+  }
+  const ArrangementLimits& limits_;
+  long halfspaces_;
+  long cells_ = 0;  // bounded faces so far
+};
+
 }  // namespace
 
 struct Arrangement2::Impl {
@@ -130,40 +248,18 @@ const void* key(Handle h) {
 
 }  // namespace
 
-Arrangement2 Arrangement2::build(const Scene2& scene) {
+Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& limits) {
   Arrangement2 out;
   out.domain_ = scene.domain;
   out.halfspace_count_ = static_cast<int>(scene.halfspaces.size());
   auto impl = std::make_shared<Impl>();
   CgalArrangement& arr = impl->arr;
 
-  // --- 1. Curves: the box, then every halfspace boundary tagged with its index. ---------------------------------
-  std::vector<Curve> curves;
-  const Box2& box = scene.domain;
-  const PointQ2 corners[4] = {box.min, {box.max.x, box.min.y}, box.max, {box.min.x, box.max.y}};
-  for (int k = 0; k < 4; ++k)
-    curves.emplace_back(BaseCurve(Kernel::Segment_2(to_kernel(corners[k]), to_kernel(corners[(k + 1) % 4]))),
-                        kBoxCurve);
-  for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
-    const Halfspace2& h = scene.halfspaces[i];
-    switch (h.kind) {
-      case HalfspaceKind2::Halfplane:
-        if (auto seg = clip_line_to_box(h.normal, h.offset, box))
-          curves.emplace_back(BaseCurve(Kernel::Segment_2(to_kernel(seg->first), to_kernel(seg->second))), i);
-        break;
-      case HalfspaceKind2::Disk:
-        curves.emplace_back(
-            BaseCurve(Kernel::Circle_2(to_kernel(h.center), h.radius * h.radius, CGAL::COUNTERCLOCKWISE)), i);
-        break;
-      case HalfspaceKind2::Polygon:
-        for (std::size_t k = 0; k < h.vertices.size(); ++k)
-          curves.emplace_back(BaseCurve(Kernel::Segment_2(to_kernel(h.vertices[k]),
-                                                          to_kernel(h.vertices[(k + 1) % h.vertices.size()]))),
-                              i);
-        break;
-    }
-  }
-  CGAL::insert(arr, curves.begin(), curves.end());
+  // --- 1. Curves: the box, then every halfspace boundary, each distinct curve once (see DistinctCurves). --------
+  const DistinctCurves curves = distinct_curves(scene);
+  SizeGuard guard(arr, limits, out.halfspace_count_, curves.cells_at_least);
+  CGAL::insert(arr, curves.curves.begin(), curves.curves.end());
+  guard.detach();
 
   // --- 2. Vertices. ----------------------------------------------------------------------------------------------
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
@@ -194,12 +290,13 @@ Arrangement2 Arrangement2::build(const Scene2& scene) {
     edge.target = vertex_id(h->target());
     edge.left_face = face_id(h->face());
     edge.right_face = face_id(h->twin()->face());
-    for (auto it = h->curve().data().begin(); it != h->curve().data().end(); ++it) {
-      if (*it == kBoxCurve)
-        edge.on_box = true;
-      else
-        edge.halfspaces.push_back(*it);
-    }
+    for (auto it = h->curve().data().begin(); it != h->curve().data().end(); ++it)
+      for (int tag : curves.tags[static_cast<std::size_t>(*it)]) {
+        if (tag == kBoxCurve)
+          edge.on_box = true;
+        else
+          edge.halfspaces.push_back(tag);
+      }
     std::sort(edge.halfspaces.begin(), edge.halfspaces.end());
     edge.halfspaces.erase(std::unique(edge.halfspaces.begin(), edge.halfspaces.end()), edge.halfspaces.end());
     const XCurve& cv = h->curve();

@@ -526,8 +526,15 @@ Rational signed_area(const std::vector<PointQ2>& polygon) {
 void validate_and_resolve(Scene2& scene) {
   if (scene.halfspaces.empty()) fail("halfspaces", "the scene has no halfspace (at least one is needed)");
 
-  std::unordered_map<std::string, std::size_t> names;
+  // The total is checked before any polygon's (quadratic) simplicity test, so an oversized scene is refused at once.
   std::size_t total_polygon_vertices = 0;
+  for (const Halfspace2& h : scene.halfspaces)
+    if (h.kind == HalfspaceKind2::Polygon) total_polygon_vertices += h.vertices.size();
+  if (total_polygon_vertices > kMaxTotalPolygonVertices) {
+    fail("halfspaces", "all polygons together have " + std::to_string(total_polygon_vertices) +
+                           " vertices, more than the limit of " + std::to_string(kMaxTotalPolygonVertices));
+  }
+  std::unordered_map<std::string, std::size_t> names;
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
     const Halfspace2& h = scene.halfspaces[i];
     const std::string where = halfspace_label(i, h);
@@ -542,11 +549,6 @@ void validate_and_resolve(Scene2& scene) {
         if (h.radius <= 0) fail(where, "the radius must be positive, got " + number_text(h.radius));
         break;
       case HalfspaceKind2::Polygon:
-        total_polygon_vertices += h.vertices.size();
-        if (total_polygon_vertices > kMaxTotalPolygonVertices) {
-          fail(where, "all polygons together have more than " + std::to_string(kMaxTotalPolygonVertices) +
-                          " vertices (the limit)");
-        }
         check_polygon(i, h);
         break;
     }

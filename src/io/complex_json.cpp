@@ -33,7 +33,7 @@ constexpr std::size_t kMaxRadicandChars = 1000;
 /// Hsx's own largest legitimate documents (5000-vertex polygons) use a fraction of this.
 constexpr std::uint64_t kWorkBudget = std::uint64_t(1) << 27;
 /// Dense per-cell side vectors and the per-patch checks cost cells x halfspaces and patches x halfspaces.
-constexpr std::uint64_t kMaxTableEntries = std::uint64_t(1) << 28;
+const std::uint64_t kMaxTableEntries = static_cast<std::uint64_t>(ArrangementLimits{}.max_side_entries);
 
 class Budget {
  public:
@@ -1067,7 +1067,27 @@ std::optional<OneRoot> parse_one_root(std::string_view text, std::string* why) {
   return OneRoot(a0, root ? a1 : Rational(0), root ? *root : Rational(0));
 }
 
-json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+namespace {
+
+/// cells[k] of the document.
+json cell_json(const Complex& c, std::size_t k) {
+  const Cell& cell = c.cells[k];
+  json j = json::object();
+  j["id"] = k;
+  j["outer"] = cell.outer;
+  json w = json::array();
+  for (const Rational& x : cell.witness) w.push_back(exact_string(x));
+  j["witness"] = w;
+  json inside = json::array();
+  for (std::size_t i = 0; i < cell.inside.size(); ++i)
+    if (cell.inside[i]) inside.push_back(c.halfspace_names.at(i));
+  j["inside"] = inside;
+  j["measure"] = measure_json(cell.measure);
+  return j;
+}
+
+/// The document without its "cells".
+json complex_json_without_cells(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
   auto name = [&](int h) { return c.halfspace_names.at(static_cast<std::size_t>(h)); };
   json doc = json::object();
   doc["format"] = kComplexFormat;
@@ -1090,23 +1110,6 @@ json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2*
   counts["samples"] = c.samples.size();
   doc["counts"] = counts;
 
-  json cells = json::array();
-  for (std::size_t k = 0; k < c.cells.size(); ++k) {
-    const Cell& cell = c.cells[k];
-    json j = json::object();
-    j["id"] = k;
-    j["outer"] = cell.outer;
-    json w = json::array();
-    for (const Rational& x : cell.witness) w.push_back(exact_string(x));
-    j["witness"] = w;
-    json inside = json::array();
-    for (std::size_t i = 0; i < cell.inside.size(); ++i)
-      if (cell.inside[i]) inside.push_back(name(static_cast<int>(i)));
-    j["inside"] = inside;
-    j["measure"] = measure_json(cell.measure);
-    cells.push_back(std::move(j));
-  }
-  doc["cells"] = std::move(cells);
 
   json patches = json::array();
   for (std::size_t p = 0; p < c.patches.size(); ++p) {
@@ -1210,6 +1213,44 @@ json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2*
     doc["geometry"] = std::move(g);
   }
   return doc;
+}
+
+}  // namespace
+
+json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+  json doc = complex_json_without_cells(c, geometry, domain);
+  json cells = json::array();
+  for (std::size_t k = 0; k < c.cells.size(); ++k) cells.push_back(cell_json(c, k));
+  doc["cells"] = std::move(cells);
+  return doc;
+}
+
+std::string complex_json_text(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+  json doc = complex_json_without_cells(c, geometry, domain);
+  doc["cells"] = json::array();
+  const std::string rest = doc.dump(2);
+  // Keys are sorted, so the top-level "cells" comes first among the keys indented by two spaces; names inside
+  // strings are escaped and cannot end a line with this pattern.
+  const std::string placeholder = "\n  \"cells\": []";
+  const std::size_t at = rest.find(placeholder);
+  if (at == std::string::npos) throw std::logic_error("complex_json_text: no cells placeholder");
+  std::string text = rest.substr(0, at);
+  if (c.cells.empty()) {
+    text += placeholder;
+  } else {
+    text += "\n  \"cells\": [\n";
+    for (std::size_t k = 0; k < c.cells.size(); ++k) {
+      text += "    ";
+      for (char ch : cell_json(c, k).dump(2)) {
+        text += ch;
+        if (ch == '\n') text += "    ";
+      }
+      text += k + 1 < c.cells.size() ? ",\n" : "\n  ]";
+    }
+  }
+  text.append(rest, at + placeholder.size(), std::string::npos);
+  text += "\n";
+  return text;
 }
 
 ComplexDocument complex_document_from_json(const json& document) { return read_document(document); }

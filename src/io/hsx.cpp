@@ -60,9 +60,8 @@ nhrep::BuildResult nhrep_tree_of_mesh(const std::string& obj_path, const std::st
 
 std::string complex_json_text(const LoadedInput& input) {
   if (input.arranged)
-    return complex_to_json(input.complex(), &input.arranged->arrangement, &input.scene->domain).dump(2) + "\n";
-  return complex_to_json(input.complex(), nullptr, input.document->domain ? &*input.document->domain : nullptr)
-             .dump(2) + "\n";
+    return complex_json_text(input.complex(), &input.arranged->arrangement, &input.scene->domain);
+  return complex_json_text(input.complex(), nullptr, input.document->domain ? &*input.document->domain : nullptr);
 }
 
 std::string result_json_text(const Complex& complex, const bsh::ExtractResult& result, const PlanarPieces& geometry,

@@ -11,7 +11,7 @@ PlanarPieces LoadedInput::pieces() const {
   return {};
 }
 
-LoadedInput load_input(const std::string& path) {
+LoadedInput load_input(const std::string& path, const ArrangementLimits& limits) {
   LoadedInput in;
   in.path = path;
   const nlohmann::json doc = read_exact_json_file(path);
@@ -26,7 +26,7 @@ LoadedInput load_input(const std::string& path) {
   }
   try {
     in.scene = read_scene2(doc);
-    in.arranged = arrange(*in.scene);
+    in.arranged = arrange(*in.scene, limits);
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }

@@ -417,3 +417,88 @@ TEST_CASE("arrangement2: samples where boundaries meet are input errors", "[arra
     CHECK_NOTHROW(Arrangement2::build(s));
   }
 }
+
+TEST_CASE("arrangement2: size limits hold exactly at the arrangement's own size", "[arrangement2][property][limits]") {
+  rc::prop("max_cells = cells passes, cells - 1 is refused; the same for cells x halfspaces", [] {
+    const Scene2 scene = *gen_scene(degenerate_options());
+    const Arrangement2 whole = Arrangement2::build(scene, ArrangementLimits{0, 0});
+    const long cells = static_cast<long>(whole.faces().size());
+    const long entries = cells * static_cast<long>(scene.halfspaces.size());
+    RC_ASSERT(Arrangement2::build(scene, ArrangementLimits{cells, entries}).faces().size() == whole.faces().size());
+    RC_ASSERT_THROWS_AS(Arrangement2::build(scene, ArrangementLimits{cells - 1, 0}), InputError);
+    RC_ASSERT_THROWS_AS(Arrangement2::build(scene, ArrangementLimits{0, entries - 1}), InputError);
+  });
+}
+
+namespace {
+
+Scene2 parallel_lines(int n) {
+  Scene2 scene;
+  scene.domain = box(-10, -10, 10, 10);
+  scene.domain_given = true;
+  for (int i = 0; i < n; ++i) {
+    Halfspace2 h;
+    h.name = "L" + std::to_string(i);
+    h.normal = pt(0, 1);
+    h.offset = Rational(i - n / 2, n);
+    scene.halfspaces.push_back(h);
+  }
+  validate_and_resolve(scene);
+  return scene;
+}
+
+}  // namespace
+
+TEST_CASE("arrangement2: a side table known to be too large is refused before the sweep", "[arrangement2][limits]") {
+  // 2000 parallel chords give at least 2001 cells: 2001 x 2000 entries, over a limit of 10^6, known up front.
+  try {
+    Arrangement2::build(parallel_lines(2000), ArrangementLimits{0, 1000000});
+    FAIL("not refused");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("at least 2001 cells over 2000 halfspaces") &&
+                             Catch::Contains("--max-side-table"));
+  }
+  try {
+    Arrangement2::build(parallel_lines(50), ArrangementLimits{40, 0});
+    FAIL("not refused");
+  } catch (const InputError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("at least 51 cells, over the limit of 40") && Catch::Contains("--max-cells"));
+  }
+  CHECK(Arrangement2::build(parallel_lines(50), ArrangementLimits{51, 51 * 50}).faces().size() == 51);
+}
+
+TEST_CASE("arrangement2: coincident copies of a boundary are one curve carrying every copy", "[arrangement2]") {
+  // 300 copies of one disk (as CSGNet programs repeat primitives) and a half-plane along the box side: the sweep
+  // sees one circle, each edge of it lists all copies.
+  Scene2 scene;
+  scene.domain = box(-4, -4, 4, 4);
+  scene.domain_given = true;
+  for (int i = 0; i < 300; ++i) {
+    Halfspace2 h;
+    h.name = "D" + std::to_string(i);
+    h.kind = HalfspaceKind2::Disk;
+    h.center = pt(0, 0);
+    h.radius = 2;
+    h.complement = i % 2 == 1;
+    scene.halfspaces.push_back(h);
+  }
+  Halfspace2 side;
+  side.name = "S";
+  side.normal = pt(1, 0);
+  side.offset = 4;
+  scene.halfspaces.push_back(side);
+  validate_and_resolve(scene);
+  const Arrangement2 arr = Arrangement2::build(scene);
+  CHECK(arr.faces().size() == 2);
+  int arcs = 0;
+  for (const ArrEdge2& e : arr.edges()) {
+    if (e.shape != EdgeShape2::Arc) {
+      CHECK(e.on_box);
+      continue;
+    }
+    ++arcs;
+    REQUIRE(e.halfspaces.size() == 300);
+    for (int i = 0; i < 300; ++i) CHECK(e.halfspaces[static_cast<std::size_t>(i)] == i);
+  }
+  CHECK(arcs == 2);
+}

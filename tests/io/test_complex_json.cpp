@@ -524,3 +524,19 @@ TEST_CASE("importing mutated documents never crashes", "[io][complex_json]") {
     });
   }
 }
+
+TEST_CASE("complex_json_text writes complex_to_json(...).dump(2) byte for byte", "[io][complex_json]") {
+  for (const Scene2& scene : {curved_scene(), straight_scene()}) {
+    const Arranged2 arranged = arrange(scene);
+    CHECK(complex_json_text(arranged.complex, &arranged.arrangement, &scene.domain) ==
+          complex_to_json(arranged.complex, &arranged.arrangement, &scene.domain).dump(2) + "\n");
+    CHECK(complex_json_text(arranged.complex, nullptr, nullptr) ==
+          complex_to_json(arranged.complex, nullptr, nullptr).dump(2) + "\n");
+  }
+  // A halfspace whose name looks like the cells key cannot confuse where the cells go.
+  Scene2 scene = straight_scene();
+  scene.halfspaces.front().name = "\n  \"cells\": []";
+  const Arranged2 arranged = arrange(scene);
+  CHECK(complex_json_text(arranged.complex, &arranged.arrangement, &scene.domain) ==
+        complex_to_json(arranged.complex, &arranged.arrangement, &scene.domain).dump(2) + "\n");
+}

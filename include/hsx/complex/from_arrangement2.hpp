@@ -19,7 +19,8 @@ struct Arranged2 {
 /// box are dropped. Cells are the arrangement's bounded faces, in the same order.
 Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arrangement);
 
-/// validate_and_resolve must have been called on `scene`. Throws InputError for samples on junctions.
-Arranged2 arrange(const Scene2& scene);
+/// validate_and_resolve must have been called on `scene`. Throws InputError for samples on junctions and for an
+/// arrangement larger than `limits` (Arrangement2::build).
+Arranged2 arrange(const Scene2& scene, const ArrangementLimits& limits = {});
 
 }  // namespace hsx

@@ -60,12 +60,21 @@ struct PointLocation2 {
   int index = -1;
 };
 
+/// How large an arrangement may grow. Time and memory grow with the cells (about 10 KB each, see docs/limits.md)
+/// and with cells x halfspaces (every cell records its side of every halfspace, here and in the complex): an
+/// input within the scene limits can still have an arrangement quadratic in its size. 0 disables a limit.
+struct ArrangementLimits {
+  long max_cells = 250000;            ///< bounded faces
+  long max_side_entries = 1L << 27;   ///< cells x halfspaces
+};
+
 class Arrangement2 {
  public:
   /// Builds the arrangement of every halfspace boundary of `scene` (validated, see validate_and_resolve) with
   /// the domain box, classifies faces, measures edges and faces, and places samples.
-  /// Throws InputError when a sample lies on a vertex where two boundaries meet.
-  static Arrangement2 build(const Scene2& scene);
+  /// Throws InputError when a sample lies on a vertex where two boundaries meet, and when the arrangement
+  /// outgrows `limits` (checked while CGAL builds it, so refusing costs about what the limit allows).
+  static Arrangement2 build(const Scene2& scene, const ArrangementLimits& limits = {});
 
   const Box2& domain() const { return domain_; }
   int halfspace_count() const { return halfspace_count_; }

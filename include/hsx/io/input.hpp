@@ -21,7 +21,7 @@ struct LoadedInput {
   PlanarPieces pieces() const;
 };
 
-/// Throws InputError naming the file and field.
-LoadedInput load_input(const std::string& path);
+/// Reads `path`; a scene is arranged within `limits`. Throws InputError naming the file and field (or the limit).
+LoadedInput load_input(const std::string& path, const ArrangementLimits& limits = {});
 
 }  // namespace hsx

@@ -1,0 +1,48 @@
+// Tests of kernel/memory: a failed GMP allocation throws std::bad_alloc instead of aborting the process.
+#include <hsx/kernel/memory.hpp>
+#include <hsx/kernel/rational.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <new>
+
+namespace {
+
+/// In a child process with a 1 GiB address-space cap: asks GMP for a 2^33-bit (1 GiB) number. Exit status 0:
+/// std::bad_alloc was caught; 1: the allocation succeeded. Abort (GMP's default handler) shows as a signal.
+int child_asks_gmp_for_a_gibibyte(bool install) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const rlimit cap{rlim_t(1) << 30, rlim_t(1) << 30};
+    setrlimit(RLIMIT_AS, &cap);
+    if (install) hsx::install_gmp_allocation_handlers();
+    try {
+      hsx::Integer z;
+      mpz_realloc2(z.get_mpz_t(), mp_bitcnt_t(1) << 33);
+      _exit(1);
+    } catch (const std::bad_alloc&) {
+      hsx::Integer after = 12345;  // GMP still works after the failure
+      _exit(after == 12345 ? 0 : 3);
+    }
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+}  // namespace
+
+TEST_CASE("a failed GMP allocation throws std::bad_alloc once the handlers are installed", "[kernel][memory]") {
+  const int status = child_asks_gmp_for_a_gibibyte(true);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+}
+
+TEST_CASE("without the handlers, GMP aborts the process (what the handlers prevent)", "[kernel][memory]") {
+  const int status = child_asks_gmp_for_a_gibibyte(false);
+  CHECK(WIFSIGNALED(status));
+}

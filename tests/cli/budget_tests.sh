@@ -2,9 +2,9 @@
 # Limits that bound time and memory (issue 10, §2; docs/limits.md): inputs whose arrangement, side table or
 # numbers would exhaust the machine are refused quickly with exit 2, a message naming the limit and the option
 # that raises it, and nothing written. Each run has a time bound and an address-space cap.
-# Usage: limits_tests.sh HSX SOURCE_DIR
+# Usage: budget_tests.sh HSX SOURCE_DIR
 set -u
-hsx="$(realpath "${1:?usage: limits_tests.sh HSX SOURCE_DIR}")"; src="$(realpath "${2:?usage}")"
+hsx="$(realpath "${1:?usage: budget_tests.sh HSX SOURCE_DIR}")"; src="$(realpath "${2:?usage}")"
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 cd "$work"
 passed=0; failed=0
@@ -69,5 +69,5 @@ awk 'BEGIN { printf "{\"format\": \"hsx-scene/1\", \"dimension\": 2, \"halfspace
   printf "], \"samples\": []}\n" }' >polygons.json
 expect 2 "all polygons together have 205000 vertices, more than the limit of 200000" 10 2000 -- "$hsx" arrange polygons.json -q
 
-echo "limits_cli: $passed passed, $failed failed"
+echo "budget_cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

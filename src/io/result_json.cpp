@@ -99,6 +99,7 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
                {"checked", r.ties.checked},
                {"certified", r.ties.certified},
                {"capped", r.ties.capped}};
+  if (!r.ties.stopped_by.empty()) j["ties"]["stopped_by"] = r.ties.stopped_by;
   j["boundary"] = boundary_json(problem, r.labelling, geometry);
   j["inside_cells"] = cells_json(r.labelling);
   j["removed_patches"] = patches_of_supports(c, r.removed);

@@ -2,7 +2,9 @@
 // shared/spec/scene-format.md requires, plus what a reader needs to check it:
 //   {"format": "hsx-result/1", "method", "optimal", "stopped_by"?,
 //    "energy": {"missing_samples", "measure": M}, "area": M, "sample_connected",
-//    "ties": {"count", "checked", "certified", "capped"},
+//    "ties": {"count", "checked", "certified", "capped", "stopped_by"?},  stopped_by ("max-ties", "time-limit",
+//      "max-states", "max-graph-cuts") says why a capped enumeration stopped; the top-level "stopped_by" names
+//      a limit that stopped the search for the optimum itself (then "optimal" is false)
 //    "boundary": [{"patch", "halfspace", "coincident": [names], "pieces": [{"from": P, "to": P,
 //                  "shape": "segment"|"arc", ("center", "radius", "ccw")}]}],   pieces run with the shape on
 //                  their left; pieces are omitted when the complex has no geometry

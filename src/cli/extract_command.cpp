@@ -141,8 +141,9 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("--max-states", o->max_states, "stop after expanding N states (0: no limit; deterministic)");
   cmd->add_option("--max-graph-cuts", o->max_graph_cuts, "stop after N graph cuts (0: no limit; deterministic)");
   cmd->add_option("--time-limit", o->time_limit,
-                  "stop after S seconds (0: no limit), brute force included; where it stops, hence the result, "
-                  "depends on the machine's speed and load: --max-states and --max-graph-cuts do not")
+                  "stop after S seconds of search (0: no limit; reading and arranging the input are not counted), "
+                  "brute force included; where it stops, hence the result, depends on the machine's speed and "
+                  "load: --max-states and --max-graph-cuts do not")
       ->check(seconds());
   cmd->add_option("--max-labellings", o->max_labellings,
                   "brute force: refuse (exit 2) inputs with more than N orientation-preserving labellings "

@@ -128,5 +128,14 @@ expect 2 "samples[1] (on \"P\"): lies on an arrangement vertex [2, 0] where boun
 python3 -c "import json; d=json.load(open('corner.json')); d['samples'].pop(); json.dump(d, open('corner0.json','w'))"
 expect 0 "" -- "$hsx" arrange corner0.json -q
 
+# Messages: plurals spelled right ("patches", "vertices", not "patchs", "vertexs").
+python3 -c "
+import json; d = json.load(open('lensc.json')); d['supports'][0] = [9999]; json.dump(d, open('badp.json', 'w'))
+d = json.load(open('lensc.json')); d['junctions'][0]['vertex'] = 9999; json.dump(d, open('badv.json', 'w'))"
+expect 2 "supports[0][0]: patch 9999 is out of range (there are" -- "$hsx" extract badp.json -q
+grep -q " patches)" out && ok || bad "plural of patch: $(cat out)"
+expect 2 "junctions[0].vertex: vertex 9999 is out of range (there are" -- "$hsx" extract badv.json -q
+grep -q " vertices)" out && ok || bad "plural of vertex: $(cat out)"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -14,11 +14,13 @@ namespace hsx::cli {
 namespace {
 
 struct ExtractCommandOptions {
-  ArrangementLimits limits;  ///< --max-cells, --max-side-table
+  ArrangementLimits arrangement;  ///< --max-cells, --max-side-table
   std::string input;
   std::string method = "beam";
   int beam_width = 1;
   long max_states = 0;
+  long max_graph_cuts = 0;
+  long max_labellings = bsh::ExtractOptions().brute_force_limit;
   double time_limit = 0;
   int precision_bits = 2048;
   int max_ties = 16;
@@ -54,7 +56,9 @@ std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bs
   else
     out << r.ties.count << (r.ties.capped ? "+" : "")
         << (r.ties.count > 1 ? (r.ties.certified ? " (proven equal energies)" : " (not separated at the precision cap)")
+                             : r.ties.capped ? ""
                              : (r.ties.certified ? " (unique)" : " (unique up to unseparated comparisons)"));
+  if (r.ties.capped) out << ", enumeration stopped by " << r.ties.stopped_by << ": there may be more";
   const auto boundary = bsh::boundary_supports(problem, r.labelling);
   out << "\nboundary " << boundary.size() << " patch" << (boundary.size() == 1 ? "" : "es") << ":";
   for (int g : boundary) {
@@ -73,12 +77,14 @@ void run_extract(const ExtractCommandOptions& o) {
   if (!method) throw InputError("--method: unknown method \"" + o.method + "\" (graphcut, beam, best-first, brute-force)");
   if (o.beam_width < 1) throw InputError("--beam-width: must be at least 1");
   if (o.max_states < 0) throw InputError("--max-states: must be >= 0");
+  if (o.max_graph_cuts < 0) throw InputError("--max-graph-cuts: must be >= 0");
+  if (o.max_labellings < 1) throw InputError("--max-labellings: must be at least 1");
   if (o.time_limit < 0) throw InputError("--time-limit: must be >= 0");
   if (o.precision_bits < 64) throw InputError("--precision: at least 64 bits");
   OutputFiles out;  // checked before computing, written all or none at the end
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
-  const LoadedInput in = load_input(o.input, o.limits);
+  const LoadedInput in = load_input(o.input, o.arrangement);
   if (!o.svg_path.empty() && !in.scene)
     throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
 
@@ -86,6 +92,8 @@ void run_extract(const ExtractCommandOptions& o) {
   options.method = *method;
   options.beam_width = o.beam_width;
   options.max_states = o.max_states;
+  options.max_graph_cuts = o.max_graph_cuts;
+  options.brute_force_limit = o.max_labellings;
   options.time_limit = o.time_limit;
   options.max_ties = o.max_ties;
   options.compare.max_bits = o.precision_bits;
@@ -131,8 +139,16 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("INPUT", o->input, "hsx-scene/1 or hsx-complex/1 JSON file")->required();
   cmd->add_option("--method", o->method, "graphcut | beam | best-first | brute-force (default beam)");
   cmd->add_option("--beam-width", o->beam_width, "K for the beam search (default 1, as in the paper)");
-  cmd->add_option("--max-states", o->max_states, "stop after expanding N states (0: no limit)");
-  cmd->add_option("--time-limit", o->time_limit, "stop after S seconds (0: no limit)")->check(seconds());
+  cmd->add_option("--max-states", o->max_states, "stop after expanding N states (0: no limit; deterministic)");
+  cmd->add_option("--max-graph-cuts", o->max_graph_cuts, "stop after N graph cuts (0: no limit; deterministic)");
+  cmd->add_option("--time-limit", o->time_limit,
+                  "stop after S seconds of search (0: no limit; reading and arranging the input are not counted), "
+                  "brute force included; where it stops, hence the result, depends on the machine's speed and "
+                  "load: --max-states and --max-graph-cuts do not")
+      ->check(seconds());
+  cmd->add_option("--max-labellings", o->max_labellings,
+                  "brute force: refuse (exit 2) inputs with more than N orientation-preserving labellings "
+                  "(default 4194304)");
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons (default 2048)");
   cmd->add_option("--max-ties", o->max_ties, "stop enumerating optimal boundaries after N (default 16)")
       ->check(CLI::Range(1, 1 << 30));
@@ -143,7 +159,7 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("--json", o->json_path, "write the hsx-result/1 document ('-' for stdout)")->check(output_path());
   cmd->add_flag("--no-timing", o->no_timing, "leave seconds out of the JSON (byte-reproducible output)");
   cmd->add_flag("-q,--quiet", o->quiet, "no summary, no progress");
-  add_arrangement_limits(cmd, o->limits);
+  add_arrangement_limits(cmd, o->arrangement);
   cmd->callback([o] { run_extract(*o); });
 }
 

@@ -218,6 +218,9 @@ NhrepReference read_references(const NhtreeOptions& o) {
 int run_mesh(const NhtreeOptions& o, OutputFiles& files) {
   if (o.fea_path.empty()) throw InputError("nhtree: a mesh needs its feature edges: --fea FILE");
   if (!o.svg_path.empty()) throw InputError("nhtree: --svg draws 2D solids only");
+  if (!o.solid.csg.empty() || !o.solid.shape_path.empty())
+    throw InputError(std::string("nhtree: ") + (o.solid.csg.empty() ? "--shape" : "--csg") +
+                     " gives a 2D solid on a scene; a mesh (.obj) is its own solid");
   const std::string sharp_text = !o.sharp_angle.empty() ? o.sharp_angle : o.nhrep_tool ? "20" : "0";
   std::string why;
   const std::optional<Rational> parsed = parse_rational(sharp_text, &why);

@@ -3,6 +3,10 @@
 #include <hsx/io/json_values.hpp>
 #include <hsx/geometry/scene.hpp>
 
+#include <boost/uuid/detail/sha1.hpp>
+
+#include <cstdio>
+
 namespace hsx {
 
 std::vector<int> patches_of_supports(const Complex& complex, const std::vector<char>& supports) {
@@ -14,18 +18,57 @@ std::vector<int> patches_of_supports(const Complex& complex, const std::vector<c
   return out;
 }
 
-std::vector<char> read_result_labelling(const nlohmann::json& doc, int cell_count) {
+std::string complex_identity(const Complex& c) {
+  std::string text = "hsx-complex-id/1\ndimension " + std::to_string(c.dimension) + "\nhalfspaces " +
+                     std::to_string(c.halfspace_names.size()) + "\n";
+  for (const std::string& name : c.halfspace_names) text += nlohmann::json(name).dump() + "\n";
+  text += "cells " + std::to_string(c.cells.size()) + "\n";
+  for (const Cell& cell : c.cells) {
+    text += cell.outer ? "1 " : "0 ";
+    for (char in : cell.inside) text += in ? '1' : '0';
+    text += '\n';
+  }
+  text += "patches " + std::to_string(c.patches.size()) + "\n";
+  for (const Patch& p : c.patches) {
+    text += std::to_string(p.halfspace) + " " + std::to_string(p.inside_cell) + " " + std::to_string(p.outside_cell) +
+            " :";
+    for (int j : p.junctions) text += " " + std::to_string(j);
+    text += '\n';
+  }
+  text += "supports " + std::to_string(c.supports.size()) + "\n";
+  for (const std::vector<int>& group : c.supports) {
+    for (std::size_t k = 0; k < group.size(); ++k) text += (k ? " " : "") + std::to_string(group[k]);
+    text += '\n';
+  }
+  boost::uuids::detail::sha1 sha;
+  sha.process_bytes(text.data(), text.size());
+  boost::uuids::detail::sha1::digest_type digest;
+  sha.get_digest(digest);
+  char hex[41];
+  for (int k = 0; k < 5; ++k) std::snprintf(hex + 8 * k, 9, "%08x", static_cast<unsigned>(digest[k]));
+  return std::string("sha1:") + hex;
+}
+
+std::vector<char> read_result_labelling(const nlohmann::json& doc, const Complex& complex) {
   if (!doc.is_object() || !doc.contains("format") || doc.at("format") != kResultFormat)
     throw InputError("format: expected \"" + std::string(kResultFormat) + "\"");
+  const std::string identity = complex_identity(complex);
+  if (!doc.contains("complex_id") || !doc.at("complex_id").is_string())
+    throw InputError("complex_id: missing (a result names cells of the input it was computed from; this one does "
+                     "not say which: compute it again with hsx extract)");
+  if (doc.at("complex_id").get<std::string>() != identity)
+    throw InputError("complex_id: " + doc.at("complex_id").get<std::string>() +
+                     " is not this input's (" + identity + "): the result was computed from another scene or complex");
   if (!doc.contains("inside_cells") || !doc.at("inside_cells").is_array())
     throw InputError("inside_cells: expected an array of cell ids");
+  const int cell_count = static_cast<int>(complex.cells.size());
   std::vector<char> labelling(cell_count, 0);
   const auto& cells = doc.at("inside_cells");
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const auto& v = cells[k];
     if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= cell_count)
-      throw InputError("inside_cells[" + std::to_string(k) + "]: not a cell of this scene's arrangement (it has " +
-                       std::to_string(cell_count) + " cells); was the result computed from another scene?");
+      throw InputError("inside_cells[" + std::to_string(k) + "]: not a cell id of this input (it has " +
+                       std::to_string(cell_count) + " cells)");
     labelling[v.get<long long>()] = 1;
   }
   return labelling;
@@ -88,6 +131,7 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
   const Complex& c = problem.complex();
   nlohmann::json j;
   j["format"] = kResultFormat;
+  j["complex_id"] = complex_identity(c);
   j["method"] = bsh::to_string(r.method);
   j["optimal"] = r.optimal;
   if (!r.stopped_by.empty()) j["stopped_by"] = r.stopped_by;
@@ -99,6 +143,7 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
                {"checked", r.ties.checked},
                {"certified", r.ties.certified},
                {"capped", r.ties.capped}};
+  if (!r.ties.stopped_by.empty()) j["ties"]["stopped_by"] = r.ties.stopped_by;
   j["boundary"] = boundary_json(problem, r.labelling, geometry);
   j["inside_cells"] = cells_json(r.labelling);
   j["removed_patches"] = patches_of_supports(c, r.removed);

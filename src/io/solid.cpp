@@ -12,9 +12,9 @@ Solid load_solid(const LoadedInput& in, const SolidSource& source) {
   Solid solid;
   const Complex& complex = in.complex();
   if (!source.shape_path.empty()) {
+    const nlohmann::json document = read_exact_json_file(source.shape_path);  // its errors name the path
     try {
-      solid.cells = read_result_labelling(read_exact_json_file(source.shape_path),
-                                          static_cast<int>(complex.cells.size()));
+      solid.cells = read_result_labelling(document, complex);
     } catch (const InputError& e) {
       throw InputError(source.shape_path + ": " + e.what());
     }

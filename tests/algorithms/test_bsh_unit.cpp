@@ -936,6 +936,39 @@ TEST_CASE("bsh unit: Fig. 6 (generic) - a perfect square gives two optimal bound
   CHECK(rp.labelling == two);
 }
 
+TEST_CASE("bsh unit: limits - the labelling limit refuses, a limit on the ties keeps the optimum proven",
+          "[bsh][unit][limits]") {
+  // The three rooms of Fig. 6: labellings {}, {A}, {B}, {A, B}, {A, M, B} (M needs both), two of them optimal.
+  ThreeRooms f;
+  for (int p : {f.p0, f.p1, f.p2, f.p3, f.p4, f.p5}) f.h.sample(p);
+  const Problem problem(f.h.done());
+  CHECK(brute_force(problem, true, 5).enumerated == 5);
+  CHECK_THROWS_WITH(brute_force(problem, true, 4), Catch::Contains("more than 4 orientation-preserving"));
+  // A and B are independent: 2^2 > 3 is known before enumerating.
+  CHECK_THROWS_WITH(brute_force(problem, true, 3), Catch::Contains("at least 2^2"));
+  CHECK_THROWS_AS(brute_force(problem, true, 3), LabellingLimitExceeded);
+  ExtractOptions o;
+  o.method = Method::BruteForce;
+  o.brute_force_limit = 4;
+  CHECK_THROWS_AS(extract(problem, o), InputError);  // exit 2 in the program, not an internal error
+
+  o.method = Method::BestFirst;
+  o.certify_limit = 0;
+  o.max_ties = 1;
+  ExtractResult r = extract(problem, o);
+  CHECK(r.optimal);
+  CHECK(r.stopped_by.empty());
+  CHECK(r.ties.capped);
+  CHECK(r.ties.stopped_by == "max-ties");
+  o.max_ties = 16;
+  o.max_graph_cuts = 1;
+  r = extract(problem, o);
+  CHECK_FALSE(r.optimal);
+  CHECK(r.stopped_by == "max-graph-cuts");
+  CHECK(r.stats.graph_cuts == 1);
+  CHECK(r.sample_connected);
+}
+
 TEST_CASE("bsh unit: Fig. 6 with T-junctions - the oracle certifies the tie where the search is not proven",
           "[bsh][unit][ties]") {
   Fig6 f(M(2), M(2));

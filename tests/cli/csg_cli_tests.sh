@@ -203,12 +203,14 @@ cat >"$TMP/cring.json" <<'EOF'
                   [2, -0.5], [2, -2], [-2, -2], [-2, 2], [2, 2], [2, 0.5]]},
                 {"name": "D", "kind": "disk", "center": [2.5, 0], "radius": 1}]}
 EOF
-if run 0 "arrange the C ring" "$HSX" arrange "$TMP/cring.json" --json "$TMP/cringc.json"; then
-  python3 - "$TMP/cringc.json" "$TMP/hole.json" <<'EOF'
+if run 0 "arrange the C ring" "$HSX" arrange "$TMP/cring.json" --json "$TMP/cringc.json" &&
+   run 0 "extract the C ring (for its complex_id)" "$HSX" extract "$TMP/cring.json" -q --json "$TMP/cringr.json"; then
+  python3 - "$TMP/cringc.json" "$TMP/hole.json" "$TMP/cringr.json" <<'EOF'
 import json, sys
 d = json.load(open(sys.argv[1]))
 hole = [c["id"] for c in d["cells"] if c["inside"] == [] and not c["outer"]]
-json.dump({"format": "hsx-result/1", "inside_cells": hole}, open(sys.argv[2], "w"))
+json.dump({"format": "hsx-result/1", "complex_id": json.load(open(sys.argv[3]))["complex_id"], "inside_cells": hole},
+          open(sys.argv[2], "w"))
 EOF
   rm -f "$TMP/hole.scad"
   if run 3 "csg hole --separators --openscad: exit 3" "$HSX" csg "$TMP/cring.json" --shape "$TMP/hole.json" \
@@ -355,7 +357,7 @@ run 2 "csg: neither --shape nor --csg" "$HSX" csg "$FIG/fig02-5.json" --json "$T
 run 0 "extract fig03-a" "$HSX" extract "$FIG/fig03-a.json" --json "$TMP/r3a.json"
 if [[ "$(field "$TMP/r3a.json" 'max(d["inside_cells"])')" -ge 6 ]]; then
   run 2 "csg: --shape from another scene" "$HSX" csg "$FIG/fig02-5.json" --shape "$TMP/r3a.json" --json "$TMP/bad.json" &&
-    err_names "r3a.json" "inside_cells" "another scene"
+    err_names "r3a.json" "complex_id" "another scene"
   run 2 "describe: --shape from another scene" "$HSX" describe "$FIG/fig02-5.json" --shape "$TMP/r3a.json" &&
     err_names "r3a.json" "another scene"
   run 2 "samples: --target from another scene" "$HSX" samples "$FIG/fig02-5.json" --target "$TMP/r3a.json" \

@@ -69,7 +69,15 @@ TEST_CASE("facade: the JSON writers round-trip through the readers", "[facade]")
   CHECK(back.patches.size() == in.complex().patches.size());
   const bsh::ExtractResult shape = extract_shape(in.complex());
   const std::string result_text = result_json_text(in.complex(), shape, in.pieces());
-  CHECK(read_result_labelling(nlohmann::json::parse(result_text), static_cast<int>(in.complex().cells.size())) ==
-        shape.labelling);
+  CHECK(read_result_labelling(nlohmann::json::parse(result_text), in.complex()) == shape.labelling);
+  // The result carries its input's identity: the complex read back from JSON has the same, another scene not.
+  CHECK(complex_identity(back) == complex_identity(in.complex()));
+  CHECK(read_result_labelling(nlohmann::json::parse(result_text), back) == shape.labelling);
+  const LoadedInput other = load_input(scene_path("star.json"));
+  CHECK_THROWS_WITH(read_result_labelling(nlohmann::json::parse(result_text), other.complex()),
+                    Catch::Contains("computed from another scene or complex"));
+  nlohmann::json anonymous = nlohmann::json::parse(result_text);
+  anonymous.erase("complex_id");
+  CHECK_THROWS_WITH(read_result_labelling(anonymous, in.complex()), Catch::Contains("complex_id: missing"));
   CHECK(result_text == result_json_text(in.complex(), shape, in.pieces()));  // no seconds: reproducible bytes
 }

@@ -1,8 +1,10 @@
 // The `hsx-result/1` document: a shape (a labelled complex) and how it was found. Fields as
 // shared/spec/scene-format.md requires, plus what a reader needs to check it:
-//   {"format": "hsx-result/1", "method", "optimal", "stopped_by"?,
+//   {"format": "hsx-result/1", "complex_id", "method", "optimal", "stopped_by"?,
 //    "energy": {"missing_samples", "measure": M}, "area": M, "sample_connected",
-//    "ties": {"count", "checked", "certified", "capped"},
+//    "ties": {"count", "checked", "certified", "capped", "stopped_by"?},  stopped_by ("max-ties", "time-limit",
+//      "max-states", "max-graph-cuts") says why a capped enumeration stopped; the top-level "stopped_by" names
+//      a limit that stopped the search for the optimum itself (then "optimal" is false)
 //    "boundary": [{"patch", "halfspace", "coincident": [names], "pieces": [{"from": P, "to": P,
 //                  "shape": "segment"|"arc", ("center", "radius", "ccw")}]}],   pieces run with the shape on
 //                  their left; pieces are omitted when the complex has no geometry
@@ -10,6 +12,8 @@
 //    "stats": {"graph_cuts", "uncertified_cuts", "states_expanded", "states_created", "max_queue",
 //              "labellings_enumerated", "seconds"}}
 // M = {"decimal", "exact"}; P = [x, y] exact strings.
+// "complex_id" is the identity of the input the cell ids refer to (complex_identity below); a reader refuses a
+// result whose identity is not that of its own input.
 #pragma once
 
 #include <hsx/algorithms/bsh/extract.hpp>
@@ -34,9 +38,24 @@ struct PlanarPieces {
 nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractResult& result,
                               const PlanarPieces& geometry, bool include_seconds = true);
 
-/// The inside cells of an hsx-result/1 document, as a labelling of a complex with `cell_count` cells. Throws
-/// InputError naming the field when the document is not a result or does not fit the complex.
-std::vector<char> read_result_labelling(const nlohmann::json& document, int cell_count);
+/// The identity of a complex: "sha1:" and the SHA-1 (40 hex digits) of its canonical text, which holds what a
+/// result's cell ids mean and nothing else, one item per line ('\n'), numbers in decimal:
+///   hsx-complex-id/1
+///   dimension D
+///   halfspaces H, then each name as a JSON string
+///   cells C, then per cell: "1" or "0" (outer), a space, and its inside flag per halfspace as 0/1 digits
+///   patches P, then per patch: halfspace inside_cell outside_cell, then " :" and its junction ids
+///   supports S, then per support group its patch ids
+/// Ids are positions in the lists. So a scene and the hsx-complex/1 document `hsx arrange --json` writes of it have
+/// the same identity, and so do scenes that differ only in their samples (a result names cells, a solid of the
+/// arrangement, whatever samples chose it); geometry that moves without changing any cell's sign vector or any
+/// adjacency keeps it too (the cells are then the same sign-vector regions).
+std::string complex_identity(const Complex& complex);
+
+/// The inside cells of an hsx-result/1 document as a labelling of `complex`. Throws InputError naming the field
+/// when the document is not a result, was computed from another input (its complex_id differs from
+/// complex_identity(complex), or it has none), or names a cell the complex does not have.
+std::vector<char> read_result_labelling(const nlohmann::json& document, const Complex& complex);
 
 /// Patches of the supports flagged in `supports` (per support), ascending.
 std::vector<int> patches_of_supports(const Complex& complex, const std::vector<char>& supports);

@@ -3,6 +3,9 @@
 #include <hsx/algorithms/bsh/samples.hpp>
 
 #include <algorithm>
+#include <chrono>
+#include <limits>
+#include <optional>
 #include <map>
 #include <sstream>
 
@@ -13,6 +16,7 @@ const char* to_string(CheckResult::Status s) {
     case CheckResult::Pass: return "pass";
     case CheckResult::Fail: return "FAIL";
     case CheckResult::Skipped: return "skipped";
+    case CheckResult::Stopped: return "stopped";
   }
   return "?";
 }
@@ -79,7 +83,7 @@ Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelli
   return with_samples_on(complex, patches);
 }
 
-CheckResult check_prop41(const Complex& complex, const Labelling& labelling, const CompareOptions& compare) {
+CheckResult check_prop41(const Complex& complex, const Labelling& labelling, const ExtractOptions& limits) {
   CheckResult r{"Prop. 4.1 (one sample per patch reproduces b)", CheckResult::Pass, ""};
   const Complex sampled = with_one_sample_per_boundary_patch(complex, labelling);
   const Problem problem(sampled);
@@ -89,10 +93,18 @@ CheckResult check_prop41(const Complex& complex, const Labelling& labelling, con
     r.witness = "the labelling is not orientation-preserving: " + why;
     return r;
   }
-  ExtractOptions options;
+  ExtractOptions options = limits;
   options.method = Method::BestFirst;
-  options.compare = compare;
+  options.enumerate_ties = true;
+  options.record_states = false;
+  options.progress = nullptr;
   const ExtractResult result = extract(problem, options);
+  if (!result.stopped_by.empty() || (result.ties.capped && result.ties.count == 1)) {
+    r.status = CheckResult::Stopped;
+    r.witness = "best-first with " + std::to_string(sampled.samples.size()) + " samples stopped by " +
+                (result.stopped_by.empty() ? result.ties.stopped_by : result.stopped_by);
+    return r;
+  }
   if (result.labelling != labelling || result.ties.count != 1) {
     r.status = CheckResult::Fail;
     r.witness = "with " + std::to_string(sampled.samples.size()) + " samples best-first returned cells " +
@@ -124,139 +136,239 @@ CheckResult check_manifold_parity(const Problem& problem, const Labelling& label
   return r;
 }
 
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The limits of one check_all run: a shared clock for the time limit, the per-search limits.
+class CheckBudget {
+ public:
+  explicit CheckBudget(const CheckOptions& options) : options_(options), start_(Clock::now()) {}
+  /// Seconds left (infinity without a time limit, <= 0 when spent).
+  double seconds_left() const {
+    if (options_.time_limit <= 0) return std::numeric_limits<double>::infinity();
+    return options_.time_limit - std::chrono::duration<double>(Clock::now() - start_).count();
+  }
+  bool spent() const { return seconds_left() <= 0; }
+  /// A search's options with the limits (the time limit is what is left of it).
+  ExtractOptions search(Method method) const {
+    ExtractOptions o;
+    o.method = method;
+    o.compare = options_.compare;
+    o.max_states = options_.max_states;
+    o.max_graph_cuts = options_.max_graph_cuts;
+    o.time_limit = options_.time_limit > 0 ? std::max(seconds_left(), 1e-9) : 0;
+    return o;
+  }
+  BruteForceOptions oracle() const {
+    return {options_.brute_force_limit, options_.compare, options_.time_limit > 0 ? std::max(seconds_left(), 1e-9) : 0};
+  }
+  const CheckOptions& options() const { return options_; }
+
+ private:
+  const CheckOptions& options_;
+  Clock::time_point start_;
+};
+
+CheckResult skipped_for_time(const std::string& name) {
+  return {name, CheckResult::Skipped, "the time limit was spent before this check"};
+}
+
+CheckResult check_existence(const Problem& problem) {
+  // Existence (Section 4.1): the empty boundary is admissible, and the admissible set is finite.
+  CheckResult r{"Sec. 4.1 (existence)", CheckResult::Pass, ""};
+  const Labelling empty(problem.cell_count(), 0);
+  std::string why;
+  if (!is_orientation_preserving(problem, empty, &why) || !sample_connectivity(problem, empty).sample_connected()) {
+    r.status = CheckResult::Fail;
+    r.witness = "the empty boundary is not admissible: " + why;
+  } else {
+    r.witness = "the empty boundary is orientation-preserving and sample-connected; " +
+                std::to_string(problem.support_count()) + " supports bound the candidate set";
+  }
+  return r;
+}
+
+/// Prop. 5.2: best-first = brute force. Sets `reference` to the oracle's optimum when it ran to the end.
+CheckResult check_prop52(const Problem& problem, const ExtractResult& best, const CheckBudget& budget,
+                         Labelling& reference) {
+  const std::string name = "Prop. 5.2 (best-first = brute force)";
+  CheckResult r{name, CheckResult::Pass, ""};
+  const CompareOptions& compare = budget.options().compare;
+  const std::string genericity = problem.non_generic_junctions().empty()
+                                     ? ""
+                                     : " [" + std::to_string(problem.non_generic_junctions().size()) +
+                                           " non-generic junction(s): the proposition is not guaranteed]";
+  if (!best.stopped_by.empty()) {
+    r.status = CheckResult::Stopped;
+    r.witness = "best-first stopped by " + best.stopped_by + " after " + std::to_string(best.stats.states_expanded) +
+                " states, before proving an optimum";
+    return r;
+  }
+  if (budget.spent()) return skipped_for_time(name);
+  BruteForceResult bf;
+  try {
+    bf = brute_force(problem, true, budget.oracle());
+  } catch (const LabellingLimitExceeded& e) {
+    r.status = CheckResult::Skipped;
+    r.witness = e.what();
+    return r;
+  }
+  if (bf.stopped) {
+    r.status = CheckResult::Stopped;
+    r.witness = "brute force stopped by time-limit after " + std::to_string(bf.enumerated) + " labellings";
+    return r;
+  }
+  reference = bf.optimal.front();
+  const Order o = bsh::compare(best.energy, bf.energy, compare);
+  const bool same = std::find(bf.optimal.begin(), bf.optimal.end(), best.labelling) != bf.optimal.end();
+  // A capped tie count is a lower bound: it may only be at most the oracle's.
+  const int oracle_ties = static_cast<int>(bf.optimal.size());
+  const bool ties_differ = best.ties.checked && (best.ties.capped ? best.ties.count > oracle_ties
+                                                                  : best.ties.count != oracle_ties);
+  if (o == Order::Less || o == Order::Greater || !same || ties_differ) {
+    r.status = CheckResult::Fail;
+    r.witness = "best-first " + energy_text(best.energy) + " cells " + cells_text(best.labelling) + " (ties " +
+                std::to_string(best.ties.count) + (best.ties.capped ? "+" : "") + "); brute force " +
+                energy_text(bf.energy) + " cells " + cells_text(bf.optimal.front()) + " (ties " +
+                std::to_string(oracle_ties) + ")" + genericity;
+  } else {
+    r.witness = "energy " + energy_text(best.energy) + " over " + std::to_string(bf.enumerated) +
+                " orientation-preserving labellings; " + std::to_string(best.stats.states_expanded) +
+                " states expanded" +
+                (best.ties.capped ? "; ties " + std::to_string(best.ties.count) + "+ (best-first stopped by " +
+                                        best.ties.stopped_by + ") of " + std::to_string(oracle_ties)
+                                  : "") +
+                genericity;
+  }
+  return r;
+}
+
+/// Prop. 5.1 on every expanded state that was not sample-connected, against the sample-connected `reference`.
+CheckResult check_prop51_on_states(const Problem& problem, const ExtractResult& best, const Labelling& reference) {
+  CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
+  long checked = 0;
+  for (const Labelling& state : best.expanded) {
+    if (sample_connectivity(problem, state).sample_connected()) continue;
+    ++checked;
+    CheckResult one = check_prop51(problem, state, reference);
+    if (one.status == CheckResult::Fail) {
+      r = one;
+      r.witness = "state " + cells_text(state) + ": " + one.witness;
+      return r;
+    }
+  }
+  r.witness = std::to_string(checked) + " non-sample-connected state(s)";
+  if (!best.stopped_by.empty()) {
+    r.status = CheckResult::Stopped;
+    r.witness += " hold; best-first was stopped by " + best.stopped_by + ", so not every state was checked";
+  }
+  return r;
+}
+
+/// Beam K = 1: admissible and never better than the optimum.
+CheckResult check_beam(const Problem& problem, const ExtractResult& beam, const ExtractResult& best,
+                       const CompareOptions& compare) {
+  CheckResult r{"Beam K=1 (admissible, energy >= optimum)", CheckResult::Pass, ""};
+  if (!beam.stopped_by.empty() || !best.stopped_by.empty()) {
+    r.status = CheckResult::Stopped;
+    r.witness = beam.stopped_by.empty() ? "best-first (the optimum) stopped by " + best.stopped_by
+                                          : "beam stopped by " + beam.stopped_by;
+    return r;
+  }
+  std::string why;
+  const Order o = bsh::compare(beam.energy, best.energy, compare);
+  if (!is_orientation_preserving(problem, beam.labelling, &why) || !beam.sample_connected || o == Order::Less) {
+    r.status = CheckResult::Fail;
+    r.witness = "beam " + energy_text(beam.energy) + " vs optimum " + energy_text(best.energy) + " " + why;
+  } else {
+    r.witness = std::string(o == Order::Greater ? "sub-optimal: " : "optimal: ") + energy_text(beam.energy);
+  }
+  return r;
+}
+
+/// Uniqueness (Section 4.2) or a reported tie.
+CheckResult check_uniqueness(const ExtractResult& best) {
+  CheckResult r{"Sec. 4.2 (uniqueness or reported tie)", CheckResult::Pass, ""};
+  const bool cut = best.ties.capped && best.ties.stopped_by != "max-ties";
+  if (!best.stopped_by.empty() || (cut && best.ties.count == 1)) {
+    r.status = CheckResult::Stopped;
+    r.witness = "best-first stopped by " + (best.stopped_by.empty() ? best.ties.stopped_by : best.stopped_by) +
+                (best.stopped_by.empty() ? " while enumerating ties" : "");
+  } else if (!best.ties.checked) {
+    r.status = CheckResult::Skipped;
+    r.witness = "ties not enumerated";
+  } else if (best.ties.count == 1) {
+    r.witness = best.ties.certified ? "unique" : "unique up to unseparated comparisons";
+  } else {
+    r.witness = std::to_string(best.ties.count) + (best.ties.capped ? "+" : "") + " optimal boundaries, " +
+                (best.ties.certified ? "proven equal" : "not separated at the precision cap") +
+                (best.ties.capped ? " (enumeration stopped by " + best.ties.stopped_by + ")" : "");
+  }
+  return r;
+}
+
+/// Every graph cut certified (flow feasible, value = energy).
+CheckResult check_certificates(const Complex& complex, const ExtractResult& best, const ExtractResult* beam) {
+  CheckResult r{"Eqs. 2-4 (every graph cut certified)", CheckResult::Pass, ""};
+  const long cuts = best.stats.graph_cuts + (beam ? beam->stats.graph_cuts : 0);
+  const long bad = best.stats.uncertified_cuts + (beam ? beam->stats.uncertified_cuts : 0);
+  r.witness = std::to_string(cuts - bad) + " of " + std::to_string(cuts) + " cuts certified";
+  // With curved boundaries a certificate may fail only because equal-looking measures did not separate;
+  // with straight ones every comparison is exact, so an uncertified cut is a failure.
+  const bool curved = std::any_of(complex.patches.begin(), complex.patches.end(),
+                                  [](const Patch& p) { return p.measure.has_special_terms(); });
+  if (bad) {
+    r.status = curved ? CheckResult::Skipped : CheckResult::Fail;
+    if (curved) r.witness += " (curved boundaries: unseparated comparisons)";
+  }
+  return r;
+}
+
+}  // namespace
+
 std::vector<CheckResult> check_all(const Complex& complex, long brute_force_limit, const CompareOptions& compare) {
+  CheckOptions options;
+  options.brute_force_limit = brute_force_limit;
+  options.compare = compare;
+  return check_all(complex, options);
+}
+
+std::vector<CheckResult> check_all(const Complex& complex, const CheckOptions& options) {
+  const CheckBudget budget(options);
   std::vector<CheckResult> out;
   const Problem problem(complex);
+  out.push_back(check_existence(problem));
 
-  // Existence (Section 4.1): the empty boundary is admissible, and the admissible set is finite.
-  {
-    CheckResult r{"Sec. 4.1 (existence)", CheckResult::Pass, ""};
-    const Labelling empty(problem.cell_count(), 0);
-    std::string why;
-    if (!is_orientation_preserving(problem, empty, &why) ||
-        !sample_connectivity(problem, empty).sample_connected()) {
-      r.status = CheckResult::Fail;
-      r.witness = "the empty boundary is not admissible: " + why;
-    } else {
-      r.witness = "the empty boundary is orientation-preserving and sample-connected; " +
-                  std::to_string(problem.support_count()) + " supports bound the candidate set";
-    }
-    out.push_back(r);
-  }
-
-  ExtractOptions best_options;
-  best_options.method = Method::BestFirst;
-  best_options.compare = compare;
+  ExtractOptions best_options = budget.search(Method::BestFirst);
   best_options.record_states = true;
   best_options.certify_limit = 0;  // check the search itself, not its oracle-backed fallback
   const ExtractResult best = extract(problem, best_options);
 
-  // The reference optimum for the checks below: the oracle's when it is small enough, else best-first's.
+  // The reference optimum for the checks below: the oracle's when it ran, else best-first's.
   Labelling reference = best.labelling;
-  // Prop. 5.2: best-first = brute force.
-  {
-    CheckResult r{"Prop. 5.2 (best-first = brute force)", CheckResult::Pass, ""};
-    const std::string genericity = problem.non_generic_junctions().empty()
-                                       ? ""
-                                       : " [" + std::to_string(problem.non_generic_junctions().size()) +
-                                             " non-generic junction(s): the proposition is not guaranteed]";
-    try {
-      const BruteForceResult bf = brute_force(problem, true, brute_force_limit, compare);
-      reference = bf.optimal.front();
-      const Order o = bsh::compare(best.energy, bf.energy, compare);
-      const bool same = std::find(bf.optimal.begin(), bf.optimal.end(), best.labelling) != bf.optimal.end();
-      if (o == Order::Less || o == Order::Greater || !same ||
-          (best.ties.checked && static_cast<int>(bf.optimal.size()) != best.ties.count)) {
-        r.status = CheckResult::Fail;
-        r.witness = "best-first " + energy_text(best.energy) + " cells " + cells_text(best.labelling) + " (ties " +
-                    std::to_string(best.ties.count) + "); brute force " + energy_text(bf.energy) + " cells " +
-                    cells_text(bf.optimal.front()) + " (ties " + std::to_string(bf.optimal.size()) + ")" + genericity;
-      } else {
-        r.witness = "energy " + energy_text(best.energy) + " over " + std::to_string(bf.enumerated) +
-                    " orientation-preserving labellings; " + std::to_string(best.stats.states_expanded) +
-                    " states expanded" + genericity;
-      }
-    } catch (const std::runtime_error& e) {
-      r.status = CheckResult::Skipped;
-      r.witness = e.what();
-    }
-    out.push_back(r);
+  out.push_back(check_prop52(problem, best, budget, reference));
+  out.push_back(check_prop51_on_states(problem, best, reference));
+
+  std::optional<ExtractResult> beam;
+  if (budget.spent()) {
+    out.push_back(skipped_for_time("Beam K=1 (admissible, energy >= optimum)"));
+  } else {
+    beam = extract(problem, budget.search(Method::Beam));
+    out.push_back(check_beam(problem, *beam, best, options.compare));
   }
 
-  // Prop. 5.1 on every expanded state that was not sample-connected.
-  {
-    CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
-    long checked = 0;
-    for (const Labelling& state : best.expanded) {
-      if (sample_connectivity(problem, state).sample_connected()) continue;
-      ++checked;
-      CheckResult one = check_prop51(problem, state, reference);
-      if (one.status == CheckResult::Fail) {
-        r = one;
-        r.witness = "state " + cells_text(state) + ": " + one.witness;
-        break;
-      }
-    }
-    if (r.status == CheckResult::Pass) r.witness = std::to_string(checked) + " non-sample-connected state(s)";
-    out.push_back(r);
-  }
-
-  // Beam K = 1: admissible and never better than the optimum.
-  ExtractOptions beam_options;
-  beam_options.method = Method::Beam;
-  beam_options.compare = compare;
-  const ExtractResult beam = extract(problem, beam_options);
-  {
-    CheckResult r{"Beam K=1 (admissible, energy >= optimum)", CheckResult::Pass, ""};
-    std::string why;
-    const Order o = bsh::compare(beam.energy, best.energy, compare);
-    if (!is_orientation_preserving(problem, beam.labelling, &why) || !beam.sample_connected || o == Order::Less) {
-      r.status = CheckResult::Fail;
-      r.witness = "beam " + energy_text(beam.energy) + " vs optimum " + energy_text(best.energy) + " " + why;
-    } else {
-      r.witness = std::string(o == Order::Greater ? "sub-optimal: " : "optimal: ") + energy_text(beam.energy);
-    }
-    out.push_back(r);
-  }
-
-  // Prop. 4.1 on the optimum and on the beam result.
-  out.push_back(check_prop41(complex, best.labelling, compare));
+  // Prop. 4.1 on the optimum and on the beam result (any orientation-preserving boundary will do).
+  const std::string prop41 = "Prop. 4.1 (one sample per patch reproduces b)";
+  out.push_back(budget.spent() ? skipped_for_time(prop41)
+                               : check_prop41(complex, best.labelling, budget.search(Method::BestFirst)));
   out.back().name += " on the optimum";
-  out.push_back(check_prop41(complex, beam.labelling, compare));
+  out.push_back(!beam || budget.spent() ? skipped_for_time(prop41)
+                                        : check_prop41(complex, beam->labelling, budget.search(Method::BestFirst)));
   out.back().name += " on the beam result";
 
-  // Uniqueness (Section 4.2) or a reported tie.
-  {
-    CheckResult r{"Sec. 4.2 (uniqueness or reported tie)", CheckResult::Pass, ""};
-    if (!best.ties.checked) {
-      r.status = CheckResult::Skipped;
-      r.witness = "ties not enumerated";
-    } else if (best.ties.count == 1) {
-      r.witness = best.ties.certified ? "unique" : "unique up to unseparated comparisons";
-    } else {
-      r.witness = std::to_string(best.ties.count) + (best.ties.capped ? "+" : "") + " optimal boundaries, " +
-                  (best.ties.certified ? "proven equal" : "not separated at the precision cap");
-    }
-    out.push_back(r);
-  }
-
-  // Every graph cut certified (flow feasible, value = energy).
-  {
-    CheckResult r{"Eqs. 2-4 (every graph cut certified)", CheckResult::Pass, ""};
-    const long cuts = best.stats.graph_cuts + beam.stats.graph_cuts;
-    const long bad = best.stats.uncertified_cuts + beam.stats.uncertified_cuts;
-    r.witness = std::to_string(cuts - bad) + " of " + std::to_string(cuts) + " cuts certified";
-    // With curved boundaries a certificate may fail only because equal-looking measures did not separate;
-    // with straight ones every comparison is exact, so an uncertified cut is a failure.
-    const bool curved = std::any_of(complex.patches.begin(), complex.patches.end(),
-                                    [](const Patch& p) { return p.measure.has_special_terms(); });
-    if (bad) {
-      r.status = curved ? CheckResult::Skipped : CheckResult::Fail;
-      if (curved) r.witness += " (curved boundaries: unseparated comparisons)";
-    }
-    out.push_back(r);
-  }
-
+  out.push_back(check_uniqueness(best));
+  out.push_back(check_certificates(complex, best, beam ? &*beam : nullptr));
   out.push_back(check_manifold_parity(problem, best.labelling));
   out.back().name += " on the optimum";
   return out;

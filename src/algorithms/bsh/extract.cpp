@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -26,6 +27,7 @@ std::optional<Method> method_from_string(const std::string& name) {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
 
 /// A search state {r, b}: removed supports r (ascending) and the graph-cut boundary b without them.
 struct State {
@@ -53,7 +55,10 @@ class SearchContext {
     for (int g : removed) constraints.removed[g] = 1;
     constraints.forced = forced;
     ++stats_.graph_cuts;
-    CutResult result = graph_cut(problem_, constraints);
+    std::function<bool()> stop;
+    if (options_.time_limit > 0) stop = [this] { return seconds() > options_.time_limit; };
+    CutResult result = graph_cut(problem_, constraints, stop);
+    if (result.stopped) stopped_by = "time-limit";  // its energy is -1: every caller drops it
     if (result.energy.missing_samples >= 0 && !result.certified) ++stats_.uncertified_cuts;
     return result;
   }
@@ -67,9 +72,19 @@ class SearchContext {
       options_.progress(p);
     }
     if (options_.max_states > 0 && stats_.states_expanded >= options_.max_states) stopped_by = "max-states";
-    if (options_.time_limit > 0 && std::chrono::duration<double>(now - start_).count() > options_.time_limit)
-      stopped_by = "time-limit";
+    return limit_reached();
+  }
+
+  /// True when the graph-cut or time limit says stop (checked before every graph cut); sets stopped_by.
+  bool limit_reached() {
+    if (options_.max_graph_cuts > 0 && stats_.graph_cuts >= options_.max_graph_cuts) stopped_by = "max-graph-cuts";
+    if (options_.time_limit > 0 && seconds() > options_.time_limit) stopped_by = "time-limit";
     return !stopped_by.empty();
+  }
+
+  /// Seconds left before the time limit (infinity without one; <= 0 when it has passed).
+  double seconds_left() const {
+    return options_.time_limit > 0 ? options_.time_limit - seconds() : std::numeric_limits<double>::infinity();
   }
 
   /// Remember the best sample-connected labelling seen, the answer when a limit stops the search.
@@ -130,6 +145,7 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   const Problem& problem = ctx.problem();
   const CompareOptions& cmp = ctx.options().compare;
   SearchOutcome out;
+  if (ctx.limit_reached()) return out;
   std::set<std::vector<int>> visited{base_removed};
   State root{base_removed, ctx.cut(base_removed, forced), -1};
   if (root.cut.energy.missing_samples < 0) return out;  // the constraints admit no labelling
@@ -159,6 +175,7 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
     for (const std::vector<int>& set : removable_sets(problem, labelling, connectivity)) {
       std::vector<int> removed = merged(out.archive[current].removed, set);
       if (!visited.insert(removed).second) continue;
+      if (ctx.limit_reached()) return out;
       CutResult cut = ctx.cut(removed, forced);
       if (cut.energy.missing_samples < 0) continue;
       if (sample_connectivity(problem, cut.labelling).sample_connected()) ctx.offer_feasible(cut);
@@ -218,7 +235,12 @@ void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult&
       if (!already_forced && !std::binary_search(space.removed.begin(), space.removed.end(), g)) {
         std::vector<int> removed = merged(space.removed, {g});
         SearchOutcome sub = search(ctx, removed, forced, 0);
-        if (!ctx.stopped_by.empty()) return;
+        if (!ctx.stopped_by.empty()) {
+          result.ties.capped = true;
+          result.ties.stopped_by = ctx.stopped_by;
+          result.ties.count = static_cast<int>(found.size());
+          return;
+        }
         if (sub.found) {
           const CutResult& cut = sub.archive[sub.result].cut;
           const Order o = compare(cut.energy, optimum.energy, cmp);
@@ -228,6 +250,7 @@ void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult&
               result.tied.push_back(cut.labelling);
               if (static_cast<int>(found.size()) >= ctx.options().max_ties) {
                 result.ties.capped = true;
+                result.ties.stopped_by = "max-ties";
                 result.ties.count = static_cast<int>(found.size());
                 return;
               }
@@ -248,19 +271,70 @@ void fill_from_cut(const Problem& problem, const CutResult& cut, ExtractResult& 
   result.sample_connected = sample_connectivity(problem, cut.labelling).sample_connected();
 }
 
+/// Best-first at non-generic junctions: Prop. 5.2 rests on Prop. 5.1, which needs generic junctions (a
+/// counterexample with three concurrent lines is kept in data/counterexamples), so the oracle certifies `found`
+/// when it needs at most ExtractOptions::certify_limit labellings and the time limit allows; else the result
+/// stays unproven. Returns the labellings the oracle enumerated.
+long certify_with_oracle(SearchContext& ctx, const CutResult& found, ExtractResult& result) {
+  const Problem& problem = ctx.problem();
+  const ExtractOptions& options = ctx.options();
+  const std::string where = std::to_string(problem.non_generic_junctions().size()) + " non-generic junction(s)";
+  result.optimal = false;
+  result.optimality_note = where + ": best-first is not proven complete here and the oracle is too large";
+  if (options.certify_limit <= 0 || ctx.seconds_left() <= 0) return 0;
+  BruteForceResult bf;
+  try {
+    bf = brute_force(problem, true,
+                     BruteForceOptions{options.certify_limit, options.compare,
+                                       options.time_limit > 0 ? ctx.seconds_left() : 0});
+  } catch (const LabellingLimitExceeded&) {
+    return 0;
+  }
+  if (bf.stopped) {
+    result.stopped_by = "time-limit";
+    result.optimality_note = where + ": best-first is not proven complete here and the oracle was stopped by the "
+                                     "time limit";
+    return bf.enumerated;
+  }
+  const Order o = compare(found.energy, bf.energy, options.compare);
+  if (o == Order::Greater) {
+    result.labelling = bf.optimal.front();
+    result.energy = bf.energy;
+    result.sample_connected = true;
+    result.steps.clear();
+    result.optimality_note = where + ": best-first missed the optimum (Prop. 5.1 fails there); this is the "
+                                     "oracle's optimum";
+  } else {
+    result.optimality_note = where + ": optimality certified by exhaustive enumeration";
+  }
+  result.optimal = o != Order::Tie && bf.certified;
+  result.ties.checked = true;
+  result.ties.count = static_cast<int>(bf.optimal.size());
+  result.ties.certified = bf.certified;
+  for (const Labelling& l : bf.optimal)
+    if (l != result.labelling) result.tied.push_back(l);
+  return bf.enumerated;
+}
+
 ExtractResult run_brute_force(const Problem& problem, const ExtractOptions& options) {
   const auto start = Clock::now();
-  BruteForceResult bf = brute_force(problem, true, options.brute_force_limit, options.compare);
+  const BruteForceResult bf =
+      brute_force(problem, true, BruteForceOptions{options.brute_force_limit, options.compare, options.time_limit});
   ExtractResult result;
   result.method = Method::BruteForce;
   result.labelling = bf.optimal.front();
   result.energy = bf.energy;
   result.sample_connected = true;
-  result.optimal = true;
-  result.ties.checked = true;
-  result.ties.count = static_cast<int>(bf.optimal.size());
-  result.ties.certified = bf.certified;
-  result.tied.assign(bf.optimal.begin() + 1, bf.optimal.end());
+  if (bf.stopped) {
+    // The best of the labellings enumerated before the time limit: not proven, ties not known.
+    result.stopped_by = "time-limit";
+  } else {
+    result.optimal = true;
+    result.ties.checked = true;
+    result.ties.count = static_cast<int>(bf.optimal.size());
+    result.ties.certified = bf.certified;
+    result.tied.assign(bf.optimal.begin() + 1, bf.optimal.end());
+  }
   result.stats.labellings_enumerated = bf.enumerated;
   result.stats.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   return result;
@@ -277,7 +351,12 @@ ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
   long stats_enumerated = 0;
 
   if (options.method == Method::GraphCut) {
-    const CutResult cut = ctx.cut({}, free_labels);
+    CutResult cut = ctx.cut({}, free_labels);
+    result.stopped_by = ctx.stopped_by;
+    if (cut.stopped) {  // the empty boundary, always admissible
+      cut.labelling.assign(problem.cell_count(), 0);
+      cut.energy = energy(problem, cut.labelling);
+    }
     fill_from_cut(problem, cut, result);
     // A relaxed optimum that happens to be sample-connected is the BSH optimum.
     result.optimal = cut.certified && result.sample_connected;
@@ -301,50 +380,17 @@ ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
       }
       if (options.method == Method::BestFirst) {
         result.optimal = all_certified;
-        if (!problem.non_generic_junctions().empty() && all_certified) {
-          // Prop. 5.2 rests on Prop. 5.1, which needs generic junctions (a counterexample with three concurrent
-          // lines is kept in data/counterexamples): certify with the oracle when it is small enough.
-          const std::string where = std::to_string(problem.non_generic_junctions().size()) + " non-generic junction(s)";
-          result.optimal = false;
-          result.optimality_note = where + ": best-first is not proven complete here and the oracle is too large";
-          if (options.certify_limit > 0) {
-            try {
-              const BruteForceResult bf = brute_force(problem, true, options.certify_limit, options.compare);
-              const Order o = compare(best.cut.energy, bf.energy, options.compare);
-              if (o == Order::Greater) {
-                result.labelling = bf.optimal.front();
-                result.energy = bf.energy;
-                result.sample_connected = true;
-                result.steps.clear();
-                result.optimality_note = where + ": best-first missed the optimum (Prop. 5.1 fails there); this is "
-                                                 "the oracle's optimum";
-              } else {
-                result.optimality_note = where + ": optimality certified by exhaustive enumeration";
-              }
-              result.optimal = o != Order::Tie && bf.certified;
-              result.ties.checked = true;
-              result.ties.count = static_cast<int>(bf.optimal.size());
-              result.ties.certified = bf.certified;
-              for (const Labelling& l : bf.optimal)
-                if (l != result.labelling) result.tied.push_back(l);
-              stats_enumerated = bf.enumerated;
-            } catch (const std::runtime_error&) {
-            }
-          }
-        }
+        if (!problem.non_generic_junctions().empty() && all_certified)
+          stats_enumerated = certify_with_oracle(ctx, best.cut, result);
       } else {
         // Beam results are optimal when they meet the unconstrained lower bound (the root graph cut).
         const Order o = compare(best.cut.energy, outcome.archive[0].cut.energy, options.compare);
         result.optimal = all_certified && o == Order::Equal;
       }
       if (ctx.unseparated) result.ties.certified = false;
-      if (options.method == Method::BestFirst && options.enumerate_ties && result.optimal && !result.ties.checked) {
+      // A limit met here cuts only the tie enumeration (Ties::stopped_by): the optimum stays proven.
+      if (options.method == Method::BestFirst && options.enumerate_ties && result.optimal && !result.ties.checked)
         enumerate_ties(ctx, best.cut, result);
-        if (!ctx.stopped_by.empty()) {
-          result.stopped_by = ctx.stopped_by;
-          result.ties.checked = false;
-        }
-      }
     } else {
       // A limit stopped the search: the best sample-connected boundary seen, else the empty one.
       result.removed.assign(problem.support_count(), 0);
@@ -365,50 +411,156 @@ ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
   return result;
 }
 
-BruteForceResult brute_force(const Problem& problem, bool connectivity, long limit, const CompareOptions& compare_options) {
-  const int n = problem.cell_count();
-  // Implications "x = 1 => y = 1" (x the outside cell of a support, y its inside cell); a support whose
-  // coincident halfspaces disagree ties its two cells together.
-  std::vector<std::vector<int>> implies(n), implied_by(n);
-  for (const SupportTerm& s : problem.supports()) {
-    auto link = [&](int x, int y) {
-      implies[x].push_back(y);
-      implied_by[y].push_back(x);
-    };
-    // Only a-inside allowed: b = 1 forces a = 1; only b-inside: the reverse; neither: equal labels.
-    if (!s.allow_b_inside) link(s.cell_b, s.cell_a);
-    if (!s.allow_a_inside) link(s.cell_a, s.cell_b);
+namespace {
+
+/// The oracle's constraints: "x = 1 => y = 1" for x the outside cell of a support and y its inside cell; a support
+/// whose coincident halfspaces disagree ties its two cells together. Labellings are the sets closed under
+/// `implies` that leave the outer cells (and everything that implies one) at 0.
+struct Implications {
+  std::vector<std::vector<int>> implies, implied_by;
+  explicit Implications(const Problem& problem) : implies(problem.cell_count()), implied_by(problem.cell_count()) {
+    for (const SupportTerm& s : problem.supports()) {
+      // Only a-inside allowed: b = 1 forces a = 1; only b-inside: the reverse; neither: equal labels.
+      if (!s.allow_b_inside) link(s.cell_b, s.cell_a);
+      if (!s.allow_a_inside) link(s.cell_a, s.cell_b);
+    }
   }
-  BruteForceResult result;
-  std::vector<signed char> label(n, -1);
+  void link(int x, int y) {
+    implies[x].push_back(y);
+    implied_by[y].push_back(x);
+  }
+};
+
+/// k such that there are at least 2^k labellings, found greedily: k free cells (label -1 in `label`) no two of
+/// which imply one another. Every subset of them, closed under `implies`, is a different labelling (no free cell
+/// implies a fixed 0). Stops once k reaches `enough`.
+int independent_cells(const Implications& g, const std::vector<signed char>& label, int enough) {
+  const int n = static_cast<int>(label.size());
+  std::vector<char> related(n, 0);
+  int k = 0;
+  std::vector<int> stack;
+  for (int c = 0; c < n && k < enough; ++c) {
+    if (label[c] >= 0 || related[c]) continue;
+    ++k;
+    for (const auto* edges : {&g.implies, &g.implied_by}) {
+      stack.assign(1, c);
+      std::vector<char> seen(n, 0);
+      seen[c] = 1;
+      while (!stack.empty()) {
+        const int x = stack.back();
+        stack.pop_back();
+        related[x] = 1;
+        for (int y : (*edges)[x])
+          if (!seen[y]) {
+            seen[y] = 1;
+            stack.push_back(y);
+          }
+      }
+    }
+  }
+  return k;
+}
+
+std::string limit_advice(long limit) {
+  return "; the limit is " + std::to_string(limit) +
+         ": raise it with --max-labellings (ExtractOptions::brute_force_limit) or use best-first";
+}
+
+/// Thrown inside the enumeration when the time limit runs out (caught by brute_force).
+struct OutOfTime {};
+
+/// Depth-first enumeration of the labellings: over the first unassigned cell, 0 then 1, with propagation of the
+/// implications. Both values always propagate without conflict (a value forced by a neighbour would already be
+/// assigned), so the tree is binary and the first leaf is the empty labelling.
+class Enumerator {
+ public:
+  Enumerator(const Problem& problem, const Implications& g, const BruteForceOptions& options)
+      : g_(g), options_(options), start_(Clock::now()), label_(problem.cell_count(), -1) {
+    std::vector<int> trail;
+    for (int k = 0; k < problem.cell_count(); ++k)
+      if (problem.complex().cells[k].outer && !assign(k, 0, trail))
+        throw std::logic_error("brute force: outer cells forced inside");
+  }
+  /// The labels after the outer cells are fixed: -1 free, 0 fixed.
+  const std::vector<signed char>& root() const { return label_; }
+  /// Calls leaf(labels) on every labelling; throws OutOfTime when the time limit runs out.
+  void run(const std::function<void(const std::vector<signed char>&)>& leaf) { descend(0, leaf); }
+
+ private:
   // Assign with propagation; returns false on a conflict. `trail` records what to undo.
-  auto assign = [&](int v, signed char value, std::vector<int>& trail) {
+  bool assign(int v, signed char value, std::vector<int>& trail) {
+    if (label_[v] >= 0) return label_[v] == value;
     std::vector<int> stack{v};
-    if (label[v] >= 0) return label[v] == value;
-    label[v] = value;
+    label_[v] = value;
     trail.push_back(v);
     while (!stack.empty()) {
       const int x = stack.back();
       stack.pop_back();
-      for (int y : value ? implies[x] : implied_by[x]) {
-        if (label[y] == value) continue;
-        if (label[y] >= 0) return false;
-        label[y] = value;
+      for (int y : value ? g_.implies[x] : g_.implied_by[x]) {
+        if (label_[y] == value) continue;
+        if (label_[y] >= 0) return false;
+        label_[y] = value;
         trail.push_back(y);
         stack.push_back(y);
       }
     }
     return true;
-  };
-  std::vector<int> root_trail;
-  for (int k = 0; k < n; ++k)
-    if (problem.complex().cells[k].outer && !assign(k, 0, root_trail))
-      throw std::logic_error("brute force: outer cells forced inside");
+  }
+  void descend(int from, const std::function<void(const std::vector<signed char>&)>& leaf) {
+    if (options_.time_limit > 0 && (++steps_ & 1023) == 0 &&
+        std::chrono::duration<double>(Clock::now() - start_).count() > options_.time_limit)
+      throw OutOfTime();
+    const int n = static_cast<int>(label_.size());
+    int v = from;
+    while (v < n && label_[v] >= 0) ++v;
+    if (v == n) {
+      leaf(label_);
+      return;
+    }
+    for (signed char value : {0, 1}) {
+      std::vector<int> trail;
+      if (assign(v, value, trail)) descend(v + 1, leaf);
+      for (int x : trail) label_[x] = -1;
+    }
+  }
+
+  const Implications& g_;
+  const BruteForceOptions& options_;
+  Clock::time_point start_;
+  std::vector<signed char> label_;
+  long steps_ = 0;
+};
+
+/// Refuses before the real enumeration when there are more than `limit` labellings: at once when 2^k > limit for
+/// k independent cells, else by counting them (no energies, no connectivity: much cheaper), up to limit + 1.
+void refuse_above_limit(Enumerator& enumerate, const Implications& g, long limit) {
+  int bits = 0;
+  while (bits < 62 && (1L << bits) <= limit) ++bits;
+  if (const int k = independent_cells(g, enumerate.root(), bits); k >= bits)
+    throw LabellingLimitExceeded(limit, "brute force: at least 2^" + std::to_string(k) +
+                                            " orientation-preserving labellings (" + std::to_string(k) +
+                                            " cells whose labels are independent)" + limit_advice(limit));
+  long count = 0;
+  enumerate.run([&](const std::vector<signed char>&) {
+    if (++count > limit)
+      throw LabellingLimitExceeded(limit, "brute force: more than " + std::to_string(limit) +
+                                              " orientation-preserving labellings" + limit_advice(limit));
+  });
+}
+
+}  // namespace
+
+BruteForceResult brute_force(const Problem& problem, bool connectivity, long limit, const CompareOptions& compare) {
+  return brute_force(problem, connectivity, BruteForceOptions{limit, compare, 0});
+}
+
+BruteForceResult brute_force(const Problem& problem, bool connectivity, const BruteForceOptions& options) {
+  const Implications g(problem);
+  Enumerator enumerate(problem, g, options);
+  BruteForceResult result;
   bool have_best = false;
-  auto leaf = [&]() {
-    if (++result.enumerated > limit)
-      throw std::runtime_error("brute force: more than " + std::to_string(limit) +
-                               " orientation-preserving labellings; use best-first");
+  auto leaf = [&](const std::vector<signed char>& label) {
+    ++result.enumerated;
     Labelling l(label.begin(), label.end());
     if (connectivity && !sample_connectivity(problem, l).sample_connected()) return;
     Energy e = energy(problem, l);
@@ -418,7 +570,7 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, long lim
       result.optimal = {l};
       return;
     }
-    const Order o = compare(e, result.energy, compare_options);
+    const Order o = bsh::compare(e, result.energy, options.compare);
     if (o == Order::Less) {
       result.energy = e;
       result.optimal = {l};
@@ -428,22 +580,20 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, long lim
       result.optimal.push_back(l);
     }
   };
-  // Depth-first over the first unassigned cell: 0 then 1.
-  std::function<void(int)> descend = [&](int from) {
-    int v = from;
-    while (v < n && label[v] >= 0) ++v;
-    if (v == n) {
-      leaf();
-      return;
+  try {
+    refuse_above_limit(enumerate, g, options.limit);
+    enumerate.run(leaf);
+  } catch (const OutOfTime&) {
+    result.stopped = true;
+  }
+  if (!have_best) {
+    if (result.stopped) {  // stopped before the first leaf: the empty labelling, always admissible
+      result.optimal = {Labelling(problem.cell_count(), 0)};
+      result.energy = energy(problem, result.optimal.front());
+      return result;
     }
-    for (signed char value : {0, 1}) {
-      std::vector<int> trail;
-      if (assign(v, value, trail)) descend(v + 1);
-      for (int x : trail) label[x] = -1;
-    }
-  };
-  descend(0);
-  if (!have_best) throw std::logic_error("brute force: no labelling (the empty one always exists)");
+    throw std::logic_error("brute force: no labelling (the empty one always exists)");
+  }
   return result;
 }
 

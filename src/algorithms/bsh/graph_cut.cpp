@@ -3,7 +3,6 @@
 #include "algorithms/flow_graph.hpp"
 
 #include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/edmonds_karp_max_flow.hpp>
 
 #include <limits>
 #include <map>
@@ -188,7 +187,7 @@ bool cut_cost(const Problem& problem, const CutConstraints& constraints, const L
   return true;
 }
 
-CutResult graph_cut(const Problem& problem, const CutConstraints& constraints) {
+CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, const std::function<bool()>& stop) {
   const int n = problem.cell_count();
   const Terms terms = build_terms(problem, constraints);
   FlowGraph g(n + 2);
@@ -246,11 +245,19 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints) {
   }
   std::vector<boost::default_color_type> color(n + 2);
   std::vector<Traits::edge_descriptor> pred(n + 2);
-  // Boost's returned value adds "capacity - residual" on infinite edges, which is meaningless here; the flow value
-  // is recomputed below from the flow on each arc out of s.
-  (void)boost::edmonds_karp_max_flow(
-      g, s, t, capacity, residual, reverse, boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
-      boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)));
+  // The flow value is computed below from the flow on each arc out of s (Boost's own sum would add "capacity -
+  // residual" on infinite edges, which is meaningless here).
+  if (!interruptible_max_flow(
+          g, s, t, capacity, residual, reverse,
+          boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
+          boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)), stop)) {
+    CutResult stopped;
+    stopped.labelling.assign(n, 0);
+    stopped.energy.missing_samples = -1;
+    stopped.certificate_note = "stopped";
+    stopped.stopped = true;
+    return stopped;
+  }
 
   // S side: vertices reachable from s through edges with (certainly) positive residual capacity.
   CutResult result;

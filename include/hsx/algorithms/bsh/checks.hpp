@@ -11,7 +11,9 @@ namespace hsx::bsh {
 
 struct CheckResult {
   std::string name;       ///< e.g. "Prop. 5.2: best-first = brute force"
-  enum Status { Pass, Fail, Skipped } status = Pass;
+  /// Skipped: not run (the oracle too large, the time limit already spent, not applicable); Stopped: run but cut
+  /// short by a limit, so neither a pass nor a failure (the witness says which limit and what was checked).
+  enum Status { Pass, Fail, Skipped, Stopped } status = Pass;
   std::string witness;    ///< what was compared, or the counterexample
 };
 const char* to_string(CheckResult::Status s);
@@ -22,7 +24,9 @@ CheckResult check_prop51(const Problem& problem, const Labelling& b, const Label
 
 /// Prop. 4.1: one sample on every patch of the orientation-preserving boundary of `labelling` makes it the unique
 /// BSH boundary (checked with best-first and tie enumeration on a copy of the complex with those samples only).
-CheckResult check_prop41(const Complex& complex, const Labelling& labelling, const CompareOptions& compare = {});
+/// `limits`: the search's limits and comparison options (its method is ignored); a limit that cuts the search or
+/// its tie enumeration gives Stopped.
+CheckResult check_prop41(const Complex& complex, const Labelling& labelling, const ExtractOptions& limits = {});
 
 /// Section 3.1 in 2D, combinatorially: every junction has an even number of boundary patch ends.
 CheckResult check_manifold_parity(const Problem& problem, const Labelling& labelling);
@@ -30,10 +34,21 @@ CheckResult check_manifold_parity(const Problem& problem, const Labelling& label
 /// The complex with its samples replaced by one sample on each patch of `labelling`'s boundary.
 Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling);
 
+/// The limits of check_all, as extract's (ExtractOptions says which are deterministic).
+struct CheckOptions {
+  long brute_force_limit = 200000;  ///< labellings the oracle may enumerate (more: Prop. 5.2 skipped)
+  CompareOptions compare;
+  double time_limit = 0;   ///< seconds for all checks together (0: none); checks left when it runs out are skipped
+  long max_states = 0;     ///< per search: expanded states (0: none)
+  long max_graph_cuts = 0; ///< per search: graph cuts (0: none)
+};
+
 /// Every applicable checker on one complex: existence (4.1), Prop. 5.2 (best-first = brute force when the oracle
 /// is small enough), Prop. 5.1 on every state best-first expanded, beam K=1 feasibility and energy >= optimum,
 /// Prop. 4.1 on the optimum and on the beam result, uniqueness or a reported tie (4.2), every graph cut
-/// certified, manifold parity. `brute_force_limit` bounds the oracle (larger: reported as skipped).
+/// certified, manifold parity. A check the limits cut short is Stopped, one they leave no room for Skipped.
+std::vector<CheckResult> check_all(const Complex& complex, const CheckOptions& options);
+/// The same with only the oracle's limit and comparison options.
 std::vector<CheckResult> check_all(const Complex& complex, long brute_force_limit = 200000,
                                    const CompareOptions& compare = {});
 

@@ -4,6 +4,7 @@
 
 #include <hsx/algorithms/bsh/graph_cut.hpp>
 #include <hsx/algorithms/bsh/problem.hpp>
+#include <hsx/geometry/scene.hpp>
 
 #include <functional>
 #include <optional>
@@ -28,14 +29,22 @@ struct SearchProgress {
   std::optional<Energy> best_energy;  ///< best sample-connected energy found so far
 };
 
+/// Limits. A limit that stops a search returns the best sample-connected boundary found so far, not proven optimal,
+/// with ExtractResult::stopped_by naming it; one that stops only the tie enumeration after the optimum was proven
+/// leaves `optimal` true and says so in Ties::stopped_by. max_states and max_graph_cuts are deterministic (the
+/// same input stops at the same point on every machine); time_limit is not: where it stops depends on the
+/// machine's speed and load. All limits are checked between graph cuts, so they overshoot by at most one cut.
 struct ExtractOptions {
   Method method = Method::Beam;
   int beam_width = 1;
   long max_states = 0;          ///< expanded states before stopping (0: no limit)
-  double time_limit = 0;        ///< seconds before stopping (0: no limit)
+  long max_graph_cuts = 0;      ///< graph cuts before stopping (0: no limit)
+  double time_limit = 0;        ///< seconds before stopping (0: no limit), brute force included
   bool enumerate_ties = true;   ///< complete methods: find every optimal boundary (up to max_ties)
   int max_ties = 16;
-  long brute_force_limit = 1L << 22;  ///< labellings the oracle may enumerate before refusing
+  /// Orientation-preserving labellings brute force may enumerate: it refuses up front when it can prove there are
+  /// more (LabellingLimitExceeded), and stops with that exception when it meets one more.
+  long brute_force_limit = 1L << 22;
   /// Best-first on a complex with non-generic junctions (where Prop. 5.2 is not proven) is certified by the
   /// oracle when it needs at most this many labellings; 0 disables it.
   long certify_limit = 200000;
@@ -49,7 +58,10 @@ struct Ties {
   int count = 1;           ///< optimal boundaries found (>= 1)
   bool checked = false;    ///< the method looked for other optimal boundaries (complete methods only)
   bool certified = true;   ///< every tie is proven (exactly equal energies); false: some only unseparated
-  bool capped = false;     ///< enumeration stopped at ExtractOptions::max_ties: there may be more
+  bool capped = false;     ///< the enumeration stopped early (stopped_by says why): there may be more than count
+  /// Why the enumeration stopped early: "max-ties" (ExtractOptions::max_ties reached) or the limit that cut it
+  /// ("time-limit", "max-states", "max-graph-cuts"); "" when it finished (or did not run).
+  std::string stopped_by;
 };
 
 struct SearchStats {
@@ -73,15 +85,26 @@ struct ExtractResult {
   std::vector<std::vector<int>> steps;
   Ties ties;
   std::vector<Labelling> tied;   ///< the other optimal labellings when ties.count > 1
-  std::string stopped_by;        ///< "" (finished), "max-states", "time-limit"
+  /// The limit that stopped the search for the optimum: "" (finished), "max-states", "max-graph-cuts",
+  /// "time-limit" (then optimal is false). A limit that cut only the tie enumeration is in ties.stopped_by.
+  std::string stopped_by;
   std::string optimality_note;   ///< how optimality was decided when the search alone could not prove it
   std::vector<Labelling> expanded;  ///< with ExtractOptions::record_states: every expanded state's boundary
   SearchStats stats;
 };
 
+/// Brute force has more orientation-preserving labellings than its limit: a refusal of the input (exit 2 in the
+/// hsx program, whose option for the limit is --max-labellings), not an internal error.
+class LabellingLimitExceeded : public InputError {
+ public:
+  /// `limit`: the limit that was exceeded; `what`: the message, naming the limit.
+  LabellingLimitExceeded(long limit, const std::string& what) : InputError(what), limit(limit) {}
+  long limit;
+};
+
 /// Runs `options.method` on the problem. Never fails on valid input: a limit returns the best sample-connected
 /// boundary found so far with optimal = false (the empty boundary is always sample-connected).
-/// Throws std::runtime_error when brute force would exceed options.brute_force_limit.
+/// Throws LabellingLimitExceeded when brute force would exceed options.brute_force_limit.
 ExtractResult extract(const Problem& problem, const ExtractOptions& options);
 
 /// The oracle: every orientation-preserving labelling (closed sets of "outside cell inside => inside cell
@@ -92,7 +115,20 @@ struct BruteForceResult {
   Energy energy;
   bool certified = true;            ///< every comparison that picked them was proven
   long enumerated = 0;
+  /// BruteForceOptions::time_limit ran out: `optimal` is the best of the labellings enumerated so far (the empty
+  /// one always among them), not proven.
+  bool stopped = false;
 };
+struct BruteForceOptions {
+  /// Labellings to enumerate at most. When a lower bound on their number (2^k for k cells whose labels are
+  /// independent) already exceeds it, brute force refuses before enumerating; otherwise it stops at limit + 1.
+  /// Either way it throws LabellingLimitExceeded.
+  long limit = 1L << 22;
+  CompareOptions compare;
+  double time_limit = 0;            ///< seconds (0: no limit); running out sets BruteForceResult::stopped
+};
+BruteForceResult brute_force(const Problem& problem, bool connectivity, const BruteForceOptions& options);
+/// The same with only a limit and comparison options.
 BruteForceResult brute_force(const Problem& problem, bool connectivity, long limit = 1L << 22,
                              const CompareOptions& compare = {});
 

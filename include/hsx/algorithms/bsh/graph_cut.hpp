@@ -13,6 +13,8 @@
 
 #include <hsx/algorithms/bsh/problem.hpp>
 
+#include <functional>
+
 namespace hsx::bsh {
 
 struct CutResult {
@@ -23,6 +25,8 @@ struct CutResult {
   bool certified = false;
   std::string certificate_note;  ///< why not certified (a comparison that did not separate), empty if certified
   long augmentations = 0;
+  /// The `stop` callback ended the max flow early: labelling and energy mean nothing (missing_samples is -1).
+  bool stopped = false;
 };
 
 /// Constraints on one graph cut.
@@ -32,8 +36,10 @@ struct CutConstraints {
 };
 
 /// Minimum-energy orientation-preserving labelling under `constraints`. When the constraints admit no finite
-/// labelling, `energy.missing_samples` is -1 and `certified` is false.
-CutResult graph_cut(const Problem& problem, const CutConstraints& constraints);
+/// labelling, `energy.missing_samples` is -1 and `certified` is false. `stop`, when set, is asked before every
+/// augmenting path of the max flow (a time limit); when it says stop, the result has `stopped` set.
+CutResult graph_cut(const Problem& problem, const CutConstraints& constraints,
+                    const std::function<bool()>& stop = {});
 
 /// The cost of the s-t cut that corresponds to `labelling` in the graph above, summed edge by edge (infinite
 /// when the labelling breaks a constraint). Used to check that cut cost == energy (Eqs. 2-4).

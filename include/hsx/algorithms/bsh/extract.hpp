@@ -33,7 +33,8 @@ struct SearchProgress {
 /// with ExtractResult::stopped_by naming it; one that stops only the tie enumeration after the optimum was proven
 /// leaves `optimal` true and says so in Ties::stopped_by. max_states and max_graph_cuts are deterministic (the
 /// same input stops at the same point on every machine); time_limit is not: where it stops depends on the
-/// machine's speed and load. All limits are checked between graph cuts, so they overshoot by at most one cut.
+/// machine's speed and load. max_states and max_graph_cuts are checked before every graph cut, time_limit also
+/// before every augmenting path inside a graph cut's max flow and every 1024 steps of brute force's enumeration.
 struct ExtractOptions {
   Method method = Method::Beam;
   int beam_width = 1;

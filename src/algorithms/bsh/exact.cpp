@@ -1,0 +1,526 @@
+// Branch and bound for the BSH shape (exact.hpp has the design and conventions; proofs/bsh.md the theorem).
+#include <hsx/algorithms/bsh/exact.hpp>
+
+#include "algorithms/flow_graph.hpp"
+#include "geometry/components.hpp"
+
+// GCC 12 reports a false "may be used uninitialized" inside Boost's edge iterator as instantiated by the solver.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+#pragma GCC diagnostic pop
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <set>
+#include <stdexcept>
+
+namespace hsx::bsh {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using Labels = std::vector<signed char>;  ///< per cell: -1 undecided, 0, 1
+
+// ---- the search space: closed partial assignments ----
+
+/// The implication graph "x = 1 => y = 1" of orientation preservation, and propagation along it.
+class Implications {
+ public:
+  explicit Implications(const Problem& problem)
+      : implies_(problem.cell_count()), implied_by_(problem.cell_count()) {
+    for (const SupportTerm& s : problem.supports()) {
+      if (!s.allow_b_inside) link(s.cell_b, s.cell_a);  // b inside is not allowed: b = 1 forces a = 1
+      if (!s.allow_a_inside) link(s.cell_a, s.cell_b);
+    }
+  }
+
+  /// Sets `cell` to `value` and everything it implies (1 upwards, 0 downwards); false on a conflict (then
+  /// `labels` is partly assigned and must be dropped).
+  bool assign(Labels& labels, int cell, signed char value) const {
+    if (labels[cell] >= 0) return labels[cell] == value;
+    labels[cell] = value;
+    std::vector<int> stack{cell};
+    while (!stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      for (int y : value ? implies_[x] : implied_by_[x]) {
+        if (labels[y] == value) continue;
+        if (labels[y] >= 0) return false;
+        labels[y] = value;
+        stack.push_back(y);
+      }
+    }
+    return true;
+  }
+
+ private:
+  std::vector<std::vector<int>> implies_, implied_by_;
+  void link(int x, int y) {
+    implies_[x].push_back(y);
+    implied_by_[y].push_back(x);
+  }
+};
+
+// ---- the fast rigorous lower bound: an integer min cut of rounded-down capacities ----
+
+/// Section 5.1's graph with integer capacities: support measures rounded down to multiples of 2^-scale_bits,
+/// samples weighted sample_weight (more than all measures together). Reused from node to node: only the
+/// terminal edges change with the decided cells.
+class FastBound {
+ public:
+  struct Cut {
+    long long value = 0;  ///< the max flow = min cut of the rounded capacities
+    Labelling labelling;  ///< the minimal source side (label 1)
+  };
+
+  explicit FastBound(const Problem& problem) : n_(problem.cell_count()), graph_(problem.cell_count() + 2) {
+    choose_scale(problem);
+    std::vector<long> source_samples(n_, 0), sink_samples(n_, 0);
+    for (const Patch& p : problem.complex().patches) {
+      source_samples[p.inside_cell] += static_cast<long>(p.samples.size());
+      sink_samples[p.outside_cell] += static_cast<long>(p.samples.size());
+    }
+    for (int k = 0; k < n_; ++k) {
+      source_edges_.push_back(add_pair(n_, k, 0, 0));
+      sink_edges_.push_back(add_pair(k, n_ + 1, 0, 0));
+      source_base_.push_back(sample_weight_ * source_samples[k]);
+      sink_base_.push_back(problem.complex().cells[k].outer ? infinite_ : sample_weight_ * sink_samples[k]);
+    }
+    for (int g = 0; g < problem.support_count(); ++g) {
+      const SupportTerm& s = problem.supports()[g];
+      const long long w = rounded_[g];
+      add_pair(s.cell_a, s.cell_b, s.allow_a_inside ? w : infinite_, s.allow_b_inside ? w : infinite_);
+    }
+  }
+
+  /// The min cut with the decided cells of `labels` tied to s (1) or t (0); `labels` must be closed.
+  Cut solve(const Labels& labels) {
+    auto capacity = boost::get(boost::edge_capacity, graph_);
+    for (int k = 0; k < n_; ++k) {
+      capacity[source_edges_[k]] = labels[k] == 1 ? infinite_ : source_base_[k];
+      capacity[sink_edges_[k]] = labels[k] == 0 ? infinite_ : sink_base_[k];
+    }
+    std::vector<boost::default_color_type> color(n_ + 2);
+    std::vector<long> distance(n_ + 2);
+    std::vector<FlowTraits::edge_descriptor> pred(n_ + 2);
+    const auto index = boost::get(boost::vertex_index, graph_);
+    Cut cut;
+    cut.value = boost::boykov_kolmogorov_max_flow(
+        graph_, capacity, boost::get(boost::edge_residual_capacity, graph_), boost::get(boost::edge_reverse, graph_),
+        boost::make_iterator_property_map(pred.begin(), index), boost::make_iterator_property_map(color.begin(), index),
+        boost::make_iterator_property_map(distance.begin(), index), index, n_, n_ + 1);
+    cut.labelling = source_side();
+    if (cut.value >= infinite_ || cut_capacity(cut.labelling) != cut.value)
+      throw std::logic_error("exact: the integer max flow does not match its cut");
+    return cut;
+  }
+
+  /// The lower bound that a cut value proves (floor(V / M), (V mod M) * 2^-scale).
+  EnergyBound decode(long long value) const {
+    return {static_cast<long>(value / sample_weight_), std::ldexp(static_cast<double>(value % sample_weight_), -scale_bits_)};
+  }
+
+ private:
+  using Graph = FlowGraph<long long>;
+  int n_;
+  Graph graph_;
+  std::vector<FlowTraits::edge_descriptor> source_edges_, sink_edges_;
+  std::vector<long long> source_base_, sink_base_, rounded_;
+  long long sample_weight_ = 1, infinite_ = 1;
+  int scale_bits_ = 0;
+
+  /// Rounded measures floor(lo * 2^scale) summing below 2^B, where B leaves room for the sample weights and the
+  /// infinite capacity (M * (samples + 2)) below 2^61.
+  void choose_scale(const Problem& problem) {
+    double total_hi = 1;
+    for (const auto& [lo, hi] : problem.support_enclosures()) total_hi += hi;
+    int sample_bits = 0;
+    while ((1LL << sample_bits) < problem.total_samples() + 3) ++sample_bits;
+    const int budget = std::min(50, 60 - sample_bits);
+    int exponent = 0;
+    std::frexp(total_hi, &exponent);  // total_hi < 2^exponent
+    scale_bits_ = budget - exponent;
+    long long sum = 0;
+    for (const auto& [lo, hi] : problem.support_enclosures()) {
+      const double scaled = std::floor(std::ldexp(lo, scale_bits_));
+      rounded_.push_back(scaled > 0 ? static_cast<long long>(scaled) : 0);
+      sum += rounded_.back();
+    }
+    sample_weight_ = sum + 1;
+    infinite_ = sample_weight_ * (problem.total_samples() + 2);
+  }
+
+  FlowTraits::edge_descriptor add_pair(int from, int to, long long forward, long long backward) {
+    auto e = boost::add_edge(from, to, graph_).first;
+    auto r = boost::add_edge(to, from, graph_).first;
+    auto capacity = boost::get(boost::edge_capacity, graph_);
+    auto reverse = boost::get(boost::edge_reverse, graph_);
+    capacity[e] = forward;
+    capacity[r] = backward;
+    reverse[e] = r;
+    reverse[r] = e;
+    return e;
+  }
+
+  /// Cells reachable from s through positive residual capacity: label 1.
+  Labelling source_side() const {
+    const auto residual = boost::get(boost::edge_residual_capacity, graph_);
+    std::vector<char> reach(n_ + 2, 0);
+    std::vector<int> stack{n_};
+    reach[n_] = 1;
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (auto [it, end] = boost::out_edges(v, graph_); it != end; ++it) {
+        const int w = static_cast<int>(boost::target(*it, graph_));
+        if (!reach[w] && residual[*it] > 0) {
+          reach[w] = 1;
+          stack.push_back(w);
+        }
+      }
+    }
+    return Labelling(reach.begin(), reach.begin() + n_);
+  }
+
+  /// Capacity of the cut (S = s and the cells labelled 1): the flow's certificate of optimality.
+  long long cut_capacity(const Labelling& labelling) const {
+    const auto capacity = boost::get(boost::edge_capacity, graph_);
+    auto side = [&](int v) { return v == n_ ? 1 : (v == n_ + 1 ? 0 : labelling[v]); };
+    long long total = 0;
+    for (int v = 0; v < n_ + 2; ++v) {
+      if (!side(v)) continue;
+      for (auto [it, end] = boost::out_edges(v, graph_); it != end; ++it)
+        if (!side(static_cast<int>(boost::target(*it, graph_)))) total += capacity[*it];
+    }
+    return total;
+  }
+};
+
+// ---- the island rule ----
+
+/// Detects nodes none of whose completions is sample-connected (exact.hpp, "Pruning ... by islands").
+class IslandRule {
+ public:
+  explicit IslandRule(const Problem& problem) : problem_(problem) {
+    const Complex& c = problem.complex();
+    for (const Junction& j : c.junctions)
+      for (std::size_t a = 0; a < j.patches.size(); ++a)
+        for (std::size_t b = a + 1; b < j.patches.size(); ++b)
+          if (c.patches[j.patches[a]].halfspace == c.patches[j.patches[b]].halfspace)
+            links_.emplace_back(j.patches[a], j.patches[b]);
+  }
+
+  bool hopeless(const Labels& labels) const {
+    const Complex& c = problem_.complex();
+    const std::size_t count = c.patches.size();
+    std::vector<char> possible(count, 0);
+    for (std::size_t p = 0; p < count; ++p) {
+      const Patch& patch = c.patches[p];
+      possible[p] = labels[patch.inside_cell] != 0 && labels[patch.outside_cell] != 1 &&
+                    problem_.supports()[patch.support].allows(patch.inside_cell);
+    }
+    DisjointSets sets(count);
+    for (const auto& [p, q] : links_)
+      if (possible[p] && possible[q]) sets.union_set(p, q);
+    std::vector<char> sampled(count, 0);
+    for (std::size_t p = 0; p < count; ++p)
+      if (possible[p] && !c.patches[p].samples.empty()) sampled[sets.find_set(static_cast<int>(p))] = 1;
+    for (std::size_t p = 0; p < count; ++p) {
+      const Patch& patch = c.patches[p];
+      const bool definite = labels[patch.inside_cell] == 1 && labels[patch.outside_cell] == 0;
+      if (definite && !sampled[sets.find_set(static_cast<int>(p))]) return true;
+    }
+    return false;
+  }
+
+ private:
+  const Problem& problem_;
+  std::vector<std::pair<int, int>> links_;  ///< patches of one halfspace sharing a junction
+};
+
+// ---- the search ----
+
+/// A node's relaxed optimum (the fast cut), shared by the child that keeps it; exact facts computed on demand.
+struct Candidate {
+  FastBound::Cut cut;
+  EnergyBound bound;
+  std::optional<Energy> energy;
+  std::optional<SampleConnectivity> connectivity;
+};
+
+struct Node {
+  Labels labels;
+  std::shared_ptr<Candidate> candidate;
+  long id = 0;
+};
+
+/// Heap order: the smallest bound on top, then the newest node (a dive towards the leaves).
+struct NodeAfter {
+  bool operator()(const Node& a, const Node& b) const {
+    if (a.candidate->cut.value != b.candidate->cut.value) return a.candidate->cut.value > b.candidate->cut.value;
+    return a.id < b.id;
+  }
+};
+
+/// Lexicographic "a < b" on bounds.
+bool less(const EnergyBound& a, const EnergyBound& b) {
+  return a.missing_samples != b.missing_samples ? a.missing_samples < b.missing_samples : a.measure < b.measure;
+}
+
+class ExactSearch {
+ public:
+  ExactSearch(const Problem& problem, const ExtractOptions& options)
+      : problem_(problem), options_(options), implications_(problem), bound_(problem), islands_(problem),
+        start_(Clock::now()), last_report_(start_) {}
+
+  /// The algorithm's outline: best-bound first, prune by bound and by islands, take sample-connected
+  /// candidates as incumbents, branch on a cell that the candidate's islands depend on.
+  ExtractResult run() {
+    set_incumbent(Labelling(problem_.cell_count(), 0), std::nullopt);
+    push_root();
+    while (!queue_.empty() && !out_of_budget()) {
+      Node node = pop();
+      track_gap(node.candidate->bound);
+      if (bound_prunes(node.candidate->bound)) {
+        ++stats_.pruned_by_bound;
+        continue;
+      }
+      ++stats_.nodes;
+      if (connected(*node.candidate)) offer(node.candidate->cut.labelling, energy_of(*node.candidate));
+      if (undecided(node.labels) == 0) continue;  // the region is the candidate alone
+      if (certified_bound_prunes(node)) {
+        ++stats_.pruned_by_bound;
+        continue;
+      }
+      branch(node);
+    }
+    return finish();
+  }
+
+ private:
+  const Problem& problem_;
+  const ExtractOptions& options_;
+  Implications implications_;
+  FastBound bound_;
+  IslandRule islands_;
+  Clock::time_point start_, last_report_;
+  SearchStats stats_;
+  std::string stopped_by_;
+  std::vector<Node> queue_;  // a heap under NodeAfter
+  long next_id_ = 0;
+  // The incumbent and its ties.
+  Labelling incumbent_;
+  Energy incumbent_energy_;
+  double incumbent_lo_ = 0, incumbent_hi_ = 0;  // rigorous double enclosure of its measure
+  std::set<Labelling> optimal_;                 // labellings with the incumbent's energy (up to max_ties)
+  bool unseparated_ = false;                    // a tie was only "not separated" (Order::Tie)
+
+  bool want_ties() const {
+    return options_.enumerate_ties && static_cast<int>(optimal_.size()) < std::max(1, options_.max_ties);
+  }
+
+  // -- nodes --
+
+  void push_root() {
+    Node root{Labels(problem_.cell_count(), -1), nullptr, next_id_++};
+    for (int k = 0; k < problem_.cell_count(); ++k)
+      if (problem_.complex().cells[k].outer && !implications_.assign(root.labels, k, 0))
+        throw std::logic_error("exact: outer cells are forced inside");
+    consider(std::move(root), nullptr);
+  }
+
+  /// Bounds a new node (reusing `keep`, a candidate that still fits it) and queues it unless it is pruned.
+  void consider(Node node, const std::shared_ptr<Candidate>& keep) {
+    if (islands_.hopeless(node.labels)) {
+      ++stats_.pruned_by_islands;
+      return;
+    }
+    node.candidate = keep ? keep : solve(node.labels);
+    if (bound_prunes(node.candidate->bound)) {
+      ++stats_.pruned_by_bound;
+      return;
+    }
+    queue_.push_back(std::move(node));
+    std::push_heap(queue_.begin(), queue_.end(), NodeAfter());
+    stats_.max_queue = std::max(stats_.max_queue, static_cast<long>(queue_.size()));
+  }
+
+  std::shared_ptr<Candidate> solve(const Labels& labels) {
+    auto candidate = std::make_shared<Candidate>();
+    candidate->cut = bound_.solve(labels);
+    candidate->bound = bound_.decode(candidate->cut.value);
+    ++stats_.nodes_created;
+    ++stats_.graph_cuts;
+    return candidate;
+  }
+
+  Node pop() {
+    std::pop_heap(queue_.begin(), queue_.end(), NodeAfter());
+    Node node = std::move(queue_.back());
+    queue_.pop_back();
+    return node;
+  }
+
+  static int undecided(const Labels& labels) {
+    return static_cast<int>(std::count(labels.begin(), labels.end(), static_cast<signed char>(-1)));
+  }
+
+  /// Two children on one undecided cell; the one with the candidate's value keeps the candidate (it is still
+  /// feasible and optimal for the rounded cut there). It is queued last, so it is expanded first on equal bounds.
+  void branch(const Node& node) {
+    const int cell = branch_cell(node);
+    const signed char keep = node.candidate->cut.labelling[cell];
+    for (signed char value : {static_cast<signed char>(1 - keep), keep}) {
+      Node child{node.labels, nullptr, next_id_++};
+      if (!implications_.assign(child.labels, cell, value)) continue;  // no labelling there
+      consider(std::move(child), value == keep ? node.candidate : nullptr);
+    }
+  }
+
+  /// An undecided cell of a patch of the candidate's first island, else of a boundary support, else the first.
+  int branch_cell(const Node& node) {
+    const Complex& c = problem_.complex();
+    const Candidate& candidate = *node.candidate;
+    const SampleConnectivity& connectivity = connectivity_of(*node.candidate);
+    for (int island : connectivity.islands)
+      for (int p : connectivity.components[island].patches)
+        for (int cell : {c.patches[p].inside_cell, c.patches[p].outside_cell})
+          if (node.labels[cell] < 0) return cell;
+    for (int g : boundary_supports(problem_, candidate.cut.labelling))
+      for (int cell : {problem_.supports()[g].cell_a, problem_.supports()[g].cell_b})
+        if (node.labels[cell] < 0) return cell;
+    return static_cast<int>(std::find(node.labels.begin(), node.labels.end(), -1) - node.labels.begin());
+  }
+
+  // -- bounds --
+
+  /// The bound provably exceeds the incumbent (or reaches it, when no more ties are wanted).
+  bool bound_prunes(const EnergyBound& bound) const {
+    if (bound.missing_samples != incumbent_energy_.missing_samples)
+      return bound.missing_samples > incumbent_energy_.missing_samples;
+    return want_ties() ? bound.measure > incumbent_hi_ : bound.measure >= incumbent_hi_;
+  }
+
+  /// When the fast bound left the node open although its candidate is exactly no better than the incumbent,
+  /// the certified graph cut (an exact proof) may still close it.
+  bool certified_bound_prunes(const Node& node) {
+    const Order o = compare(energy_of(*node.candidate), incumbent_energy_, options_.compare);
+    if (!(o == Order::Greater || (o == Order::Equal && !want_ties()))) return false;
+    ++stats_.certified_bounds;
+    ++stats_.graph_cuts;
+    const CutResult cut = graph_cut(problem_, CutConstraints{{}, node.labels});
+    if (!cut.certified) {
+      ++stats_.uncertified_cuts;
+      return false;
+    }
+    if (sample_connectivity(problem_, cut.labelling).sample_connected()) offer(cut.labelling, cut.energy);
+    const Order p = compare(cut.energy, incumbent_energy_, options_.compare);
+    return p == Order::Greater || (p == Order::Equal && !want_ties());
+  }
+
+  // -- candidates and the incumbent --
+
+  const Energy& energy_of(Candidate& candidate) const {
+    if (!candidate.energy) candidate.energy = energy(problem_, candidate.cut.labelling);
+    return *candidate.energy;
+  }
+  const SampleConnectivity& connectivity_of(Candidate& candidate) const {
+    if (!candidate.connectivity) candidate.connectivity = sample_connectivity(problem_, candidate.cut.labelling);
+    return *candidate.connectivity;
+  }
+  bool connected(Candidate& candidate) const { return connectivity_of(candidate).sample_connected(); }
+
+  void set_incumbent(const Labelling& labelling, const std::optional<Energy>& e) {
+    incumbent_ = labelling;
+    incumbent_energy_ = e ? *e : energy(problem_, labelling);
+    const Interval enclosure = incumbent_energy_.measure.enclose(64);
+    incumbent_lo_ = enclosure.lo_double();
+    incumbent_hi_ = enclosure.hi_double();
+    optimal_ = {labelling};
+    unseparated_ = false;
+  }
+
+  /// A sample-connected orientation-preserving labelling: a better incumbent, or one more tie.
+  void offer(const Labelling& labelling, const Energy& e) {
+    const Order o = compare(e, incumbent_energy_, options_.compare);
+    if (o == Order::Less) {
+      set_incumbent(labelling, e);
+    } else if ((o == Order::Equal || o == Order::Tie) && want_ties() && !optimal_.count(labelling)) {
+      optimal_.insert(labelling);
+      unseparated_ = unseparated_ || o == Order::Tie;
+    }
+  }
+
+  // -- limits, progress, the gap --
+
+  EnergyBound incumbent_bound() const { return {incumbent_energy_.missing_samples, incumbent_lo_}; }
+
+  /// The proven lower bound on the optimum: the smallest open bound (the heap's top), or the incumbent.
+  EnergyBound lower_bound() const {
+    if (queue_.empty()) return incumbent_bound();
+    const EnergyBound& top = queue_.front().candidate->bound;
+    return less(top, incumbent_bound()) ? top : incumbent_bound();
+  }
+
+  EnergyBound gap_to(const EnergyBound& bound) const {
+    return {incumbent_energy_.missing_samples - bound.missing_samples, incumbent_hi_ - bound.measure};
+  }
+
+  /// Called with the bound of the node just taken (the smallest open one).
+  void track_gap(const EnergyBound& popped) {
+    const EnergyBound gap = gap_to(less(popped, incumbent_bound()) ? popped : incumbent_bound());
+    if (less(stats_.max_gap, gap)) stats_.max_gap = gap;
+  }
+
+  bool out_of_budget() {
+    const auto now = Clock::now();
+    if (options_.progress && now - last_report_ > std::chrono::milliseconds(500)) {
+      last_report_ = now;
+      SearchProgress p;
+      p.states_expanded = stats_.nodes;
+      p.queue_size = static_cast<long>(queue_.size());
+      p.graph_cuts = stats_.graph_cuts;
+      p.best_energy = incumbent_energy_;
+      p.lower_bound = lower_bound();
+      options_.progress(p);
+    }
+    if (options_.max_nodes > 0 && stats_.nodes >= options_.max_nodes) stopped_by_ = "max-nodes";
+    if (options_.time_limit > 0 && std::chrono::duration<double>(now - start_).count() > options_.time_limit)
+      stopped_by_ = "time-limit";
+    return !stopped_by_.empty();
+  }
+
+  ExtractResult finish() {
+    ExtractResult result;
+    result.method = Method::Exact;
+    result.stopped_by = stopped_by_;
+    result.optimal = stopped_by_.empty();  // up to ties that did not separate (ties.certified), as brute force
+    result.labelling = incumbent_;
+    result.energy = incumbent_energy_;
+    result.sample_connected = true;
+    result.removed.assign(problem_.support_count(), 0);
+    result.ties.checked = options_.enumerate_ties && stopped_by_.empty();
+    result.ties.count = static_cast<int>(optimal_.size());
+    result.ties.certified = !unseparated_;
+    result.ties.capped = result.ties.checked && !want_ties();
+    for (const Labelling& l : optimal_)
+      if (l != incumbent_) result.tied.push_back(l);
+    stats_.lower_bound = lower_bound();
+    stats_.gap = stopped_by_.empty() ? EnergyBound{} : gap_to(stats_.lower_bound);
+    stats_.states_expanded = stats_.nodes;
+    stats_.states_created = stats_.nodes_created;
+    stats_.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    result.stats = stats_;
+    return result;
+  }
+};
+
+}  // namespace
+
+ExtractResult extract_exact(const Problem& problem, const ExtractOptions& options) {
+  return ExactSearch(problem, options).run();
+}
+
+}  // namespace hsx::bsh

@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -91,24 +92,35 @@ class FastBound {
     for (int g = 0; g < problem.support_count(); ++g) {
       const SupportTerm& s = problem.supports()[g];
       const long long w = rounded_[g];
-      add_pair(s.cell_a, s.cell_b, s.allow_a_inside ? w : infinite_, s.allow_b_inside ? w : infinite_);
+      support_forward_.push_back(s.allow_a_inside ? w : infinite_);
+      support_backward_.push_back(s.allow_b_inside ? w : infinite_);
+      support_edges_.push_back(add_pair(s.cell_a, s.cell_b, support_forward_.back(), support_backward_.back()));
     }
   }
 
-  /// The min cut with the decided cells of `labels` tied to s (1) or t (0); `labels` must be closed.
-  Cut solve(const Labels& labels) {
+  /// The min cut with the decided cells of `labels` tied to s (1) or t (0); `labels` must be closed. Per
+  /// support, `off` (or empty: none) forbids orientations: bit 1 = cell_a inside, bit 2 = cell_b inside (3: the
+  /// support stays off the boundary). Returns nullopt when the constraints admit no labelling.
+  std::optional<Cut> solve(const Labels& labels, const std::vector<char>& off = {}) {
     auto capacity = boost::get(boost::edge_capacity, graph_);
+    const auto reverse = boost::get(boost::edge_reverse, graph_);
     for (int k = 0; k < n_; ++k) {
       capacity[source_edges_[k]] = labels[k] == 1 ? infinite_ : source_base_[k];
       capacity[sink_edges_[k]] = labels[k] == 0 ? infinite_ : sink_base_[k];
     }
+    for (std::size_t g = 0; g < support_edges_.size(); ++g) {
+      const char bits = off.empty() ? 0 : off[g];
+      capacity[support_edges_[g]] = bits & 1 ? infinite_ : support_forward_[g];
+      capacity[reverse[support_edges_[g]]] = bits & 2 ? infinite_ : support_backward_[g];
+    }
+    if (infinite_path()) return std::nullopt;
     std::vector<boost::default_color_type> color(n_ + 2);
     std::vector<long> distance(n_ + 2);
     std::vector<FlowTraits::edge_descriptor> pred(n_ + 2);
     const auto index = boost::get(boost::vertex_index, graph_);
     Cut cut;
     cut.value = boost::boykov_kolmogorov_max_flow(
-        graph_, capacity, boost::get(boost::edge_residual_capacity, graph_), boost::get(boost::edge_reverse, graph_),
+        graph_, capacity, boost::get(boost::edge_residual_capacity, graph_), reverse,
         boost::make_iterator_property_map(pred.begin(), index), boost::make_iterator_property_map(color.begin(), index),
         boost::make_iterator_property_map(distance.begin(), index), index, n_, n_ + 1);
     cut.labelling = source_side();
@@ -116,6 +128,9 @@ class FastBound {
       throw std::logic_error("exact: the integer max flow does not match its cut");
     return cut;
   }
+
+  /// Missing samples of the cut's own labelling: exactly floor(V / M), since V is its rounded energy.
+  long missing_samples(long long value) const { return static_cast<long>(value / sample_weight_); }
 
   /// The lower bound that a cut value proves (floor(V / M), (V mod M) * 2^-scale).
   EnergyBound decode(long long value) const {
@@ -126,8 +141,8 @@ class FastBound {
   using Graph = FlowGraph<long long>;
   int n_;
   Graph graph_;
-  std::vector<FlowTraits::edge_descriptor> source_edges_, sink_edges_;
-  std::vector<long long> source_base_, sink_base_, rounded_;
+  std::vector<FlowTraits::edge_descriptor> source_edges_, sink_edges_, support_edges_;
+  std::vector<long long> source_base_, sink_base_, rounded_, support_forward_, support_backward_;
   long long sample_weight_ = 1, infinite_ = 1;
   int scale_bits_ = 0;
 
@@ -162,6 +177,26 @@ class FastBound {
     reverse[e] = r;
     reverse[r] = e;
     return e;
+  }
+
+  /// An s-t path of infinite capacities: no finite cut (checked first: such flows would overflow).
+  bool infinite_path() const {
+    const auto capacity = boost::get(boost::edge_capacity, graph_);
+    std::vector<char> seen(n_ + 2, 0);
+    std::vector<int> stack{n_};
+    seen[n_] = 1;
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (auto [it, end] = boost::out_edges(v, graph_); it != end; ++it) {
+        const int w = static_cast<int>(boost::target(*it, graph_));
+        if (!seen[w] && capacity[*it] >= infinite_) {
+          seen[w] = 1;
+          stack.push_back(w);
+        }
+      }
+    }
+    return seen[n_ + 1];
   }
 
   /// Cells reachable from s through positive residual capacity: label 1.
@@ -200,9 +235,17 @@ class FastBound {
 
 // ---- the island rule ----
 
-/// Detects nodes none of whose completions is sample-connected (exact.hpp, "Pruning ... by islands").
+/// The island rule (exact.hpp): a patch of halfspace i that may still lie on b with i's orientation is "dead"
+/// when its component among such patches of i holds no sample of i - it would be in an island. A node with a
+/// dead definite patch has no sample-connected completion; elsewhere, dead patches forbid their support's
+/// orientation in the node's cut (every sample-connected completion avoids it, so the bound stays valid).
 class IslandRule {
  public:
+  struct Verdict {
+    bool hopeless = false;
+    std::vector<char> off;  ///< per support, the orientations dead patches forbid (FastBound::solve's bits)
+  };
+
   explicit IslandRule(const Problem& problem) : problem_(problem) {
     const Complex& c = problem.complex();
     for (const Junction& j : c.junctions)
@@ -212,7 +255,7 @@ class IslandRule {
             links_.emplace_back(j.patches[a], j.patches[b]);
   }
 
-  bool hopeless(const Labels& labels) const {
+  Verdict judge(const Labels& labels) const {
     const Complex& c = problem_.complex();
     const std::size_t count = c.patches.size();
     std::vector<char> possible(count, 0);
@@ -227,18 +270,34 @@ class IslandRule {
     std::vector<char> sampled(count, 0);
     for (std::size_t p = 0; p < count; ++p)
       if (possible[p] && !c.patches[p].samples.empty()) sampled[sets.find_set(static_cast<int>(p))] = 1;
+    Verdict verdict;
+    verdict.off.assign(problem_.support_count(), 0);
     for (std::size_t p = 0; p < count; ++p) {
       const Patch& patch = c.patches[p];
-      const bool definite = labels[patch.inside_cell] == 1 && labels[patch.outside_cell] == 0;
-      if (definite && !sampled[sets.find_set(static_cast<int>(p))]) return true;
+      if (!possible[p] || sampled[sets.find_set(static_cast<int>(p))]) continue;
+      if (labels[patch.inside_cell] == 1 && labels[patch.outside_cell] == 0) {
+        verdict.hopeless = true;
+        return verdict;
+      }
+      const SupportTerm& s = problem_.supports()[patch.support];
+      verdict.off[patch.support] |= patch.inside_cell == s.cell_a ? 1 : 2;
     }
-    return false;
+    return verdict;
   }
 
  private:
   const Problem& problem_;
   std::vector<std::pair<int, int>> links_;  ///< patches of one halfspace sharing a junction
 };
+
+/// True when `labelling` puts a support on the boundary with an orientation `off` forbids.
+bool uses_forbidden(const Problem& problem, const Labelling& labelling, const std::vector<char>& off) {
+  for (int g : boundary_supports(problem, labelling)) {
+    const SupportTerm& s = problem.supports()[g];
+    if (off[g] & (labelling[s.cell_a] ? 1 : 2)) return true;
+  }
+  return false;
+}
 
 // ---- the search ----
 
@@ -328,16 +387,39 @@ class ExactSearch {
     for (int k = 0; k < problem_.cell_count(); ++k)
       if (problem_.complex().cells[k].outer && !implications_.assign(root.labels, k, 0))
         throw std::logic_error("exact: outer cells are forced inside");
+    seed_incumbent(root.labels);
     consider(std::move(root), nullptr);
+  }
+
+  /// The first incumbent, greedily: the root's fast cut (dead orientations forbidden), then the same with every
+  /// island's supports kept off the boundary, until it is sample-connected. It ends: each step keeps at least one
+  /// more support off, and with every support off only the empty labelling is left.
+  void seed_incumbent(const Labels& root) {
+    std::vector<char> off = islands_.judge(root).off;
+    FastBound::Cut cut = *bound_.solve(root, off);  // no cell forced 1: the empty labelling is always there
+    ++stats_.graph_cuts;
+    for (;;) {
+      const SampleConnectivity connectivity = sample_connectivity(problem_, cut.labelling);
+      if (connectivity.sample_connected()) break;
+      for (int island : connectivity.islands)
+        for (int p : connectivity.components[island].patches) off[problem_.complex().patches[p].support] = 3;
+      cut = *bound_.solve(root, off);
+      ++stats_.graph_cuts;
+    }
+    offer(cut.labelling, energy(problem_, cut.labelling));
   }
 
   /// Bounds a new node (reusing `keep`, a candidate that still fits it) and queues it unless it is pruned.
   void consider(Node node, const std::shared_ptr<Candidate>& keep) {
-    if (islands_.hopeless(node.labels)) {
+    const IslandRule::Verdict verdict = islands_.judge(node.labels);
+    if (!verdict.hopeless) {
+      const bool reuse = keep && !uses_forbidden(problem_, keep->cut.labelling, verdict.off);
+      node.candidate = reuse ? keep : solve(node.labels, verdict.off);
+    }
+    if (!node.candidate) {  // no completion is sample-connected
       ++stats_.pruned_by_islands;
       return;
     }
-    node.candidate = keep ? keep : solve(node.labels);
     if (bound_prunes(node.candidate->bound)) {
       ++stats_.pruned_by_bound;
       return;
@@ -347,12 +429,15 @@ class ExactSearch {
     stats_.max_queue = std::max(stats_.max_queue, static_cast<long>(queue_.size()));
   }
 
-  std::shared_ptr<Candidate> solve(const Labels& labels) {
-    auto candidate = std::make_shared<Candidate>();
-    candidate->cut = bound_.solve(labels);
-    candidate->bound = bound_.decode(candidate->cut.value);
+  /// The node's fast cut under the orientations its dead patches forbid; null when they admit no labelling.
+  std::shared_ptr<Candidate> solve(const Labels& labels, const std::vector<char>& off) {
     ++stats_.nodes_created;
     ++stats_.graph_cuts;
+    std::optional<FastBound::Cut> cut = bound_.solve(labels, off);
+    if (!cut) return nullptr;
+    auto candidate = std::make_shared<Candidate>();
+    candidate->cut = std::move(*cut);
+    candidate->bound = bound_.decode(candidate->cut.value);
     return candidate;
   }
 
@@ -406,6 +491,7 @@ class ExactSearch {
   /// When the fast bound left the node open although its candidate is exactly no better than the incumbent,
   /// the certified graph cut (an exact proof) may still close it.
   bool certified_bound_prunes(const Node& node) {
+    if (surely_better(*node.candidate)) return false;
     const Order o = compare(energy_of(*node.candidate), incumbent_energy_, options_.compare);
     if (!(o == Order::Greater || (o == Order::Equal && !want_ties()))) return false;
     ++stats_.certified_bounds;
@@ -418,6 +504,19 @@ class ExactSearch {
     if (sample_connectivity(problem_, cut.labelling).sample_connected()) offer(cut.labelling, cut.energy);
     const Order p = compare(cut.energy, incumbent_energy_, options_.compare);
     return p == Order::Greater || (p == Order::Equal && !want_ties());
+  }
+
+  /// The candidate is certainly better than the incumbent, by its exact sample count and a double enclosure of
+  /// its measure (which spares the exact energy).
+  bool surely_better(const Candidate& candidate) const {
+    const long missing = bound_.missing_samples(candidate.cut.value);
+    if (missing != incumbent_energy_.missing_samples) return missing < incumbent_energy_.missing_samples;
+    DoubleCombination measure;
+    for (int g : boundary_supports(problem_, candidate.cut.labelling)) {
+      const auto& [lo, hi] = problem_.support_enclosures()[g];
+      measure.add(1, DoubleBounds{lo, hi});
+    }
+    return measure.bounds().hi < incumbent_lo_;
   }
 
   // -- candidates and the incumbent --

@@ -130,12 +130,12 @@ TEST_CASE("exact property 1b: exact = brute force on scenes rich in exact ties (
 TEST_CASE("exact property 2: exact = best-first where best-first is proven (medium scenes)",
           "[bsh][exact][property]") {
   rc::prop("same energy and tie count", [] {
-    const Scene2 scene = *gen_scene(small_scenes(9));
+    const Scene2 scene = *gen_scene(small_scenes(8));
     const Complex complex = arrange(scene).complex;
     const Problem problem(complex);
     ExtractOptions o;
     o.method = Method::BestFirst;
-    o.max_states = 300;
+    o.max_states = 150;  // best-first's cost grows fast: keep the cases that it proves quickly
     o.max_ties = kManyTies;
     const ExtractResult best = extract(problem, o);
     if (!best.optimal || !best.stopped_by.empty()) RC_DISCARD("best-first not proven");
@@ -146,7 +146,7 @@ TEST_CASE("exact property 2: exact = best-first where best-first is proven (medi
     if (best.ties.checked && !best.ties.capped && best.ties.certified && r.ties.certified)
       RC_ASSERT(r.ties.count == best.ties.count);
     RC_CLASSIFY(r.ties.count > 1, "tie");
-    RC_CLASSIFY(problem.cell_count() > 30, "more than 30 cells");
+    RC_CLASSIFY(problem.cell_count() > 20, "more than 20 cells");
   });
 }
 

@@ -243,52 +243,77 @@ class IslandRule {
  public:
   struct Verdict {
     bool hopeless = false;
+    std::vector<int> dead;  ///< the dead patches (none when hopeless)
     std::vector<char> off;  ///< per support, the orientations dead patches forbid (FastBound::solve's bits)
   };
 
-  explicit IslandRule(const Problem& problem) : problem_(problem) {
+  explicit IslandRule(const Problem& problem) : problem_(problem), neighbours_(problem.complex().patches.size()) {
     const Complex& c = problem.complex();
     for (const Junction& j : c.junctions)
-      for (std::size_t a = 0; a < j.patches.size(); ++a)
-        for (std::size_t b = a + 1; b < j.patches.size(); ++b)
-          if (c.patches[j.patches[a]].halfspace == c.patches[j.patches[b]].halfspace)
-            links_.emplace_back(j.patches[a], j.patches[b]);
+      for (int p : j.patches)
+        for (int q : j.patches)
+          if (p != q && c.patches[p].halfspace == c.patches[q].halfspace) neighbours_[p].push_back(q);
+    for (const Patch& patch : c.patches) {
+      const SupportTerm& s = problem.supports()[patch.support];
+      inside_.push_back(patch.inside_cell);
+      outside_.push_back(patch.outside_cell);
+      allowed_.push_back(s.allows(patch.inside_cell));
+      sampled_.push_back(!patch.samples.empty());
+      bit_.push_back(patch.inside_cell == s.cell_a ? 1 : 2);
+    }
   }
 
+  /// Dead patches are the possible ones that no possible sampled patch of their halfspace reaches.
   Verdict judge(const Labels& labels) const {
-    const Complex& c = problem_.complex();
-    const std::size_t count = c.patches.size();
-    std::vector<char> possible(count, 0);
+    const std::size_t count = inside_.size();
+    std::vector<char> possible(count, 0), alive(count, 0);
+    std::vector<int> stack;
     for (std::size_t p = 0; p < count; ++p) {
-      const Patch& patch = c.patches[p];
-      possible[p] = labels[patch.inside_cell] != 0 && labels[patch.outside_cell] != 1 &&
-                    problem_.supports()[patch.support].allows(patch.inside_cell);
+      possible[p] = allowed_[p] && labels[inside_[p]] != 0 && labels[outside_[p]] != 1;
+      if (possible[p] && sampled_[p]) {
+        alive[p] = 1;
+        stack.push_back(static_cast<int>(p));
+      }
     }
-    DisjointSets sets(count);
-    for (const auto& [p, q] : links_)
-      if (possible[p] && possible[q]) sets.union_set(p, q);
-    std::vector<char> sampled(count, 0);
-    for (std::size_t p = 0; p < count; ++p)
-      if (possible[p] && !c.patches[p].samples.empty()) sampled[sets.find_set(static_cast<int>(p))] = 1;
+    while (!stack.empty()) {
+      const int p = stack.back();
+      stack.pop_back();
+      for (int q : neighbours_[p])
+        if (possible[q] && !alive[q]) {
+          alive[q] = 1;
+          stack.push_back(q);
+        }
+    }
     Verdict verdict;
     verdict.off.assign(problem_.support_count(), 0);
     for (std::size_t p = 0; p < count; ++p) {
-      const Patch& patch = c.patches[p];
-      if (!possible[p] || sampled[sets.find_set(static_cast<int>(p))]) continue;
-      if (labels[patch.inside_cell] == 1 && labels[patch.outside_cell] == 0) {
+      if (!possible[p] || alive[p]) continue;
+      if (labels[inside_[p]] == 1 && labels[outside_[p]] == 0) {
         verdict.hopeless = true;
         return verdict;
       }
-      const SupportTerm& s = problem_.supports()[patch.support];
-      verdict.off[patch.support] |= patch.inside_cell == s.cell_a ? 1 : 2;
+      verdict.dead.push_back(static_cast<int>(p));
+      verdict.off[problem_.complex().patches[p].support] |= bit_[p];
     }
     return verdict;
   }
 
+  int inside(int p) const { return inside_[p]; }
+  int outside(int p) const { return outside_[p]; }
+
  private:
   const Problem& problem_;
-  std::vector<std::pair<int, int>> links_;  ///< patches of one halfspace sharing a junction
+  std::vector<std::vector<int>> neighbours_;  ///< per patch, the patches of its halfspace sharing a junction
+  std::vector<int> inside_, outside_;
+  std::vector<char> allowed_, sampled_, bit_;
 };
+
+/// True when `labelling` extends the partial assignment `labels`.
+bool agrees(const Labelling& labelling, const Labels& labels) {
+  for (std::size_t k = 0; k < labels.size(); ++k)
+    if (labels[k] >= 0 && labelling[k] != labels[k]) return false;
+  return true;
+}
 
 /// True when `labelling` puts a support on the boundary with an orientation `off` forbids.
 bool uses_forbidden(const Problem& problem, const Labelling& labelling, const std::vector<char>& off) {
@@ -411,9 +436,10 @@ class ExactSearch {
 
   /// Bounds a new node (reusing `keep`, a candidate that still fits it) and queues it unless it is pruned.
   void consider(Node node, const std::shared_ptr<Candidate>& keep) {
-    const IslandRule::Verdict verdict = islands_.judge(node.labels);
+    const IslandRule::Verdict verdict = settle(node.labels);
     if (!verdict.hopeless) {
-      const bool reuse = keep && !uses_forbidden(problem_, keep->cut.labelling, verdict.off);
+      const bool reuse = keep && agrees(keep->cut.labelling, node.labels) &&
+                         !uses_forbidden(problem_, keep->cut.labelling, verdict.off);
       node.candidate = reuse ? keep : solve(node.labels, verdict.off);
     }
     if (!node.candidate) {  // no completion is sample-connected
@@ -427,6 +453,25 @@ class ExactSearch {
     queue_.push_back(std::move(node));
     std::push_heap(queue_.begin(), queue_.end(), NodeAfter());
     stats_.max_queue = std::max(stats_.max_queue, static_cast<long>(queue_.size()));
+  }
+
+  /// Propagates the island rule into the labels until nothing changes: a dead patch may not have its inside
+  /// cell 1 and its outside cell 0 (Lemma 10.2 of proofs/bsh.md), so one of them decided forces the other.
+  /// Hopeless when that conflicts. The labels stay closed under the implications.
+  IslandRule::Verdict settle(Labels& labels) const {
+    for (;;) {
+      IslandRule::Verdict verdict = islands_.judge(labels);
+      if (verdict.hopeless) return verdict;
+      bool changed = false;
+      for (int p : verdict.dead) {
+        const int in = islands_.inside(p), out = islands_.outside(p);
+        bool ok = true;
+        if (labels[in] == 1 && labels[out] < 0) ok = implications_.assign(labels, out, 1), changed = true;
+        else if (labels[out] == 0 && labels[in] < 0) ok = implications_.assign(labels, in, 0), changed = true;
+        if (!ok) return IslandRule::Verdict{true, {}, {}};
+      }
+      if (!changed) return verdict;
+    }
   }
 
   /// The node's fast cut under the orientations its dead patches forbid; null when they admit no labelling.

@@ -1,6 +1,6 @@
 // The exact method (algorithms/bsh/exact.hpp): differential properties against the exhaustive oracle (small
 // scenes) and best-first (where it is proven), the kept Prop. 5.1 counterexample, and the limits. proofs/bsh.md
-// ("Exact: branch and bound") names these tests.
+// (entry 10) names these tests.
 #include <hsx/algorithms/bsh/exact.hpp>
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/complex/from_arrangement2.hpp>

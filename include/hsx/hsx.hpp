@@ -44,7 +44,8 @@
 namespace hsx {
 
 /// The BSH shape of `complex` (Definition 3.3) by `options.method` (beam K = 1 by default, as in the paper;
-/// Method::BestFirst proves optimality and enumerates ties). The complex must outlive the call only.
+/// Method::Exact proves optimality at any junction and enumerates ties, much faster than Method::BestFirst, which
+/// is the paper's complete search). The complex must outlive the call only.
 /// Returns the labelling (per cell, 1 inside), its energy, whether it is proven optimal, ties and statistics.
 bsh::ExtractResult extract_shape(const Complex& complex, const bsh::ExtractOptions& options = {});
 

@@ -248,11 +248,13 @@ std::vector<std::string> scene_files(const std::vector<std::string>& dirs) {
 }
 
 const bsh::Method kMethods[] = {bsh::Method::GraphCut, bsh::Method::Beam, bsh::Method::BestFirst,
-                                bsh::Method::BruteForce};
+                                bsh::Method::BruteForce, bsh::Method::Exact};
+constexpr int kMethodCount = 5;
+constexpr int kExact = 4;  ///< index of the exact method: the reference optimum for the beam verdict
 
 /// One scene: its arrangement, then every method, each timed repeatedly; `results` gets each method's result.
 BenchRow bench_scene(const std::string& file, const BenchOptions& o, const RepeatOptions& repeat,
-                     std::optional<bsh::ExtractResult> (&results)[4]) {
+                     std::optional<bsh::ExtractResult> (&results)[kMethodCount]) {
   BenchRow row;
   row.input = std::filesystem::path(file).filename().string();
   LoadedInput in;
@@ -270,7 +272,7 @@ BenchRow bench_scene(const std::string& file, const BenchOptions& o, const Repea
   else
     arrangement.status = "no scene";
   row.stages.push_back(arrangement);
-  for (int k = 0; k < 4; ++k) {
+  for (int k = 0; k < kMethodCount; ++k) {
     bsh::ExtractOptions options;
     options.method = kMethods[k];
     options.time_limit = o.time_limit;
@@ -291,27 +293,29 @@ void run_bench(const BenchOptions& o, OutputFiles& files) {
   report.mode = "scenes";
   report.input_name = "scene";
   report.size_names = {"cells", "patches"};
-  report.stage_names = {"arrange", "graphcut", "beam", "best-first", "brute-force"};
-  report.with_ratio = {0, 0, 1, 1, 1};
+  report.stage_names = {"arrange", "graphcut", "beam", "best-first", "brute-force", "exact"};
+  report.with_ratio = {0, 0, 1, 1, 1, 1};
   report.reference = 1;
-  report.note_names = {"bf states", "beam"};
+  report.note_names = {"bf states", "exact nodes", "beam"};
   report.repeat = repeat_options(o);
-  double totals[5] = {0, 0, 0, 0, 0};
+  double totals[kMethodCount + 1] = {};
   int beam_optimal = 0, compared = 0;
   for (const auto& file : scene_files(o.dirs)) {
-    std::optional<bsh::ExtractResult> results[4];
+    std::optional<bsh::ExtractResult> results[kMethodCount];
     BenchRow row = bench_scene(file, o, report.repeat, results);
     for (std::size_t k = 0; k < row.stages.size(); ++k)
       if (row.stages[k].timing) totals[k] += row.stages[k].timing->median;
     std::string verdict = "-";
-    if (results[1] && results[2] && results[2]->optimal) {
+    const auto& optimum = results[kExact] && results[kExact]->optimal ? results[kExact] : results[2];
+    if (results[1] && optimum && optimum->optimal) {
       ++compared;
-      const bool same = bsh::compare(results[1]->energy, results[2]->energy) != Order::Greater;
+      const bool same = bsh::compare(results[1]->energy, optimum->energy) != Order::Greater;
       beam_optimal += same;
       verdict = same ? "opt" : "subopt";
     }
     if (row.skipped.empty())
-      row.notes = {results[2] ? std::to_string(results[2]->stats.states_expanded) : "-", verdict};
+      row.notes = {results[2] ? std::to_string(results[2]->stats.states_expanded) : "-",
+                   results[kExact] ? std::to_string(results[kExact]->stats.nodes) : "-", verdict};
     report.rows.push_back(std::move(row));
   }
   std::ostringstream footer;
@@ -319,7 +323,8 @@ void run_bench(const BenchOptions& o, OutputFiles& files) {
   for (std::size_t k = 0; k < report.stage_names.size(); ++k)
     footer << (k ? ", " : " ") << report.stage_names[k] << " " << seconds_text(totals[k]);
   report.footer = {footer.str(), "beam K=1 optimal on " + std::to_string(beam_optimal) + " of " +
-                                     std::to_string(compared) + " scenes (bf states: best-first's states expanded)"};
+                                     std::to_string(compared) + " scenes (bf states: best-first's states expanded; exact nodes: "
+                                     "branch-and-bound nodes expanded)"};
   publish(report, o, files);
 }
 

@@ -1,4 +1,4 @@
-// hsx extract INPUT --method graphcut|beam|best-first|brute-force: the BSH shape (paper, Sections 3 and 5).
+// hsx extract INPUT --method graphcut|beam|best-first|brute-force|exact: the BSH shape (paper, Sections 3 and 5).
 #include <hsx/algorithms/bsh/extract.hpp>
 #include "cli/commands.hpp"
 #include <hsx/io/input.hpp>
@@ -21,6 +21,7 @@ struct ExtractCommandOptions {
   long max_states = 0;
   long max_graph_cuts = 0;
   long max_labellings = bsh::ExtractOptions().brute_force_limit;
+  long max_nodes = 0;
   double time_limit = 0;
   int precision_bits = 2048;
   int max_ties = 16;
@@ -36,6 +37,13 @@ std::string energy_text(const bsh::Energy& e) {
                   ", boundary measure " + e.measure.decimal_string(30);
   if (auto exact = e.measure.exact_string()) s += " = " + *exact;
   return s;
+}
+
+/// A lower bound or gap: "(missing samples, measure)".
+std::string bound_text(const bsh::EnergyBound& b) {
+  std::ostringstream out;
+  out << "(" << b.missing_samples << ", " << b.measure << ")";
+  return out.str();
 }
 
 std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bsh::ExtractResult& r,
@@ -69,16 +77,22 @@ std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bs
       << r.stats.states_expanded << " states expanded, " << r.stats.states_created << " created";
   if (r.stats.labellings_enumerated) out << ", " << r.stats.labellings_enumerated << " labellings enumerated";
   out << ", " << r.stats.seconds << " s\n";
+  if (r.method == bsh::Method::Exact)
+    out << "branch and bound " << r.stats.nodes << " nodes expanded, " << r.stats.pruned_by_bound
+        << " pruned by bound, " << r.stats.pruned_by_islands << " by islands, " << r.stats.certified_bounds
+        << " certified bounds; lower bound " << bound_text(r.stats.lower_bound) << ", gap "
+        << bound_text(r.stats.gap) << " (largest " << bound_text(r.stats.max_gap) << ")\n";
   return out.str();
 }
 
 void run_extract(const ExtractCommandOptions& o) {
   const auto method = bsh::method_from_string(o.method);
-  if (!method) throw InputError("--method: unknown method \"" + o.method + "\" (graphcut, beam, best-first, brute-force)");
+  if (!method) throw InputError("--method: unknown method \"" + o.method + "\" (graphcut, beam, best-first, brute-force, exact)");
   if (o.beam_width < 1) throw InputError("--beam-width: must be at least 1");
   if (o.max_states < 0) throw InputError("--max-states: must be >= 0");
   if (o.max_graph_cuts < 0) throw InputError("--max-graph-cuts: must be >= 0");
   if (o.max_labellings < 1) throw InputError("--max-labellings: must be at least 1");
+  if (o.max_nodes < 0) throw InputError("--max-nodes: must be >= 0");
   if (o.time_limit < 0) throw InputError("--time-limit: must be >= 0");
   if (o.precision_bits < 64) throw InputError("--precision: at least 64 bits");
   OutputFiles out;  // checked before computing, written all or none at the end
@@ -94,16 +108,18 @@ void run_extract(const ExtractCommandOptions& o) {
   options.max_states = o.max_states;
   options.max_graph_cuts = o.max_graph_cuts;
   options.brute_force_limit = o.max_labellings;
+  options.max_nodes = o.max_nodes;
   options.time_limit = o.time_limit;
   options.max_ties = o.max_ties;
   options.compare.max_bits = o.precision_bits;
   if (!o.quiet)
     options.progress = [](const bsh::SearchProgress& p) {
-      std::cerr << "\r[hsx] states expanded " << p.states_expanded << ", queue " << p.queue_size << ", graph cuts "
-                << p.graph_cuts;
+      std::cerr << "\r[hsx] " << (p.lower_bound ? "nodes " : "states expanded ") << p.states_expanded << ", queue "
+                << p.queue_size << ", graph cuts " << p.graph_cuts;
       if (p.best_energy)
         std::cerr << ", best so far " << p.best_energy->missing_samples << " missing / "
                   << p.best_energy->measure.decimal_string(12);
+      if (p.lower_bound) std::cerr << ", lower bound " << bound_text(*p.lower_bound);
       std::cerr << "      " << std::flush;
     };
   const bsh::Problem problem(in.complex());
@@ -137,14 +153,16 @@ void add_extract_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("extract", "Extract the BSH shape (orientation-preserving, sample-connected, "
                                                 "least energy) of a scene or a complex");
   cmd->add_option("INPUT", o->input, "hsx-scene/1 or hsx-complex/1 JSON file")->required();
-  cmd->add_option("--method", o->method, "graphcut | beam | best-first | brute-force (default beam)");
+  cmd->add_option("--method", o->method, "graphcut | beam | best-first | brute-force | exact (default beam)");
   cmd->add_option("--beam-width", o->beam_width, "K for the beam search (default 1, as in the paper)");
   cmd->add_option("--max-states", o->max_states, "stop after expanding N states (0: no limit; deterministic)");
+  cmd->add_option("--max-nodes", o->max_nodes,
+                  "exact: stop after expanding N branch-and-bound nodes (0: no limit; deterministic)");
   cmd->add_option("--max-graph-cuts", o->max_graph_cuts, "stop after N graph cuts (0: no limit; deterministic)");
   cmd->add_option("--time-limit", o->time_limit,
                   "stop after S seconds of search (0: no limit; reading and arranging the input are not counted), "
                   "brute force included; where it stops, hence the result, depends on the machine's speed and "
-                  "load: --max-states and --max-graph-cuts do not")
+                  "load: --max-states, --max-nodes and --max-graph-cuts do not")
       ->check(seconds());
   cmd->add_option("--max-labellings", o->max_labellings,
                   "brute force: refuse (exit 2) inputs with more than N orientation-preserving labellings "

@@ -163,6 +163,19 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
                        {"states_created", r.stats.states_created},
                        {"max_queue", r.stats.max_queue},
                        {"labellings_enumerated", r.stats.labellings_enumerated}};
+  if (r.method == bsh::Method::Exact) {
+    auto bound = [](const bsh::EnergyBound& b) {
+      return nlohmann::json{{"missing_samples", b.missing_samples}, {"measure", b.measure}};
+    };
+    stats["branch_and_bound"] = {{"nodes", r.stats.nodes},
+                                 {"nodes_created", r.stats.nodes_created},
+                                 {"pruned_by_bound", r.stats.pruned_by_bound},
+                                 {"pruned_by_islands", r.stats.pruned_by_islands},
+                                 {"certified_bounds", r.stats.certified_bounds},
+                                 {"lower_bound", bound(r.stats.lower_bound)},
+                                 {"gap", bound(r.stats.gap)},
+                                 {"max_gap", bound(r.stats.max_gap)}};
+  }
   if (include_seconds) stats["seconds"] = r.stats.seconds;
   j["stats"] = stats;
   return j;

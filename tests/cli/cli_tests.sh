@@ -190,6 +190,51 @@ if ((rc == 2)); then pass; else fail "no subcommand: exit $rc, expected 2"; fi
 rc=$?
 if ((rc == 2)); then pass; else fail "unknown option: exit $rc, expected 2"; fi
 
+# ---- extract --method exact: the oracle's energy and tie count on every bundled scene and the Prop. 5.1
+# counterexample; --max-nodes stops it with a lower bound and no claim of optimality ----
+for input in "${scenes[@]}" "$ROOT/data/counterexamples/prop51-concurrent-lines.json"; do
+  name="$(basename "$input" .json)"
+  if "$HSX" extract "$input" --method exact --json "$TMP/exact-$name.json" -q &&
+    "$HSX" extract "$input" --method brute-force --json "$TMP/brute-$name.json" -q &&
+    why="$(python3 - "$TMP/exact-$name.json" "$TMP/brute-$name.json" <<'EOF'
+import json, sys
+e, b = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))
+problems = []
+if e["method"] != "exact" or e["optimal"] is not True or "stopped_by" in e:
+    problems.append("method/optimal/stopped_by %r %r %r" % (e["method"], e["optimal"], e.get("stopped_by")))
+if e["energy"]["missing_samples"] != b["energy"]["missing_samples"] or \
+   e["energy"]["measure"]["decimal"] != b["energy"]["measure"]["decimal"]:
+    problems.append("energy %r vs brute force %r" % (e["energy"], b["energy"]))
+if e["ties"]["count"] != b["ties"]["count"]:
+    problems.append("ties %r vs %r" % (e["ties"], b["ties"]))
+bb = e["stats"].get("branch_and_bound", {})
+for key in ("nodes", "pruned_by_bound", "pruned_by_islands", "lower_bound", "gap", "max_gap"):
+    if key not in bb:
+        problems.append("stats.branch_and_bound.%s missing" % key)
+if bb.get("gap") != {"missing_samples": 0, "measure": 0.0}:
+    problems.append("gap %r after a finished search" % bb.get("gap"))
+if problems:
+    print("; ".join(problems))
+    sys.exit(1)
+EOF
+)"; then pass; else fail "extract --method exact $name: ${why:-exit non-zero}"; fi
+done
+if "$HSX" extract "$ROOT/data/scenes/star.json" --method exact --max-nodes 1 --json "$TMP/exact-stopped.json" \
+  >"$TMP/exact-stopped.txt" 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+ok = d["optimal"] is False and d.get("stopped_by") == "max-nodes" and d["ties"]["checked"] is False and \
+     d["sample_connected"] is True and "lower_bound" in d["stats"]["branch_and_bound"]
+sys.exit(0 if ok else 1)' "$TMP/exact-stopped.json" && grep -q "lower bound" "$TMP/exact-stopped.txt"; then
+  pass
+else
+  fail "extract --method exact --max-nodes 1: not reported as stopped with a lower bound"
+fi
+"$HSX" extract "$ROOT/data/scenes/star.json" --method exact --max-nodes -1 >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--max-nodes" "$TMP/stderr.txt"; then pass; else fail "--max-nodes -1: exit $rc"; fi
+
 # ---- bench: repeated measurements, medians and repetition counts in CSV and JSON ----
 mkdir -p "$TMP/bench"
 cp "$ROOT/data/scenes/lens.json" "$TMP/bench/"
@@ -200,7 +245,7 @@ import csv, json, sys
 problems = []
 rows = list(csv.DictReader(open(sys.argv[1])))
 stages = [r["stage"] for r in rows]
-if stages != ["arrange", "graphcut", "beam", "best-first", "brute-force"]:
+if stages != ["arrange", "graphcut", "beam", "best-first", "brute-force", "exact"]:
     problems.append("CSV stages %r" % stages)
 for r in rows:
     if r["scene"] != "lens.json" or r["status"] != "ok":
@@ -212,7 +257,7 @@ for r in rows:
         problems.append("%s: median %s" % (r["stage"], r["median_s"]))
     if not float(r["min_s"]) <= float(r["q1_s"]) <= float(r["median_s"]) <= float(r["q3_s"]) <= float(r["max_s"]):
         problems.append("%s: quartiles out of order" % r["stage"])
-    if r["stage"] in ("beam", "best-first", "brute-force") and not float(r["ratio_to_graphcut"]) > 0:
+    if r["stage"] in ("beam", "best-first", "brute-force", "exact") and not float(r["ratio_to_graphcut"]) > 0:
         problems.append("%s: no ratio" % r["stage"])
 doc = json.load(open(sys.argv[2]))
 if doc.get("format") != "hsx-bench/1" or doc.get("min_repetitions") != 6 or doc.get("min_seconds") != 0.001:

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <set>
 #include <stdexcept>
 
 namespace hsx::test {
@@ -122,6 +123,127 @@ Scene2 make_scene(const Box2& domain, std::vector<Halfspace2> halfspaces) {
 }
 
 std::string scene_text(const Scene2& scene) { return write_scene2(scene).dump(); }
+
+/// Scenes rich in exact ties and non-generic junctions: axis-aligned rectangles with corners on the integer grid
+/// {0..3}^2 (shared and collinear edges, T-junctions), some of them complemented, with samples at boundary points
+/// (multiples of 1/8) that lie inside patches; half of them contain a Fig. 6 pattern (below). Drawn at
+/// full size from the first case on (rapidcheck otherwise scales ranges down for early cases).
+rc::Gen<Scene2> gen_grid_scene() {
+  return rc::gen::resize(100, rc::gen::exec([]() -> Scene2 {
+    const Box2 box{pt(-1, -1), pt(5, 5)};
+    std::vector<Halfspace2> hs;
+    const bool fig6 = *rc::gen::inRange(0, 2) == 0;
+    const int n = *rc::gen::inRange(fig6 ? 0 : 1, fig6 ? 3 : 5);
+    for (int k = 0; k < n; ++k) {
+      auto span = [] {
+        const int a = *rc::gen::inRange(0, 4);
+        const int b = (a + *rc::gen::inRange(1, 4)) % 4;
+        return std::make_pair(std::min(a, b), std::max(a, b));
+      };
+      const auto [x0, x1] = span();
+      const auto [y0, y1] = span();
+      hs.push_back(polygon("P" + std::to_string(k), {pt(x0, y0), pt(x1, y0), pt(x1, y1), pt(x0, y1)},
+                           *rc::gen::inRange(0, 6) == 0));
+    }
+    // Half of the time, a Fig. 6 pattern: squares A, B with a square gap between them and a rectangle over all
+    // three, sampled at its two ends (on the rectangle and on A, B): two optimal boundaries if nothing
+    // else interferes.
+    std::vector<std::pair<std::string, PointQ2>> pattern_samples;
+    if (fig6) {
+      const bool vertical = *rc::gen::inRange(0, 2) == 0;
+      const int off = *rc::gen::inRange(0, 3);
+      auto at = [&](const Rational& u, const Rational& v) { return vertical ? pt(off + v, u) : pt(u, off + v); };
+      auto rect = [&](const std::string& name, int u0, int u1) {
+        return polygon(name, {at(u0, 0), at(u1, 0), at(u1, 1), at(u0, 1)});
+      };
+      const int k = static_cast<int>(hs.size());
+      hs.push_back(rect("P" + std::to_string(k), 0, 1));
+      hs.push_back(rect("P" + std::to_string(k + 1), 2, 3));
+      hs.push_back(rect("P" + std::to_string(k + 2), 0, 3));
+      const Rational half(1, 2);
+      pattern_samples = {{hs[k].name, at(0, half)},     {hs[k + 2].name, at(0, half)},
+                         {hs[k + 1].name, at(3, half)}, {hs[k + 2].name, at(3, half)}};
+    }
+    Scene2 scene = make_scene(box, hs);
+    const Arrangement2 arrangement = Arrangement2::build(scene);
+    for (const auto& [name, p] : pattern_samples)
+      if (sample_fits(arrangement, scene.find_halfspace(name), p)) add_sample(scene, name, p);
+    std::vector<std::pair<int, PointQ2>> fitting;
+    for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
+      const auto& v = scene.halfspaces[i].vertices;
+      for (std::size_t e = 0; e < v.size(); ++e)
+        for (int t = 1; t < 8; ++t) {
+          const PointQ2& a = v[e];
+          const PointQ2& b = v[(e + 1) % v.size()];
+          const Rational f = make_rational(t, 8);
+          PointQ2 p{a.x + (b.x - a.x) * f, a.y + (b.y - a.y) * f};
+          p.x.canonicalize();
+          p.y.canonicalize();
+          if (sample_fits(arrangement, i, p)) fitting.emplace_back(i, p);
+        }
+    }
+    if (fitting.empty()) {
+      validate_and_resolve(scene);
+      return scene;
+    }
+    const int samples = fig6 ? *rc::gen::inRange(0, 4) : *rc::gen::inRange(1, 9);
+    for (int k = 0; k < samples; ++k) {
+      const auto& [i, p] = fitting[*rc::gen::inRange(0, static_cast<int>(fitting.size()))];
+      add_sample(scene, scene.halfspaces[i].name, p);
+    }
+    validate_and_resolve(scene);
+    return scene;
+  }));
+}
+
+/// Generic scenes (every junction a transversal crossing) with exact ties: a rectangle R = [0,w]x[0,h] crossed by
+/// vertical lines at integer x (either orientation) and maybe the line y = h/2, samples at multiples of 1/4 inside
+/// patches. Half of them contain the tie of "bsh unit: Fig. 6 (generic)": a 2 x 2 room between x = a and
+/// x = a + 2 with samples on both lines, on R's top and bottom over the room, and on R's two ends.
+rc::Gen<Scene2> gen_rooms_scene() {
+  return rc::gen::resize(100, rc::gen::exec([]() -> Scene2 {
+    const bool tie = *rc::gen::inRange(0, 2) == 0;
+    const int w = *rc::gen::inRange(tie ? 5 : 3, 7), h = tie ? 2 : *rc::gen::inRange(1, 3);
+    std::vector<Halfspace2> hs{polygon("R", {pt(0, 0), pt(w, 0), pt(w, h), pt(0, h)})};
+    std::set<int> used;
+    std::vector<std::pair<std::string, PointQ2>> pattern_samples;
+    if (tie) {
+      // The generic tie of "bsh unit: Fig. 6 (generic)": a 2 x 2 room between x = a and x = a + 2.
+      const int a = *rc::gen::inRange(1, w - 2);
+      used = {a, a + 2};
+      hs.push_back(halfplane("x" + std::to_string(a) + "-", pt(1, 0), a));
+      hs.push_back(halfplane("x" + std::to_string(a + 2) + "+", pt(-1, 0), -(a + 2)));
+      pattern_samples = {{hs[1].name, pt(a, 1)}, {hs[2].name, pt(a + 2, 1)}, {"R", pt(a + 1, 0)},
+                         {"R", pt(a + 1, 2)},    {"R", pt(0, 1)},           {"R", pt(w, 1)}};
+    }
+    const int n = *rc::gen::inRange(tie ? 0 : 1, tie ? 2 : 4);
+    for (int k = 0; k < n; ++k) {
+      const int c = *rc::gen::inRange(1, w);
+      if (!used.insert(c).second) continue;
+      const int sign = *rc::gen::inRange(0, 2) ? 1 : -1;
+      hs.push_back(halfplane("x" + std::to_string(c) + (sign > 0 ? "-" : "+"), pt(sign, 0), sign * c));
+    }
+    if (*rc::gen::inRange(0, 2)) hs.push_back(halfplane("y", pt(0, 1), make_rational(h, 2)));
+    Scene2 scene = make_scene(Box2{pt(-1, -1), pt(w + 1, h + 1)}, hs);
+    const Arrangement2 arrangement = Arrangement2::build(scene);
+    std::vector<std::pair<int, PointQ2>> fitting;
+    for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i)
+      for (int x = 0; x <= 4 * w; ++x)
+        for (int y = 0; y <= 4 * h; ++y) {
+          const PointQ2 p = pt(make_rational(x, 4), make_rational(y, 4));
+          if (scene.halfspaces[i].side(p) == 0 && sample_fits(arrangement, i, p)) fitting.emplace_back(i, p);
+        }
+    for (const auto& [name, p] : pattern_samples)
+      if (sample_fits(arrangement, scene.find_halfspace(name), p)) add_sample(scene, name, p);
+    const int samples = tie ? *rc::gen::inRange(0, 3) : *rc::gen::inRange(1, 9);
+    for (int k = 0; k < samples && !fitting.empty(); ++k) {
+      const auto& [i, p] = fitting[*rc::gen::inRange(0, static_cast<int>(fitting.size()))];
+      add_sample(scene, scene.halfspaces[i].name, p);
+    }
+    validate_and_resolve(scene);
+    return scene;
+  }));
+}
 
 }  // namespace hsx::test
 

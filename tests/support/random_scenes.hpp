@@ -83,6 +83,15 @@ void add_sample(Scene2& scene, const std::string& on, const PointQ2& at, bool ne
 /// validate_and_resolve called again).
 Scene2 make_scene(const Box2& domain, std::vector<Halfspace2> halfspaces);
 
+// ---- scenes rich in exact ties (the BSH tie-enumeration properties) ----
+/// Axis-aligned rectangles on the integer grid {0..3}^2 (shared and collinear edges, T-junctions: non-generic
+/// junctions), some complemented, samples inside patches; half of them hold a Fig. 6 pattern (two optimal
+/// boundaries). See random_scenes.cpp.
+rc::Gen<Scene2> gen_grid_scene();
+/// Generic scenes (every junction a transversal crossing) with exact ties: a rectangle crossed by vertical lines
+/// at integer x and maybe a horizontal one; half hold the generic Fig. 6 tie. See random_scenes.cpp.
+rc::Gen<Scene2> gen_rooms_scene();
+
 /// The scene as hsx-scene/1 JSON text (one line), for failure messages.
 std::string scene_text(const Scene2& scene);
 

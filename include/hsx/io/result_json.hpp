@@ -10,7 +10,11 @@
 //                  their left; pieces are omitted when the complex has no geometry
 //    "inside_cells": [ids], "removed_patches": [ids], "steps": [[patch ids]...] (beam), "tied": [[cell ids]...],
 //    "stats": {"graph_cuts", "uncertified_cuts", "states_expanded", "states_created", "max_queue",
-//              "labellings_enumerated", "seconds"}}
+//              "labellings_enumerated", "seconds",
+//              "branch_and_bound" (exact only): {"nodes", "nodes_created", "pruned_by_bound", "pruned_by_islands",
+//                "certified_bounds", "lower_bound", "gap", "max_gap"}}}   bounds and gaps as
+//                {"missing_samples", "measure" (a double: the bound rounded down; gaps incumbent's upper enclosure
+//                minus the bound)}
 // M = {"decimal", "exact"}; P = [x, y] exact strings.
 // "complex_id" is the identity of the input the cell ids refer to (complex_identity below); a reader refuses a
 // result whose identity is not that of its own input.

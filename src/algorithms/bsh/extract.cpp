@@ -1,4 +1,5 @@
 #include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/bsh/exact.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -14,12 +15,13 @@ const char* to_string(Method m) {
     case Method::Beam: return "beam";
     case Method::BestFirst: return "best-first";
     case Method::BruteForce: return "brute-force";
+    case Method::Exact: return "exact";
   }
   return "?";
 }
 
 std::optional<Method> method_from_string(const std::string& name) {
-  for (Method m : {Method::GraphCut, Method::Beam, Method::BestFirst, Method::BruteForce})
+  for (Method m : {Method::GraphCut, Method::Beam, Method::BestFirst, Method::BruteForce, Method::Exact})
     if (name == to_string(m)) return m;
   return std::nullopt;
 }
@@ -68,7 +70,7 @@ class SearchContext {
     const auto now = Clock::now();
     if (options_.progress && now - last_report_ > std::chrono::milliseconds(500)) {
       last_report_ = now;
-      SearchProgress p{stats_.states_expanded, queue_size, stats_.graph_cuts, best_feasible_energy()};
+      SearchProgress p{stats_.states_expanded, queue_size, stats_.graph_cuts, best_feasible_energy(), std::nullopt};
       options_.progress(p);
     }
     if (options_.max_states > 0 && stats_.states_expanded >= options_.max_states) stopped_by = "max-states";
@@ -344,6 +346,7 @@ ExtractResult run_brute_force(const Problem& problem, const ExtractOptions& opti
 
 ExtractResult extract(const Problem& problem, const ExtractOptions& options) {
   if (options.method == Method::BruteForce) return run_brute_force(problem, options);
+  if (options.method == Method::Exact) return extract_exact(problem, options);
   SearchContext ctx(problem, options);
   ExtractResult result;
   result.method = options.method;

@@ -17,16 +17,25 @@ enum class Method {
   GraphCut,   ///< Section 5.1 only: optimal without sample-connectedness
   Beam,       ///< Fig. 9 with the queue pruned to K states (the paper's practical setting, K = 1)
   BestFirst,  ///< Fig. 9, complete (Prop. 5.2)
-  BruteForce  ///< every orientation-preserving labelling: the oracle
+  BruteForce, ///< every orientation-preserving labelling: the oracle
+  Exact       ///< branch and bound over orientation-preserving labellings (bsh/exact.hpp): complete, any junctions
 };
 const char* to_string(Method m);
 std::optional<Method> method_from_string(const std::string& name);
 
+/// A proven lower bound on an energy, lexicographic like Energy: no labelling of the region it bounds has fewer
+/// missing samples, and those with exactly `missing_samples` have a measure >= `measure` (a double rounded down).
+struct EnergyBound {
+  long missing_samples = 0;
+  double measure = 0;
+};
+
 struct SearchProgress {
-  long states_expanded = 0;
+  long states_expanded = 0;  ///< exact: branch-and-bound nodes expanded
   long queue_size = 0;
   long graph_cuts = 0;
   std::optional<Energy> best_energy;  ///< best sample-connected energy found so far
+  std::optional<EnergyBound> lower_bound;  ///< exact: the proven lower bound on the optimum so far
 };
 
 /// Limits. A limit that stops a search returns the best sample-connected boundary found so far, not proven optimal,
@@ -40,6 +49,7 @@ struct ExtractOptions {
   int beam_width = 1;
   long max_states = 0;          ///< expanded states before stopping (0: no limit)
   long max_graph_cuts = 0;      ///< graph cuts before stopping (0: no limit)
+  long max_nodes = 0;           ///< exact: branch-and-bound nodes expanded before stopping (0: no limit)
   double time_limit = 0;        ///< seconds before stopping (0: no limit), brute force included
   bool enumerate_ties = true;   ///< complete methods: find every optimal boundary (up to max_ties)
   int max_ties = 16;
@@ -72,6 +82,15 @@ struct SearchStats {
   long states_created = 0;
   long max_queue = 0;
   long labellings_enumerated = 0;  ///< brute force
+  // Exact (branch and bound, bsh/exact.hpp): the proof of optimality in numbers.
+  long nodes = 0;               ///< nodes expanded (popped from the queue and not pruned there)
+  long nodes_created = 0;       ///< nodes whose bound was computed
+  long pruned_by_bound = 0;     ///< nodes dropped because their lower bound exceeds the incumbent
+  long pruned_by_islands = 0;   ///< nodes dropped by the island rule (no completion is sample-connected)
+  long certified_bounds = 0;    ///< exact certified graph cuts run to decide a bound the fast one left open
+  EnergyBound lower_bound;      ///< proven lower bound on the optimum at the end (= the energy when optimal)
+  EnergyBound gap;              ///< incumbent - lower_bound at the end: (missing samples, measure) differences
+  EnergyBound max_gap;          ///< the largest such gap over the search (lexicographic)
   double seconds = 0;
 };
 
@@ -86,7 +105,7 @@ struct ExtractResult {
   std::vector<std::vector<int>> steps;
   Ties ties;
   std::vector<Labelling> tied;   ///< the other optimal labellings when ties.count > 1
-  /// The limit that stopped the search for the optimum: "" (finished), "max-states", "max-graph-cuts",
+  /// The limit that stopped the search for the optimum: "" (finished), "max-states", "max-graph-cuts", "max-nodes" (exact),
   /// "time-limit" (then optimal is false). A limit that cut only the tie enumeration is in ties.stopped_by.
   std::string stopped_by;
   std::string optimality_note;   ///< how optimality was decided when the search alone could not prove it

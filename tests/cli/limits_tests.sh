@@ -80,7 +80,9 @@ expect 0 "stopped  best-first stopped by max-states" -- "$hsx" check "$lens" --m
 json c.json "d['passed'] and not d['complete'] and any(c['status'] == 'stopped' for c in d['checks'])"
 expect 0 "" -- "$hsx" check "$lens" --max-graph-cuts 5 --json c.json
 json c.json "d['passed'] and not d['complete']"
-expect 0 "skipped  brute force" -- "$hsx" check rooms5.json --max-labellings 100
+# Where brute force is too large, Prop. 5.2 is checked against the exact branch and bound instead.
+expect 0 "Prop. 5.2 (best-first = exact branch and bound; brute force too large) pass" -- \
+  "$hsx" check rooms5.json --max-labellings 100
 expect 2 "--time-limit" -- "$hsx" check "$lens" --time-limit nan
 expect 2 "--max-states" -- "$hsx" check "$lens" --max-states -1
 expect 0 "" -- "$hsx" check "$lens" --brute-force-limit 100000   # the old name still works

@@ -7,6 +7,7 @@
 # is shown to catch each kind of misbehaviour).
 set -u
 selftest=0
+suite="$(cd "$(dirname "$0")" && pwd)"
 if [ "${1:-}" = --selftest ]; then selftest=1; shift; fi
 hsx="$(realpath "${1:?usage: run.sh HSX DATA_DIR CASE_FILE...}")"
 data="$(realpath "${2:?usage: run.sh HSX DATA_DIR CASE_FILE...}")"
@@ -15,9 +16,10 @@ passed=0 failed=0 skipped=0 cases=0
 work="$(mktemp -d)"
 trap 'chmod -R u+rwx "$work" 2>/dev/null; rm -rf "$work"' EXIT
 
-# Substitutes the placeholders @hsx, @data and @tmp in $1.
+# Substitutes the placeholders @hsx, @data, @suite and @tmp in $1.
 expand() {
   local s="${1//@data/$data}"
+  s="${s//@suite/$suite}"
   s="${s//@hsx/$hsx}"
   printf '%s' "${s//@tmp/$tmp}"
 }
@@ -60,7 +62,9 @@ run_case() {
   local words
   eval "words=($(expand "$args"))"
   local got start=$SECONDS
-  (cd "$tmp" && ulimit -v "$memory" && exec timeout -k 2 "$time_limit" "$hsx" "${words[@]}") \
+  local bound=(-k 2 "$time_limit")
+  [ -z "$kill_with" ] || bound=(--preserve-status -k 2 -s "${kill_with% *}" "${kill_with#* }")
+  (cd "$tmp" && ulimit -v "$memory" && exec timeout "${bound[@]}" "$hsx" "${words[@]}") \
     </dev/null >"$tmp.out" 2>"$tmp.err"
   got=$?
   ((SECONDS - start < 3)) || echo "slow: $file: $name: $((SECONDS - start)) s"
@@ -95,7 +99,7 @@ run_case() {
 
 new_case() {
   run_case
-  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 skip_as_root=0
+  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 skip_as_root=0 kill_with=""
   stderr_parts=() stdout_parts=() setups=() creates=() afters=()
   tmp=""
   [ -n "$name" ] || return 0
@@ -135,6 +139,7 @@ for file in "$@"; do
       time) time_limit="$value" ;;
       memory) memory="$value" ;;
       skip-as-root) skip_as_root=1 ;;
+      kill) kill_with="$value" ;;
       *) echo "FAIL $file:$lineno: unknown key '$key'"; failed=$((failed + 1)) ;;
     esac
   done <"$file"

@@ -84,7 +84,7 @@ run_case() {
   snapshot "$tmp" after
   local path changes=""
   for path in "${!before[@]}" "${!after[@]}"; do
-    [ "${before[$path]-missing}" != "${after[$path]-missing}" ] || continue
+    [ "${before[$path]-missing}" != "${after[$path]-missing}" ] && [[ "$changes " != *" $path "* ]] || continue
     for created in "${creates[@]}"; do [[ "$path" == "$created" || "$path" == "$created"/* ]] && continue 2; done
     changes+=" $path"
   done

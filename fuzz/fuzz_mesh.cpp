@@ -4,24 +4,21 @@
 // edge shapes, volume and boundary when every face is reversed (the reader must flip it back). The sharpness angle
 // comes from the input's length, so exact (30, 45, 90, 135) and interval-decided angles are both explored. Every
 // accepted mesh then goes through NH-Rep's Algorithm 1, whose tree must pass check_tree.
+#include "fuzz_support.hpp"
+
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/geometry/mesh3.hpp>
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
-#include <iostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 namespace {
 
-[[noreturn]] void finding(const std::string& what) {
-  std::cerr << "fuzz_mesh: " << what << "\n";
-  std::abort();
-}
+[[noreturn]] void finding(const std::string& what) { hsx::fuzz::finding("fuzz_mesh", what); }
 
 }  // namespace
 

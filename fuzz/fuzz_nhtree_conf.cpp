@@ -1,21 +1,18 @@
 // Bytes -> NH-Rep `.conf` tree (io/nhrep_json.hpp, read_nhtree_conf) and the same bytes as a face-patch file. Bad
 // input must end in InputError; anything else (crash, sanitizer report, other exception, hang) is a finding. On
 // every accepted tree: ops alternate with depth, the canonical form is stable, and a tree compares equal to itself.
+#include "fuzz_support.hpp"
+
 #include <hsx/algorithms/nhrep/compare.hpp>
 #include <hsx/io/nhrep_json.hpp>
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
-#include <iostream>
 #include <string>
 
 namespace {
 
-[[noreturn]] void finding(const std::string& what) {
-  std::cerr << "fuzz_nhtree_conf: " << what << "\n";
-  std::abort();
-}
+[[noreturn]] void finding(const std::string& what) { hsx::fuzz::finding("fuzz_nhtree_conf", what); }
 
 }  // namespace
 

@@ -1,0 +1,64 @@
+// Bytes -> hsx-result/1 document (read_result_labelling) on a fixed small arrangement, then what the CLI does with a
+// solid read from a result file: describability, the BHC tree and NH-Rep's tree of the solid. Bad input must end in
+// InputError (an empty solid or one touching the domain's boundary is refused by the NH-Rep builder as such);
+// anything else is a finding. Checked on every accepted solid: describability agrees with BHC, and a BHC tree
+// evaluates to the solid on every cell.
+#include "fuzz_support.hpp"
+
+#include <hsx/algorithms/csg/bhc.hpp>
+#include <hsx/algorithms/csg/describability.hpp>
+#include <hsx/algorithms/nhrep/tree.hpp>
+#include <hsx/hsx.hpp>
+#include <hsx/io/exact_json.hpp>
+#include <hsx/io/result_json.hpp>
+#include <hsx/io/scene_json.hpp>
+
+namespace {
+
+constexpr const char* kTarget = "fuzz_result_json";
+
+// Two disks, a half-plane and a triangle (data/scenes/lens.json without its samples): 4 halfspaces, a dozen cells.
+constexpr const char* kScene = R"({"format": "hsx-scene/1", "dimension": 2, "domain": {"min": [-4, -4], "max": [6, 5]},
+  "halfspaces": [{"name": "A", "kind": "disk", "center": [0, 0], "radius": 2},
+                 {"name": "B", "kind": "disk", "center": [2, 0], "radius": 2},
+                 {"name": "C", "kind": "halfplane", "normal": [0, 1], "offset": 1.5},
+                 {"name": "T", "kind": "polygon", "vertices": [[1, -3], [4, -1], [-1, -1]], "complement": true}],
+  "samples": []})";
+
+const hsx::Scene2& scene() {
+  static const hsx::Scene2 s = hsx::read_scene_text(kScene);
+  return s;
+}
+
+const hsx::Arranged2& arranged() {
+  static const hsx::Arranged2 a = hsx::arrange(scene());
+  return a;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > 16384) return -1;
+  const hsx::Complex& complex = arranged().complex;
+  std::vector<char> solid;
+  try {
+    solid = hsx::read_result_labelling(hsx::parse_exact_json(hsx::fuzz::as_text(data, size)),
+                                       static_cast<int>(complex.cells.size()));
+  } catch (const hsx::InputError&) {
+    return 0;
+  }
+  if (solid.size() != complex.cells.size()) hsx::fuzz::finding(kTarget, "labelling of the wrong size");
+  const hsx::csg::Describability d = hsx::csg::describability(complex, solid);
+  const hsx::csg::BhcResult tree = hsx::csg::bhc(complex, solid);
+  if (tree.describable != d.describable) hsx::fuzz::finding(kTarget, "BHC and describability disagree");
+  if (tree.describable && (!tree.tree || !tree.verified || hsx::csg::evaluate(*tree.tree, complex) != solid))
+    hsx::fuzz::finding(kTarget, "a BHC tree that does not give the solid back");
+  try {
+    const hsx::nhrep::BuildResult nh = hsx::nhrep_tree(arranged(), solid);
+    const auto violations = hsx::nhrep::check_tree(nh);
+    if (!violations.empty()) hsx::fuzz::finding(kTarget, "NH-Rep tree check: " + violations.front());
+  } catch (const hsx::InputError&) {
+    // an empty solid, or one reaching the domain's boundary
+  }
+  return 0;
+}

@@ -504,7 +504,8 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--csg", o->csg, "or the target as a CSG expression");
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
     cmd->add_option("--exhaustive-patches", o->exhaustive_patches,
-                    "compute the true minimum when the boundary has at most this many patches (default 14)");
+                    "compute the true minimum when the boundary has at most this many patches (default 14)")
+        ->check(CLI::NonNegativeNumber);
     cmd->add_option("--out", o->out_path, "write the scene with the generated samples")
         ->check(output_path());
     cmd->add_option("--json", o->json_path, "write counts as JSON")

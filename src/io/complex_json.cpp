@@ -1013,6 +1013,7 @@ ComplexDocument read_document(const json& document) {
   const Names names(c.halfspace_names);
   if (auto f = root.get("domain")) doc.domain = read_domain(*f, c.dimension);
   const JsonField cells = root.at("cells");
+  if (cells.size() == 0) cells.fail("a complex has at least one cell (the domain itself, when nothing divides it)");
   const JsonField patches = root.at("patches");
   check_table_size(root, cells.size(), patches.size(), c.halfspace_names.size());
   if (auto g = root.get("geometry")) read_geometry(*g, names, cells.size(), doc, budget);

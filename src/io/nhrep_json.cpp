@@ -181,6 +181,12 @@ class ConfParser {
 
 [[noreturn]] void empty_file(const std::string& source) { throw InputError(source + ":1: empty file"); }
 
+/// A `.conf` whose lists hold no patch at all (`list = []`) is no Boolean tree.
+void require_leaves(const nhrep::Tree& tree, const std::string& source) {
+  if (tree.root < 0 || tree.subtree_leaves(tree.root).empty())
+    throw InputError(source + ": the tree has no patch at all (list = []): a Boolean tree needs at least one leaf");
+}
+
 bool blank(const std::string& text) {
   return std::all_of(text.begin(), text.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); });
 }
@@ -206,7 +212,9 @@ std::optional<nhrep::ReferenceEdge> graph_line(const std::string& line, const st
 
 nhrep::Tree read_nhtree_conf(const std::string& text, const std::string& source) {
   if (blank(text)) empty_file(source);
-  return ConfParser(text, source).parse();
+  nhrep::Tree tree = ConfParser(text, source).parse();
+  require_leaves(tree, source);
+  return tree;
 }
 
 std::vector<nhrep::ReferenceEdge> read_nhrep_patch_graph(const std::string& text, const std::string& source) {
@@ -243,6 +251,7 @@ NhrepReference read_nhrep_reference(const NhrepReferenceFiles& files) {
   ConfParser parser(text, files.tree);
   r.tree.emplace();
   r.tree->tree = parser.parse();
+  require_leaves(r.tree->tree, files.tree);
   if (files.face_patch.empty()) return r;
   r.tree->face_patch = read_face_patch(read_file(files.face_patch), files.face_patch);
   const std::set<int> listed(r.tree->face_patch.begin(), r.tree->face_patch.end());

@@ -133,9 +133,9 @@ struct DistinctCurves {
 class CurveCollector {
  public:
   void segment(const PointQ2& a, const PointQ2& b, int tag) {
-    const auto [lo, hi] = std::minmax(a, b, [](const PointQ2& p, const PointQ2& q) {
-      return p.x < q.x || (p.x == q.x && p.y < q.y);
-    });
+    const bool swapped = b.x < a.x || (b.x == a.x && b.y < a.y);  // the key is the lexicographically ordered pair
+    const PointQ2& lo = swapped ? b : a;
+    const PointQ2& hi = swapped ? a : b;
     add({Rational(0), lo.x, lo.y, hi.x, hi.y}, tag,
         [&] { return BaseCurve(Kernel::Segment_2(to_kernel(lo), to_kernel(hi))); });
   }

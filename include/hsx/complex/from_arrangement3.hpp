@@ -1,0 +1,27 @@
+// Building the complex from an exact 3D arrangement.
+#pragma once
+
+#include <hsx/complex/complex.hpp>
+#include <hsx/geometry/arrangement3.hpp>
+#include <hsx/geometry/scene3.hpp>
+
+namespace hsx {
+
+/// A 3D scene's arrangement and its complex, built together so that pictures and reports can refer from patches
+/// (Patch::pieces: triangle ids) back to the arrangement.
+struct Arranged3 {
+  Arrangement3 arrangement;
+  Complex complex;
+};
+
+/// Patches are maximal sets of triangles of one halfspace connected across edges that no other boundary meets
+/// (edges with exactly two triangles, both carrying that halfspace). Patch::pieces are their triangles,
+/// ascending. Triangles on the domain box give no patch. Cells are the arrangement's cells, in the same order.
+/// Cell::measure is the volume (zero when volumes were not computed), Patch::measure the exact area.
+Complex complex_from_arrangement(const Scene3& scene, const Arrangement3& arrangement);
+
+/// validate_and_resolve(Scene3&) must have been called on `scene`.
+Arranged3 arrange(const Scene3& scene, const ArrangementLimits& limits = {},
+                  const Arrangement3Options& options = {});
+
+}  // namespace hsx

@@ -1,0 +1,92 @@
+// The geometric content of a 3D hsx scene (`"dimension": 3`), independent of its file format (io/scene_json.hpp
+// reads hsx-scene/1 files, io/bsh_config.hpp the BSH authors' config.json).
+//
+// Conventions (owned here):
+// - A halfspace is a closed region of R^3; its inside is given below and swapped by `complement`.
+//     plane:  { x : normal . x <= offset }, normal non-zero (the outward normal, need not be unit). Its boundary is
+//             clipped to the domain box by the arrangement; it has no triangles here.
+//     every other kind (mesh, box, sphere, cylinder, cone, torus): the closed region bounded by `surface`, a
+//             closed, edge-manifold, consistently outward-oriented, non-degenerate triangle mesh with exact
+//             rational vertices. Curved primitives are replaced by their tessellation (geometry/tessellate3.hpp
+//             says exactly which vertices and triangles): hsx arranges the polyhedra, never the curved surfaces.
+// - The domain is an axis-aligned box containing every surface vertex and every sample. It is not a halfspace:
+//   planes are clipped to it, cells touching it are outer.
+// - Samples: `at` must lie exactly on the (tessellated) boundary of its halfspace; `near` is moved to the nearest
+//   point of that boundary (exact: the nearest point of a triangle with rational vertices to a rational point is
+//   rational), and `distance2` is the squared distance moved.
+#pragma once
+
+#include <hsx/geometry/mesh3.hpp>   // PointQ3
+#include <hsx/geometry/scene.hpp>   // InputError
+#include <hsx/kernel/rational.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace hsx {
+
+struct Box3 {
+  PointQ3 min, max;  ///< min < max in every coordinate
+  bool contains(const PointQ3& p) const {
+    return min.x <= p.x && p.x <= max.x && min.y <= p.y && p.y <= max.y && min.z <= p.z && p.z <= max.z;
+  }
+};
+
+/// A closed triangle surface with exact vertices: triangles are counter-clockwise seen from outside (their
+/// normal (b-a)x(c-a) points out of the enclosed region).
+struct TriangleSurface {
+  std::vector<PointQ3> vertices;
+  std::vector<std::array<int, 3>> triangles;  ///< 0-based vertex ids
+};
+
+enum class HalfspaceKind3 { Plane, Mesh, Box, Sphere, Cylinder, Cone, Torus };
+const char* to_string(HalfspaceKind3 kind);  ///< "plane", "mesh", "box", "sphere", "cylinder", "cone", "torus"
+
+struct Halfspace3 {
+  std::string name;
+  HalfspaceKind3 kind = HalfspaceKind3::Plane;
+  bool complement = false;
+  // plane
+  PointQ3 normal;
+  Rational offset;
+  // every other kind: the boundary, outward-oriented (complement does not flip it; it swaps inside and outside)
+  TriangleSurface surface;
+  std::string origin;  ///< where the surface came from, for messages: a mesh file, "sphere, 24 segments", ...
+
+  /// Exact side of a rational point: +1 strictly inside, 0 on the boundary, -1 strictly outside (complement
+  /// applied). For surfaces, by exact ray parity (O(triangles)).
+  int side(const PointQ3& p) const;
+};
+
+struct Sample3 {
+  int halfspace = -1;      ///< index into Scene3::halfspaces
+  PointQ3 given;           ///< as written in the file
+  bool snapped = false;    ///< true for `near`
+  PointQ3 location;        ///< exact point on the boundary (== given for `at`)
+  Rational distance2;      ///< squared distance from `given` to `location` (0 for `at`)
+};
+
+struct Scene3 {
+  std::string description;
+  Box3 domain;
+  bool domain_given = false;  ///< false: chosen by hsx (choose_domain3)
+  std::vector<Halfspace3> halfspaces;
+  std::vector<Sample3> samples;
+
+  int find_halfspace(const std::string& name) const;  ///< index or -1
+};
+
+/// Checks everything that needs geometry but not the arrangement, and resolves samples (see the conventions):
+/// plane normals non-zero; every surface closed, edge- and vertex-manifold, consistently oriented, with no
+/// zero-area triangle and positive enclosed volume (build_mesh3's checks); the domain (given or chosen) contains
+/// every surface vertex and sample; `at` samples exactly on their boundary, `near` samples snapped; at least one
+/// halfspace. Self-intersection of a surface is decided exactly by the arrangement (Arrangement3::build), which
+/// has the triangle pairs at hand. Throws InputError naming the halfspace or sample ("halfspaces[2] (\"C\"): ...").
+void validate_and_resolve(Scene3& scene);
+
+/// A box strictly containing every surface vertex and every sample, with margin; when the scene has planes, also
+/// every point where three planes meet; deterministic.
+Box3 choose_domain3(const Scene3& scene);
+
+}  // namespace hsx

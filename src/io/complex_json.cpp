@@ -2,6 +2,8 @@
 #include <hsx/io/complex_json.hpp>
 
 #include "geometry/planar_measures.hpp"
+#include "io/complex_json3.hpp"
+#include "io/complex_json_detail.hpp"
 #include <hsx/io/exact_json.hpp>
 #include <hsx/io/json_values.hpp>
 #include <hsx/kernel/interval.hpp>
@@ -16,7 +18,7 @@
 
 namespace hsx {
 
-namespace {
+namespace complex_json_detail {
 
 using json = nlohmann::json;
 
@@ -27,28 +29,6 @@ using json = nlohmann::json;
 constexpr std::size_t kMaxClosedFormChars = 200000;
 constexpr std::size_t kMaxClosedFormTerms = 4096;
 constexpr std::size_t kMaxRadicandChars = 1000;
-
-/// Work allowed for one document. The kernel merges square-root terms with a cost up to quadratic in their number,
-/// so each sum built from n pieces (a patch of n edges, a face walk of n steps, a closed form of n terms) costs n^2.
-/// Hsx's own largest legitimate documents (5000-vertex polygons) use a fraction of this.
-constexpr std::uint64_t kWorkBudget = std::uint64_t(1) << 27;
-/// Dense per-cell side vectors and the per-patch checks cost cells x halfspaces and patches x halfspaces.
-const std::uint64_t kMaxTableEntries = static_cast<std::uint64_t>(ArrangementLimits{}.max_side_entries);
-
-class Budget {
- public:
-  void spend(std::uint64_t n, const JsonField& where) {
-    const std::uint64_t cost = n > (std::uint64_t(1) << 31) ? kWorkBudget + 1 : n * n;
-    used_ += cost;
-    if (used_ > kWorkBudget) {
-      where.fail("the document is too large to check: its sums of terms exceed the work limit (" +
-                 std::to_string(kWorkBudget) + " term pairs)");
-    }
-  }
-
- private:
-  std::uint64_t used_ = 0;
-};
 
 struct Term {
   Rational coefficient;
@@ -411,25 +391,16 @@ std::vector<int> read_index_set(const JsonField& f, std::size_t count, const std
   return sorted;
 }
 
-class Names {
- public:
-  explicit Names(const std::vector<std::string>& names) {
-    for (std::size_t i = 0; i < names.size(); ++i) index_.emplace(names[i], static_cast<int>(i));
-  }
-  int operator()(const JsonField& f) const {
-    const std::string name = f.string();
-    auto it = index_.find(name);
-    if (it == index_.end()) f.fail("unknown halfspace " + describe_json(json(name)));
-    return it->second;
-  }
-
- private:
-  std::map<std::string, int> index_;
-};
 
 std::string name_of(const std::vector<std::string>& names, int h) {
   return describe_json(json(names.at(static_cast<std::size_t>(h))));
 }
+
+}  // namespace complex_json_detail
+
+namespace {
+
+using namespace complex_json_detail;  // NOLINT: this file's own helpers
 
 OneRoot read_one_root(const JsonField& f) {
   if (f.json().is_string()) {
@@ -630,10 +601,10 @@ void read_faces(const JsonField& jf, std::size_t cell_count, ComplexDocument& do
   }
 }
 
-/// The optional "geometry" section (2D only): the arrangement the cells and patches come from.
+/// The optional "geometry" section: the arrangement the cells and patches come from.
 void read_geometry(const JsonField& g, const Names& names, std::size_t cell_count, ComplexDocument& doc,
                    Budget& budget) {
-  if (doc.complex.dimension != 2) g.fail("a geometry section is only defined for dimension 2");
+  if (doc.complex.dimension == 3) return read_geometry3(g, names, cell_count, doc);
   g.check_keys({"vertices", "edges", "faces"}, "a geometry section");
   read_vertices(g.at("vertices"), doc);
   read_edges(g.at("edges"), names, cell_count, doc);
@@ -673,13 +644,16 @@ void read_halfspaces(const JsonField& f, Complex& c) {
   }
 }
 
-/// The optional "domain" box (2D only).
-Box2 read_domain(const JsonField& f, int dimension) {
-  if (dimension != 2) f.fail("only a 2D domain box is supported");
+/// The optional "domain" box.
+void read_domain(const JsonField& f, ComplexDocument& doc) {
+  if (doc.complex.dimension == 3) {
+    doc.domain3 = read_domain3(f);
+    return;
+  }
   f.check_keys({"min", "max"}, "a domain");
   Box2 box{f.at("min").point2(), f.at("max").point2()};
   if (!(box.min.x < box.max.x && box.min.y < box.max.y)) f.fail("min must be below max in both coordinates");
-  return box;
+  doc.domain = box;
 }
 
 /// Dense per-cell and per-patch tables over the halfspaces must stay within kMaxTableEntries.
@@ -728,10 +702,17 @@ Cell read_cell(const JsonField& f, std::size_t k, const Names& names, int dimens
 void read_cells(const JsonField& cells, const Names& names, ComplexDocument& doc, Budget& budget) {
   Complex& c = doc.complex;
   c.cells.resize(cells.size());
+  const std::vector<Rational> volumes =
+      doc.has_geometry && c.dimension == 3 ? geometry3_volumes(doc, cells.size()) : std::vector<Rational>();
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const JsonField f = cells.at(k);
     Cell& cell = c.cells[k] = read_cell(f, k, names, c.dimension, c.halfspace_names.size());
-    if (doc.has_geometry) {
+    if (!volumes.empty()) {
+      if (sgn(volumes[k]) <= 0)
+        f.fail("its triangles enclose a volume of " + exact_string(volumes[k]) + ", not a positive one");
+      cell.measure = Measure(volumes[k]);
+      if (auto m = f.get("measure")) check_measure(*m, cell.measure, "volume", budget);
+    } else if (doc.has_geometry) {
       cell.measure = doc.faces[k].area;
       if (auto m = f.get("measure")) check_measure(*m, cell.measure, "area", budget);
       ArrFace2& face = doc.faces[k];
@@ -739,7 +720,7 @@ void read_cells(const JsonField& cells, const Names& names, ComplexDocument& doc
       face.inside = cell.inside;
       if (cell.witness.size() == 2) face.interior = PointQ2{cell.witness[0], cell.witness[1]};
     } else {
-      cell.measure = positive_measure_from_fields(f.at("measure"), budget, "cell's area");
+      cell.measure = positive_measure_from_fields(f.at("measure"), budget, c.dimension == 3 ? "cell's volume" : "cell's area");
     }
   }
 }
@@ -765,7 +746,9 @@ Patch read_patch(const JsonField& f, std::size_t p, const Names& names, const Co
   }
   if (auto pieces = f.get("pieces"))
     for (std::size_t k = 0; k < pieces->size(); ++k)
-      patch.pieces.push_back(read_geometry_index(pieces->at(k), doc, doc.edges.size(), "edge", "piece"));
+      patch.pieces.push_back(c.dimension == 3
+                                 ? read_geometry_index(pieces->at(k), doc, doc.triangles3.size(), "triangle", "piece")
+                                 : read_geometry_index(pieces->at(k), doc, doc.edges.size(), "edge", "piece"));
   return patch;
 }
 
@@ -811,11 +794,12 @@ void read_patches(const JsonField& patches, const Names& names, ComplexDocument&
   for (std::size_t p = 0; p < patches.size(); ++p) {
     const JsonField f = patches.at(p);
     Patch& patch = c.patches[p] = read_patch(f, p, names, doc);
+    const bool d3 = c.dimension == 3;
     if (doc.has_geometry) {
-      patch.measure = patch_length(f, patch, doc, budget);
-      if (auto m = f.get("measure")) check_measure(*m, patch.measure, "length", budget);
+      patch.measure = d3 ? patch_area3(f, patch, doc, budget) : patch_length(f, patch, doc, budget);
+      if (auto m = f.get("measure")) check_measure(*m, patch.measure, d3 ? "area" : "length", budget);
     } else {
-      patch.measure = positive_measure_from_fields(f.at("measure"), budget, "patch's length");
+      patch.measure = positive_measure_from_fields(f.at("measure"), budget, d3 ? "patch's area" : "patch's length");
     }
   }
 }
@@ -971,7 +955,8 @@ void attach_junctions(const JsonField& patches, Complex& c, Budget& budget) {
 /// The optional "counts": each given count must match the document (vertices and edges only with geometry).
 void check_counts(const JsonField& counts, const ComplexDocument& doc) {
   const Complex& c = doc.complex;
-  counts.check_keys({"vertices", "edges", "cells", "outer_cells", "patches", "junctions", "samples"}, "counts");
+  counts.check_keys({"vertices", "edges", "triangles", "cells", "outer_cells", "patches", "junctions", "samples"},
+                    "counts");
   auto check = [&](const char* key, std::size_t actual, bool defined) {
     auto f = counts.get(key);
     if (!f || f->json().is_null()) return;
@@ -981,8 +966,10 @@ void check_counts(const JsonField& counts, const ComplexDocument& doc) {
       f->fail("is " + std::to_string(v) + " but the document has " + std::to_string(actual));
     }
   };
-  check("vertices", doc.vertices.size(), doc.has_geometry);
-  check("edges", doc.edges.size(), doc.has_geometry);
+  const bool d3 = c.dimension == 3;
+  check("vertices", d3 ? doc.vertices3.size() : doc.vertices.size(), doc.has_geometry);
+  check("edges", d3 ? edge_count3(doc.triangles3) : doc.edges.size(), doc.has_geometry);
+  if (d3) check("triangles", doc.triangles3.size(), doc.has_geometry);
   check("cells", c.cells.size(), true);
   check("outer_cells", static_cast<std::size_t>(c.outer_cell_count()), true);
   check("patches", c.patches.size(), true);
@@ -1011,13 +998,14 @@ ComplexDocument read_document(const json& document) {
   read_header(root, c);
   read_halfspaces(root.at("halfspaces"), c);
   const Names names(c.halfspace_names);
-  if (auto f = root.get("domain")) doc.domain = read_domain(*f, c.dimension);
+  if (auto f = root.get("domain")) read_domain(*f, doc);
   const JsonField cells = root.at("cells");
   if (cells.size() == 0) cells.fail("a complex has at least one cell (the domain itself, when nothing divides it)");
   const JsonField patches = root.at("patches");
   check_table_size(root, cells.size(), patches.size(), c.halfspace_names.size());
   if (auto g = root.get("geometry")) read_geometry(*g, names, cells.size(), doc, budget);
   read_cells(cells, names, doc, budget);
+  if (doc.has_geometry && c.dimension == 3) check_triangle_sides3(root.at("geometry").at("triangles"), doc);
   read_patches(patches, names, doc, budget);
   read_supports(root.get("supports"), patches, c);
   if (auto s = root.get("samples")) read_sample_sites(*s, names, c);
@@ -1087,23 +1075,22 @@ json cell_json(const Complex& c, std::size_t k) {
   return j;
 }
 
+/// What a document says about the geometry the complex came from; null members are left out.
+struct GeometryParts {
+  json domain;
+  json counts = json::object();  ///< vertices, edges (and triangles in 3D)
+  json geometry;
+};
+
 /// The document without its "cells".
-json complex_json_without_cells(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+json complex_json_without_cells(const Complex& c, GeometryParts parts) {
   auto name = [&](int h) { return c.halfspace_names.at(static_cast<std::size_t>(h)); };
   json doc = json::object();
   doc["format"] = kComplexFormat;
   doc["dimension"] = c.dimension;
   doc["halfspaces"] = c.halfspace_names;
-  if (domain != nullptr) {
-    doc["domain"] = json::object();
-    doc["domain"]["min"] = exact_pair(domain->min.x, domain->min.y);
-    doc["domain"]["max"] = exact_pair(domain->max.x, domain->max.y);
-  }
-  json counts = json::object();
-  if (geometry != nullptr) {
-    counts["vertices"] = geometry->vertices().size();
-    counts["edges"] = geometry->edges().size();
-  }
+  if (!parts.domain.is_null()) doc["domain"] = std::move(parts.domain);
+  json counts = std::move(parts.counts);
   counts["cells"] = c.cells.size();
   counts["outer_cells"] = c.outer_cell_count();
   counts["patches"] = c.patches.size();
@@ -1136,7 +1123,7 @@ json complex_json_without_cells(const Complex& c, const Arrangement2* geometry, 
     json j = json::object();
     j["id"] = k;
     j["patches"] = c.junctions[k].patches;
-    if (c.junctions[k].piece >= 0) j["vertex"] = c.junctions[k].piece;
+    if (c.dimension == 2 && c.junctions[k].piece >= 0) j["vertex"] = c.junctions[k].piece;
     junctions.push_back(std::move(j));
   }
   doc["junctions"] = std::move(junctions);
@@ -1150,8 +1137,22 @@ json complex_json_without_cells(const Complex& c, const Arrangement2* geometry, 
     samples.push_back(std::move(j));
   }
   doc["samples"] = std::move(samples);
+  if (!parts.geometry.is_null()) doc["geometry"] = std::move(parts.geometry);
+  return doc;
+}
 
+/// The 2D geometry parts: the domain, and the arrangement's vertices, edges and faces.
+GeometryParts geometry_parts(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+  auto name = [&](int h) { return c.halfspace_names.at(static_cast<std::size_t>(h)); };
+  GeometryParts parts;
+  if (domain != nullptr) {
+    parts.domain = json::object();
+    parts.domain["min"] = exact_pair(domain->min.x, domain->min.y);
+    parts.domain["max"] = exact_pair(domain->max.x, domain->max.y);
+  }
   if (geometry != nullptr) {
+    parts.counts["vertices"] = geometry->vertices().size();
+    parts.counts["edges"] = geometry->edges().size();
     json g = json::object();
     json vertices = json::array();
     for (std::size_t k = 0; k < geometry->vertices().size(); ++k) {
@@ -1211,23 +1212,33 @@ json complex_json_without_cells(const Complex& c, const Arrangement2* geometry, 
     g["vertices"] = std::move(vertices);
     g["edges"] = std::move(edges);
     g["faces"] = std::move(faces);
-    doc["geometry"] = std::move(g);
+    parts.geometry = std::move(g);
   }
-  return doc;
+  return parts;
 }
 
-}  // namespace
+/// The 3D geometry parts: the domain, and the arrangement's vertices and triangles.
+GeometryParts geometry_parts(const Complex& c, const Arrangement3* geometry, const Box3* domain) {
+  GeometryParts parts;
+  if (domain != nullptr) parts.domain = box3_json(*domain);
+  if (geometry != nullptr) {
+    parts.counts["vertices"] = geometry->vertices().size();
+    parts.counts["edges"] = geometry->edges().size();
+    parts.counts["triangles"] = geometry->triangles().size();
+    parts.geometry = geometry3_json(c, *geometry);
+  }
+  return parts;
+}
 
-json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
-  json doc = complex_json_without_cells(c, geometry, domain);
+json with_cells(const Complex& c, json doc) {
   json cells = json::array();
   for (std::size_t k = 0; k < c.cells.size(); ++k) cells.push_back(cell_json(c, k));
   doc["cells"] = std::move(cells);
   return doc;
 }
 
-std::string complex_json_text(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
-  json doc = complex_json_without_cells(c, geometry, domain);
+/// with_cells(c, doc).dump(2) + "\n", byte for byte, with the cells written as text.
+std::string text_with_cells(const Complex& c, json doc) {
   doc["cells"] = json::array();
   const std::string rest = doc.dump(2);
   // Keys are sorted, so the top-level "cells" comes first among the keys indented by two spaces; names inside
@@ -1252,6 +1263,24 @@ std::string complex_json_text(const Complex& c, const Arrangement2* geometry, co
   text.append(rest, at + placeholder.size(), std::string::npos);
   text += "\n";
   return text;
+}
+
+}  // namespace
+
+json complex_to_json(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+  return with_cells(c, complex_json_without_cells(c, geometry_parts(c, geometry, domain)));
+}
+
+std::string complex_json_text(const Complex& c, const Arrangement2* geometry, const Box2* domain) {
+  return text_with_cells(c, complex_json_without_cells(c, geometry_parts(c, geometry, domain)));
+}
+
+json complex3_to_json(const Complex& c, const Arrangement3* geometry, const Box3* domain) {
+  return with_cells(c, complex_json_without_cells(c, geometry_parts(c, geometry, domain)));
+}
+
+std::string complex3_json_text(const Complex& c, const Arrangement3* geometry, const Box3* domain) {
+  return text_with_cells(c, complex_json_without_cells(c, geometry_parts(c, geometry, domain)));
 }
 
 ComplexDocument complex_document_from_json(const json& document) { return read_document(document); }

@@ -1,5 +1,5 @@
-// The `hsx-complex/1` document: a complex (complex/complex.hpp), optionally with the exact 2D arrangement it came
-// from, as JSON. Written by hsx for inspection and read back so that another implementation can hand hsx its own
+// The `hsx-complex/1` document: a complex (complex/complex.hpp), optionally with the exact 2D or 3D arrangement it
+// came from, as JSON. Written by hsx for inspection and read back so that another implementation can hand hsx its own
 // arrangement.
 //
 // Layout (every rational is an exact string such as "-7/3"; one-root numbers are strings "a", "a + b*sqrt(c)",
@@ -7,8 +7,9 @@
 //   {
 //     "format": "hsx-complex/1", "dimension": 2,
 //     "halfspaces": ["A", "B"],
-//     "domain": {"min": [x, y], "max": [x, y]},                                     (optional)
-//     "counts": {"cells", "outer_cells", "patches", "junctions", "samples", ["vertices", "edges"]},  (optional)
+//     "domain": {"min": [x, y], "max": [x, y]},                       (optional; [x, y, z] in 3D)
+//     "counts": {"cells", "outer_cells", "patches", "junctions", "samples", ["vertices", "edges"],
+//                ["triangles" (3D)]},                                            (optional)
 //     "cells":     [{"id", "outer", "witness": [x, y], "inside": [names], "measure": M}],
 //     "patches":   [{"id", "halfspace": name, "inside_cell", "outside_cell", "measure": M, "samples": count,
 //                    "sample_ids": [...], "support", "junctions": [...], "pieces": [edge ids]}],
@@ -19,7 +20,13 @@
 //                   "edges": [{"id", "source", "target", "halfspaces": [names], "on_box", "left_face",
 //                              "right_face", "shape": "segment" | "arc", ("center", "radius", "ccw")}],
 //                   "faces": [{"id", "boundary": [[[edge, forward], ...], ...]}]}               (optional, 2D)
+//     "geometry":  {"vertices": [[x, y, z], ...],                                                    (optional, 3D)
+//                   "triangles": [{"vertices": [a, b, c], "halfspaces": [names], "front_inside": [bools],
+//                                  "on_box", "front_cell", "back_cell"}]}
 //   }
+// In 3D, patch "pieces" are triangle ids and the triangle conventions are Arrangement3's (geometry/arrangement3.hpp):
+// the front of [a, b, c] is the side (b - a) x (c - a) points to, cell -1 is outside the domain, `front_inside[k]`
+// says whether halfspaces[k]'s inside is on the front. Junctions carry no "vertex" in 3D.
 // A measure M is {"decimal": "<30 significant digits>", "exact": "<closed form>" | null}.
 //
 // Reading (complex_from_json) is strict: unknown fields, wrong types, out-of-range indices, unknown halfspace names
@@ -28,9 +35,14 @@
 // (checked when present), "supports" (absent: every patch is its own group), patch "support", "samples",
 // "sample_ids" and "junctions" (derived from the other lists when absent, checked when present), junction "vertex",
 // "junctions", "samples", "geometry", "witness", "pieces".
+// With a 3D geometry section the reader also checks that every triangle is non-degenerate and separates two
+// different cells (or a cell and the outside, on the box only), that the cells on its two sides are on the sides
+// its halfspaces say, that every cell's triangles form closed surfaces (each edge traversed as often in both
+// directions), and that each patch's triangles carry its halfspace and separate its two cells.
 // Measures:
-//   - with "geometry", patch lengths and cell areas are recomputed exactly from it (planar_measures.hpp), and a
-//     given "exact" or "decimal" must agree with the recomputed value (else an error naming the patch or cell);
+//   - with "geometry", patch lengths (areas) and cell areas (volumes) are recomputed exactly from it
+//     (planar_measures.hpp in 2D; in 3D sums of sqrt(q)/2 and signed tetrahedra), and a given "exact" or
+//     "decimal" must agree with the recomputed value (else an error naming the patch or cell);
 //   - without it, "exact" is used when present (a closed form: a sum of terms q, q*sqrt(m), sqrt(m) with rationals
 //     q and m >= 0); otherwise "decimal" is taken as exactly that decimal (0.1 means 1/10). When both are given,
 //     the decimal must agree with the exact value.
@@ -41,6 +53,7 @@
 
 #include <hsx/complex/complex.hpp>
 #include <hsx/geometry/arrangement2.hpp>
+#include <hsx/geometry/arrangement3.hpp>
 #include <hsx/geometry/scene.hpp>
 #include <hsx/kernel/measure.hpp>
 #include <hsx/kernel/one_root.hpp>
@@ -65,16 +78,27 @@ nlohmann::json complex_to_json(const Complex& complex, const Arrangement2* geome
 /// large documents and costs about 5 times less as text than as a JSON tree.
 std::string complex_json_text(const Complex& complex, const Arrangement2* geometry, const Box2* domain);
 
+/// The same for a complex of dimension 3, with the 3D arrangement it came from (may be null) and its domain (may be
+/// null).
+nlohmann::json complex3_to_json(const Complex& complex, const Arrangement3* geometry, const Box3* domain);
+/// complex3_to_json(...).dump(2) + "\n", byte for byte, written as complex_json_text is.
+std::string complex3_json_text(const Complex& complex, const Arrangement3* geometry, const Box3* domain);
+
 /// A complex read from a document, with what else it held.
 struct ComplexDocument {
   Complex complex;
-  std::optional<Box2> domain;
+  std::optional<Box2> domain;   ///< 2D documents
+  std::optional<Box3> domain3;  ///< 3D documents
   bool has_geometry = false;
   /// The "geometry" section as arrangement data (edge lengths and face areas recomputed exactly; face `inside`,
   /// `outer` and `interior` taken from the cells). Empty without geometry.
   std::vector<ArrVertex2> vertices;
   std::vector<ArrEdge2> edges;
   std::vector<ArrFace2> faces;
+  /// The 3D "geometry" section: vertices and triangles (front_cell/back_cell, halfspaces, front_inside, on_box,
+  /// area2 recomputed). Empty without geometry or in 2D.
+  std::vector<PointQ3> vertices3;
+  std::vector<ArrTriangle3> triangles3;
 };
 
 /// Reads and validates a document (see the header comment). Throws InputError naming the JSON path.

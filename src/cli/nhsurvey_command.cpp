@@ -216,6 +216,22 @@ void print_table(const std::vector<SurveyTally>& tallies, bool timings) {
   std::cout << out.str();
 }
 
+/// --keep DIR: an existing folder, or a new one whose parent exists (a mistyped path must not create a chain of
+/// folders).
+void check_keep_directory(const std::string& dir) {
+  if (dir.empty()) return;
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path path(dir);
+  if (fs::exists(path, ec)) {
+    if (!fs::is_directory(path, ec)) throw InputError("--keep: " + dir + " exists and is not a folder");
+    return;
+  }
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec))
+    throw InputError("--keep: the folder " + parent.string() + " (where " + dir + " would be made) does not exist");
+}
+
 int run_survey(const SurveyOptions& o) {
   if (o.random < 0) throw InputError("--random: must be >= 0");
   if (o.random_mode != "mixed" && o.random_mode != "csg" && o.random_mode != "cells")
@@ -224,6 +240,7 @@ int run_survey(const SurveyOptions& o) {
   if (o.max_states < 1) throw InputError("--max-states: must be at least 1");
   if (o.from < 1) throw InputError("--from: lines count from 1");
   if (o.limit < 0) throw InputError("--limit: must be >= 0");
+  check_keep_directory(o.keep_dir);
   std::vector<bsh::Method> methods;
   {
     std::stringstream list(o.methods);

@@ -61,6 +61,10 @@ nhrep::BuildResult nhrep_tree_of_mesh(const std::string& obj_path, const std::st
 std::string complex_json_text(const LoadedInput& input) {
   if (input.arranged)
     return complex_json_text(input.complex(), &input.arranged->arrangement, &input.scene->domain);
+  if (input.arranged3)
+    return complex3_json_text(input.complex(), &input.arranged3->arrangement, &input.scene3->domain);
+  if (input.document->complex.dimension == 3)
+    return complex3_json_text(input.complex(), nullptr, input.document->domain3 ? &*input.document->domain3 : nullptr);
   return complex_json_text(input.complex(), nullptr, input.document->domain ? &*input.document->domain : nullptr);
 }
 

@@ -1,13 +1,19 @@
 #include <hsx/io/input.hpp>
 
+#include <hsx/io/bsh_config.hpp>
 #include <hsx/io/exact_json.hpp>
 #include <hsx/io/scene_json.hpp>
 
+#include <filesystem>
+
 namespace hsx {
+
+namespace fs = std::filesystem;
 
 PlanarPieces LoadedInput::pieces() const {
   if (arranged) return {&arranged->arrangement.vertices(), &arranged->arrangement.edges()};
-  if (document && document->has_geometry) return {&document->vertices, &document->edges};
+  if (document && document->has_geometry && document->complex.dimension == 2)
+    return {&document->vertices, &document->edges};
   return {};
 }
 
@@ -25,8 +31,16 @@ LoadedInput load_input(const std::string& path, const ArrangementLimits& limits)
     return in;
   }
   try {
-    in.scene = read_scene2(doc);
-    in.arranged = arrange(*in.scene, limits);
+    if (is_bsh_config(doc)) {
+      in.scene3 = read_bsh_config(doc, fs::path(path).parent_path().string(), fs::path(path).filename().string());
+      in.arranged3 = arrange(*in.scene3, limits);
+    } else if (scene_dimension(doc) == 3) {
+      in.scene3 = read_scene3(doc, fs::path(path).parent_path().string());
+      in.arranged3 = arrange(*in.scene3, limits);
+    } else {
+      in.scene = read_scene2(doc);
+      in.arranged = arrange(*in.scene, limits);
+    }
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }

@@ -120,6 +120,13 @@ fi
 expect_rc 2 $? "nothing to survey"
 "$HSX" nhsurvey --random -3 >/dev/null 2>&1
 expect_rc 2 $? "--random -3"
+"$HSX" nhsurvey --random 2 --keep "$TMP/no/such/folder" >/dev/null 2>"$TMP/e.txt"
+expect_rc 2 $? "--keep under a missing folder"
+if [ -e "$TMP/no" ]; then fail "--keep under a missing folder created $TMP/no"; else pass; fi
+if grep -q "does not exist" "$TMP/e.txt"; then pass; else fail "--keep under a missing folder: message $(cat "$TMP/e.txt")"; fi
+: >"$TMP/a-file"
+"$HSX" nhsurvey --random 2 --keep "$TMP/a-file" >/dev/null 2>&1
+expect_rc 2 $? "--keep naming a file"
 "$HSX" nhsurvey "$TMP/does-not-exist.json" >/dev/null 2>"$TMP/e.txt"
 rc=$?
 expect_rc 2 $rc "missing scene"

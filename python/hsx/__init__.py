@@ -21,15 +21,16 @@ import os
 from typing import Any, Callable, Iterator, Optional
 
 from . import _hsx
-from ._hsx import (CancelToken, Cell, CheckResult, Complex, Conversion, CsgTree, Describability, Energy, Grade, InputError,
-                   Junction, Measure, Order, Patch, Result, SampleSite, Samples, Ties, Undecided, compare)
+from ._hsx import (CancelToken, Cell, CheckResult, Complex, Conversion, CsgTree, Describability, Energy, Grade,
+                   InputError, Junction, Measure, NhTree, Order, Patch, Result, SampleSite, Samples, Ties, Undecided,
+                   compare)
 from ._scene import Disk, HalfPlane, Polygon, Sample, Scene, exact
 
-__all__ = ["CancelToken", "Cell", "CheckResult", "Complex", "Conversion", "CsgTree", "Describability", "Energy", "Grade",
-           "InputError", "Junction", "Measure", "Order", "Patch", "Result", "SampleSite", "Samples", "Ties",
-           "Undecided", "compare", "Disk", "HalfPlane", "Polygon", "Sample", "Scene", "exact", "arrange", "load",
-           "extract", "grade", "check", "solid", "describe", "csg", "samples", "convert", "random_scene", "random_scenes",
-           "METHODS", "DEGENERACIES"]
+__all__ = ["CancelToken", "Cell", "CheckResult", "Complex", "Conversion", "CsgTree", "Describability", "Energy",
+           "Grade", "InputError", "Junction", "Measure", "NhTree", "Order", "Patch", "Result", "SampleSite", "Samples",
+           "Ties", "Undecided", "compare", "Disk", "HalfPlane", "Polygon", "Sample", "Scene", "exact", "arrange",
+           "load", "extract", "grade", "check", "solid", "describe", "csg", "samples", "convert", "nhtree",
+           "random_scene", "random_scenes", "METHODS", "DEGENERACIES"]
 
 METHODS = ("graphcut", "beam", "best-first", "brute-force", "exact")
 DEGENERACIES = _hsx.DEGENERACIES
@@ -81,7 +82,8 @@ def arrange(scene, *, max_cells: int = _MAX_CELLS, max_side_table: int = _MAX_SI
 
     ``scene``: an hsx.Scene, a dict (hsx-scene/1 or hsx-complex/1; numbers as in hsx.exact), JSON text (a string
     starting with "{"), a file path (str or os.PathLike), or a Complex (returned as is). ``max_cells``,
-    ``max_side_table``: the arrangement's size limits (docs/limits.md), refused beyond them with InputError.
+    ``max_side_table``: the arrangement's size limits (docs/limits.md; 0: no limit), refused beyond them with
+    InputError.
     """
     if isinstance(scene, Complex):
         return scene
@@ -198,6 +200,14 @@ def convert(scene_or_complex=None, csg: Optional[str] = None, shape=None, *, csg
         raise InputError("give a scene with csg= or shape=, or csgnet=")
     cx = arrange(scene_or_complex)
     return _hsx._convert(cx, solid(cx, csg=csg, shape=shape), search)
+
+
+def nhtree(scene_or_complex, csg: Optional[str] = None, shape=None, *, nest_holes: bool = False) -> NhTree:
+    """NH-Rep's Boolean tree of a 2D solid (see solid()): Algorithm 1 with patch decomposition as the paper reads
+    it, the structural checks and the exact evaluation with natural halfspaces (`hsx nhtree SCENE --csg E`).
+    ``nest_holes``: intersect holes with their part (an extension). Meshes: use the hsx program."""
+    cx = arrange(scene_or_complex)
+    return _hsx._nhtree(cx, solid(cx, csg=csg, shape=shape), nest_holes)
 
 
 def random_scene(seed: int, index: int = 0, **settings) -> Scene:

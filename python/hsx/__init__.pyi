@@ -3,7 +3,8 @@ import os
 from fractions import Fraction
 from typing import Any, Callable, Iterable, Iterator, List, Optional, Sequence, Tuple, Union
 
-from ._hsx import (BoolArray, CancelToken, Cell, CheckResult, Complex, Conversion, CsgTree, Describability, Energy, Grade,
+from ._hsx import (BoolArray, CancelToken, Cell, CheckResult, Complex, Conversion, CsgTree, Describability, Energy,
+                   Grade, NhTree,
                    InputError, Junction, Measure, Order, Patch, Result, SampleSite, Samples, Ties, Undecided,
                    compare)
 
@@ -82,5 +83,7 @@ def samples(scene_or_complex: SceneLike, target: Optional[Solid] = ..., csg: Opt
             search: str = ..., beam_width: int = ..., exhaustive_patches: int = ...) -> Samples: ...
 def convert(scene_or_complex: Optional[SceneLike] = ..., csg: Optional[str] = ..., shape: Optional[Solid] = ..., *,
             csgnet: Optional[str] = ..., search: str = ...) -> Conversion: ...
+def nhtree(scene_or_complex: SceneLike, csg: Optional[str] = ..., shape: Optional[Solid] = ..., *,
+           nest_holes: bool = ...) -> NhTree: ...
 def random_scene(seed: int, index: int = ..., **settings: Any) -> Scene: ...
 def random_scenes(seed: int, count: Optional[int] = ..., start: int = ..., **settings: Any) -> Iterator[Scene]: ...

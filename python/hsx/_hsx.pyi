@@ -209,5 +209,22 @@ class Conversion:
     def scene_json(self) -> str: ...
     def __bool__(self) -> bool: ...
 
+class NhTree:
+    tree: str
+    tree_ids: str
+    conf: str
+    leaf_names: List[str]
+    decompositions: int
+    structure_violations: List[str]
+    verdict: str
+    correct: bool
+    describable: bool
+    evaluation_violations: List[str]
+    missed: List[Tuple[Fraction, ...]]
+    added: List[Tuple[Fraction, ...]]
+    def to_json(self) -> str: ...
+    def svg(self) -> str: ...
+    def _repr_svg_(self) -> str: ...
+
 DEGENERACIES: Tuple[str, ...]
 DEFAULT_MAX_LABELLINGS: int

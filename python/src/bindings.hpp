@@ -81,6 +81,7 @@ void bind_numbers(py::module_& m);
 void bind_complex(py::module_& m);
 void bind_algorithms(py::module_& m);
 void bind_cancel(py::module_& m);
+void bind_nhrep(py::module_& m);
 
 }  // namespace hsxpy
 

@@ -30,8 +30,8 @@ py::list views(const InputPtr& input, std::size_t count) {
 
 hsx::ArrangementLimits limits_of(long max_cells, long max_side_table) {
   hsx::ArrangementLimits limits;
-  if (max_cells < 1) throw hsx::InputError("max_cells: must be at least 1");
-  if (max_side_table < 1) throw hsx::InputError("max_side_table: must be at least 1");
+  if (max_cells < 0) throw hsx::InputError("max_cells: must be >= 0 (0: no limit)");
+  if (max_side_table < 0) throw hsx::InputError("max_side_table: must be >= 0 (0: no limit)");
   limits.max_cells = max_cells;
   limits.max_side_entries = max_side_table;
   return limits;

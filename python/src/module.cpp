@@ -9,4 +9,5 @@ PYBIND11_MODULE(_hsx, m) {
   hsxpy::bind_cancel(m);
   hsxpy::bind_complex(m);
   hsxpy::bind_algorithms(m);
+  hsxpy::bind_nhrep(m);
 }

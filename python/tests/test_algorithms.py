@@ -176,6 +176,16 @@ def test_agrees_with_the_cli(hsx_program, scenes_dir, tmp_path, name):
         assert res.read_text() == hsx.extract(c, method=method).to_json(), method
 
 
+@pytest.mark.parametrize("name", ["lens", "concurrent", "tangencies"])
+def test_check_agrees_with_the_cli(hsx_program, scenes_dir, tmp_path, name):
+    scene = scenes_dir / f"{name}.json"
+    out = tmp_path / "check.json"
+    p = run(hsx_program, "check", scene, "--json", out)
+    assert p.returncode in (0, 3), p.stderr
+    cli = [(c["check"], c["status"], c["witness"]) for c in json.loads(out.read_text())["checks"]]
+    assert cli == [(c.name, c.status, c.witness) for c in hsx.check(scene)]
+
+
 def test_error_messages_match_the_cli(hsx_program, tmp_path):
     bad = tmp_path / "bad.json"
     bad.write_text('{"format": "hsx-scene/1", "dimension": 2, "halfspaces": '
@@ -202,3 +212,25 @@ def test_convert(lens):
         hsx.convert(csgnet="not a program")
     with pytest.raises(hsx.InputError, match="not a complex"):
         hsx.convert(lens.to_json(), csg="A")
+
+
+def test_nhtree_agrees_with_the_cli(hsx_program, scenes_dir, tmp_path, lens):
+    t = hsx.nhtree(lens, csg="(A | B) & C")
+    assert t.structure_violations == [] and t.verdict and t.correct in (True, False)
+    assert t.tree.startswith(("max(", "min(")) or t.tree.isdigit()
+    assert "list" in t.conf and "<svg" in t._repr_svg_()
+    assert any(name.lstrip("~") in lens.halfspaces for name in t.leaf_names if name)
+    out = tmp_path / "nh.json"
+    conf = tmp_path / "nh.conf"
+    p = run(hsx_program, "nhtree", scenes_dir / "lens.json", "--csg", "(A | B) & C", "--json", out, "--conf", conf)
+    assert p.returncode in (0, 3), p.stderr
+    assert f"tree: {t.tree}" in p.stdout
+    assert conf.read_text() == t.conf
+    cli = json.loads(out.read_text())
+    mine = json.loads(t.to_json())
+    cli.pop("input"), mine.pop("input")
+    assert mine == cli
+    with pytest.raises(hsx.InputError):
+        hsx.nhtree(lens, csg="A & ~A")  # an empty solid has no boundary
+    with pytest.raises(hsx.InputError, match="not a complex"):
+        hsx.nhtree(lens.to_json(), csg="A")

@@ -117,7 +117,8 @@ def test_input_errors_carry_the_cli_messages(tmp_path):
     with pytest.raises(hsx.InputError):
         hsx.arrange("{not json")
     with pytest.raises(hsx.InputError, match="max_cells"):
-        hsx.arrange(lens_like(), max_cells=0)
+        hsx.arrange(lens_like(), max_cells=-1)
+    assert len(hsx.arrange(lens_like(), max_cells=0).cells) > 2  # 0: no limit, as the program's --max-cells 0
     with pytest.raises(hsx.InputError):
         hsx.arrange(lens_like(), max_cells=2)
     with pytest.raises(TypeError):

@@ -43,6 +43,7 @@ def test_result_fields(lens):
     assert set(r.stats) >= {"graph_cuts", "states_expanded", "nodes", "lower_bound", "gap", "seconds"}
     assert r.stats["graph_cuts"] >= 1
     assert r.complex.identity == lens.identity
+    assert '"seconds"' in r.to_json(include_seconds=True) and '"seconds"' not in r.to_json()
     assert "<svg" in r.svg(show_removed=True, labels=True) and "<svg" in r._repr_svg_()
     assert "<svg" in lens._repr_svg_() and "c0" in lens.svg(labels=True)
 
@@ -144,6 +145,15 @@ def test_not_describable_has_mixed_terms():
     assert "<svg" in d._repr_svg_()
     t = hsx.csg(c2, shape=sol)
     assert not t.describable and t.text is None and t.mixed
+    assert t.separated_scene_json is None
+    sep = hsx.csg(c2, shape=sol, separators=True)  # separating half-planes added first, as `hsx csg --separators`
+    assert sep.separated_scene_json is not None and "hsx-scene/1" in sep.separated_scene_json
+    if sep.describable:
+        assert sep.verified and sep.text
+    else:
+        assert sep.mixed
+    with pytest.raises(hsx.InputError, match="max_separators"):
+        hsx.csg(c2, shape=sol, separators=True, max_separators=-1)
 
 
 def test_samples_generation(lens):

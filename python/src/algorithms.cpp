@@ -1,27 +1,18 @@
-// The algorithms: extract (every method, limits, ties, stats, steps), grade, check, describability, BHC trees,
-// GENERATE-SAMPLES and the random scene generator. Each function converts its arguments, runs the library's call
-// with the GIL released (inside a Guard where the library can be stopped) and wraps the result.
+// BSH: extract (every method, limits, ties, stats, steps), grade, check and GENERATE-SAMPLES. Each function
+// converts its arguments, runs the library's call with the GIL released (inside a Guard where the library can be
+// stopped) and wraps the result.
 #include "bindings.hpp"
 
 #include <hsx/algorithms/bsh/sample_scene.hpp>
 #include <hsx/algorithms/bsh/samples.hpp>
-#include <hsx/algorithms/csg/convert.hpp>
-#include <hsx/algorithms/csg/solid_tree.hpp>
-#include <hsx/geometry/random_scene.hpp>
-#include <hsx/io/csg_text.hpp>
-#include <hsx/io/csgnet.hpp>
-#include <hsx/io/exact_json.hpp>
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/scene_json.hpp>
 #include <hsx/io/svg.hpp>
-
-#include <algorithm>
 
 namespace hsxpy {
 namespace {
 
 namespace bsh = hsx::bsh;
-namespace csg = hsx::csg;
 
 struct ResultHandle {
   InputPtr input;
@@ -34,17 +25,6 @@ struct GradeHandle {
   std::shared_ptr<const bsh::Grade> grade;
 };
 
-struct DescribeHandle {
-  InputPtr input;
-  std::vector<char> solid;
-  csg::Describability d;
-};
-
-struct CsgHandle {
-  InputPtr input;
-  std::shared_ptr<const csg::SolidTree> tree;
-};
-
 struct SamplesHandle {
   InputPtr input;
   bsh::SampleGenResult r;
@@ -52,14 +32,6 @@ struct SamplesHandle {
 };
 
 // ---- extraction options, as the CLI checks them ----
-
-bsh::Method method_named(std::string name, const std::string& what) {
-  std::replace(name.begin(), name.end(), '_', '-');
-  const auto method = bsh::method_from_string(name);
-  if (!method)
-    throw hsx::InputError(what + ": unknown method \"" + name + "\" (graphcut, beam, best-first, brute-force, exact)");
-  return *method;
-}
 
 struct ExtractArgs {
   std::string method;
@@ -167,17 +139,6 @@ py::dict stats_dict(const bsh::SearchStats& s) {
   return d;
 }
 
-/// A picture of `input` with `fill` (per cell) and, optionally, highlighted patches; None without a scene.
-py::object filled_svg(const InputPtr& input, hsx::SvgOptions o) {
-  if (!input->scene) return py::none();
-  std::string svg;
-  {
-    py::gil_scoped_release release;
-    svg = hsx::arrangement_svg(*input->scene, input->arranged->arrangement, input->complex(), o);
-  }
-  return py::str(svg);
-}
-
 py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int width, const std::string& title) {
   hsx::SvgOptions o;
   o.width = width;
@@ -189,7 +150,7 @@ py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int
     o.highlight_patches.assign(h.input->complex().patches.size(), 0);
     for (int p : hsx::patches_of_supports(h.input->complex(), h.r().removed)) o.highlight_patches[p] = 1;
   }
-  return filled_svg(h.input, o);
+  return svg_picture(h.input, o);
 }
 
 void bind_result(py::module_& m) {
@@ -360,121 +321,6 @@ void bind_check(py::module_& m) {
         py::arg("max_graph_cuts"), py::arg("precision"), py::arg("cancel"));
 }
 
-// ---- CSG: solids, describability, BHC ----
-
-py::object mixed_term(const hsx::Complex& c, const csg::MixedTerm& t) {
-  py::dict signs;
-  for (int i = 0; i < c.halfspace_count() && i < static_cast<int>(t.signs.size()); ++i)
-    signs[py::str(c.halfspace_names[i])] = py::bool_(t.signs[i] != 0);
-  py::dict d;
-  d["signs"] = signs;
-  d["inside_cells"] = t.inside_cells;
-  d["outside_cells"] = t.outside_cells;
-  return std::move(d);
-}
-
-py::object describe_svg(const DescribeHandle& h, bool labels) {
-  hsx::SvgOptions o;
-  o.cell_fill = h.solid;
-  o.show_cell_ids = o.show_patch_ids = labels;
-  o.cell_marks.assign(h.solid.size(), 0);
-  for (const auto& t : h.d.mixed) {
-    for (int k : t.inside_cells) o.cell_marks[k] = 1;
-    for (int k : t.outside_cells) o.cell_marks[k] = 2;
-  }
-  return filled_svg(h.input, o);
-}
-
-void bind_csg(py::module_& m) {
-  m.def("_solid_from_csg",
-        [](const ComplexHandle& h, const std::string& expression) {
-          return bool_array(hsx::solid_from_csg(h.complex(), expression));
-        },
-        py::arg("complex"), py::arg("expression"));
-  m.def("_result_labelling",
-        [](const ComplexHandle& h, const std::string& json_text) {
-          return bool_array(hsx::read_result_labelling(hsx::parse_exact_json(json_text), h.complex()));
-        },
-        py::arg("complex"), py::arg("json_text"));
-  m.def("_flags", [](const ComplexHandle& h, py::handle labelling) {
-    return bool_array(flags_from(labelling, h.complex().cells.size(), "solid"));
-  });
-  py::class_<DescribeHandle>(m, "Describability", "Shapiro-Vossler describability of a solid by the halfspaces")
-      .def_property_readonly("describable", [](const DescribeHandle& h) { return h.d.describable; })
-      .def_property_readonly("terms", [](const DescribeHandle& h) { return h.d.terms; },
-                             "Non-empty canonical intersection terms")
-      .def_property_readonly("mixed",
-                             [](const DescribeHandle& h) {
-                               py::list l;
-                               for (const auto& t : h.d.mixed) l.append(mixed_term(h.input->complex(), t));
-                               return l;
-                             },
-                             "Mixed terms: signs per halfspace, inside and outside cells (the witnesses)")
-      .def("svg", &describe_svg, py::arg("labels") = false)
-      .def("_repr_svg_", [](const DescribeHandle& h) { return describe_svg(h, false); })
-      .def("__bool__", [](const DescribeHandle& h) { return h.d.describable; });
-  m.def("_describe", [](const ComplexHandle& h, py::handle solid) {
-    DescribeHandle d{h.input, flags_from(solid, h.complex().cells.size(), "solid"), {}};
-    py::gil_scoped_release release;
-    d.d = csg::describability(h.complex(), d.solid);
-    return d;
-  });
-
-  py::class_<CsgHandle>(m, "CsgTree", "Buchele-Crawford's BHC tree of a solid, verified on every cell")
-      .def_property_readonly("describable", [](const CsgHandle& h) { return h.tree->bhc.describable; })
-      .def_property_readonly("verified", [](const CsgHandle& h) { return h.tree->has_verified_tree(); })
-      .def_property_readonly("text",
-                             [](const CsgHandle& h) -> py::object {
-                               if (!h.tree->bhc.tree) return py::none();
-                               const hsx::Complex& c = h.tree->separated ? h.tree->separated->arranged.complex
-                                                                        : h.input->complex();
-                               return py::str(csg::to_text(*h.tree->bhc.tree, c.halfspace_names));
-                             },
-                             "The tree in hsx's CSG text, None when not describable")
-      .def_property_readonly("stats",
-                             [](const CsgHandle& h) {
-                               const csg::BhcResult& r = h.tree->bhc;
-                               py::dict d;
-                               d["depth"] = r.stats.depth;
-                               d["internal_nodes"] = r.stats.internal_nodes;
-                               d["leaves"] = r.stats.leaves;
-                               d["distinct_halfspaces"] = r.stats.distinct_halfspaces;
-                               d["duplicated_halfspaces"] = r.stats.duplicated_halfspaces;
-                               d["factored"] = r.factored;
-                               d["partitions"] = r.partitions;
-                               return d;
-                             })
-      .def_property_readonly("mixed",
-                             [](const CsgHandle& h) {
-                               const hsx::Complex& c = h.tree->separated ? h.tree->separated->arranged.complex
-                                                                        : h.input->complex();
-                               py::list l;
-                               for (const auto& t : h.tree->describability.mixed) l.append(mixed_term(c, t));
-                               return l;
-                             },
-                             "When not describable: the mixed terms")
-      .def_property_readonly("separated_scene_json",
-                             [](const CsgHandle& h) -> py::object {
-                               if (!h.tree->separated) return py::none();
-                               return py::str(hsx::write_scene2(h.tree->separated->scene).dump(2) + "\n");
-                             },
-                             "With separators=True and a solid not describable by the scene: the scene with the "
-                             "separating half-planes added")
-      .def("__bool__", [](const CsgHandle& h) { return h.tree->has_verified_tree(); });
-  m.def("_csg", [](const ComplexHandle& h, py::handle solid, bool separators, int max_separators) {
-    const std::vector<char> cells = flags_from(solid, h.complex().cells.size(), "solid");
-    if (max_separators < 0) throw hsx::InputError("max_separators: must be >= 0");
-    if (!h.input->scene && separators)
-      throw hsx::InputError("separators: needs a scene (separating half-planes are geometry), not a complex");
-    py::gil_scoped_release release;
-    const InputPtr& in = h.input;
-    auto tree = std::make_shared<csg::SolidTree>(
-        in->scene ? csg::build_tree(*in->scene, *in->arranged, cells, csg::SolidTreeOptions{separators, max_separators})
-                  : csg::build_tree(in->complex(), cells));
-    return CsgHandle{h.input, tree};
-  });
-}
-
 // ---- GENERATE-SAMPLES ----
 
 void bind_samples(py::module_& m) {
@@ -526,104 +372,6 @@ void bind_samples(py::module_& m) {
   });
 }
 
-// ---- conversion of CSG solids to BSH scenes ----
-
-bsh::Method search_named(const std::string& search) {
-  const bsh::Method m = method_named(search, "search");
-  if (m != bsh::Method::Beam && m != bsh::Method::BestFirst) throw hsx::InputError("search: beam or best-first");
-  return m;
-}
-
-void bind_convert(py::module_& m) {
-  py::class_<csg::ConversionReport>(m, "Conversion",
-                                    "A CSG solid as a BSH scene (`hsx convert`): samples from GENERATE-SAMPLES, "
-                                    "checked by extracting the scene back")
-      .def_property_readonly("ok", &csg::ConversionReport::ok, "The samples reproduce the solid and the round trip "
-                                                               "gives it back")
-      .def_readonly("round_trip", &csg::ConversionReport::round_trip)
-      .def_readonly("failure", &csg::ConversionReport::failure)
-      .def_readonly("flipped", &csg::ConversionReport::flipped,
-                    "Halfspaces complemented (or copied complemented) for the orientation rule")
-      .def_property_readonly("samples", [](const csg::ConversionReport& r) { return r.samples.sample_patches.size(); })
-      .def_property_readonly("lower_bound", [](const csg::ConversionReport& r) { return r.samples.initial; })
-      .def_property_readonly("upper_bound", [](const csg::ConversionReport& r) { return r.samples.upper_bound; })
-      .def_property_readonly("rounds", [](const csg::ConversionReport& r) { return r.samples.rounds; })
-      .def("scene_json", [](const csg::ConversionReport& r) { return hsx::write_scene2(r.scene).dump(2) + "\n"; },
-           "The BSH scene as hsx-scene/1 JSON text (what `hsx convert --out` writes)")
-      .def("__bool__", &csg::ConversionReport::ok);
-  m.def("_convert", [](const ComplexHandle& h, py::handle solid, const std::string& search) {
-    if (!h.input->scene) throw hsx::InputError("convert needs a scene, not a complex");
-    const std::vector<char> cells = flags_from(solid, h.complex().cells.size(), "solid");
-    const bsh::Method method = search_named(search);
-    py::gil_scoped_release release;
-    return csg::convert_to_bsh(*h.input->scene, *h.input->arranged, cells, method);
-  });
-  m.def("_convert_csgnet", [](const std::string& program, const std::string& search) {
-    const bsh::Method method = search_named(search);
-    py::gil_scoped_release release;
-    const hsx::CsgnetProgram p = hsx::read_csgnet(program, "csgnet");
-    return csg::convert_to_bsh(p.scene, *p.expression, method);
-  });
-}
-
-// ---- random scenes ----
-
-hsx::RandomSceneSettings random_settings(const py::dict& kw) {
-  hsx::RandomSceneSettings s;
-  for (auto [key, value] : kw) {
-    const std::string k = py::str(key);
-    if (k == "min_halfspaces") s.min_halfspaces = value.cast<int>();
-    else if (k == "max_halfspaces") s.max_halfspaces = value.cast<int>();
-    else if (k == "halfplanes") s.halfplanes = value.cast<bool>();
-    else if (k == "disks") s.disks = value.cast<bool>();
-    else if (k == "polygons") s.polygons = value.cast<bool>();
-    else if (k == "complement_percent") s.complement_percent = value.cast<int>();
-    else if (k == "denominator") s.denominator = value.cast<int>();
-    else if (k == "coordinate_bound") s.coordinate_bound = value.cast<int>();
-    else if (k == "max_radius") s.max_radius = value.cast<int>();
-    else if (k == "min_degeneracies") s.min_degeneracies = value.cast<int>();
-    else if (k == "max_degeneracies") s.max_degeneracies = value.cast<int>();
-    else if (k == "max_samples") s.max_samples = value.cast<int>();
-    else if (k == "near_percent") s.near_percent = value.cast<int>();
-    else if (k == "degeneracy_weights") {
-      const py::dict weights = py::reinterpret_borrow<py::dict>(value);
-      for (auto [name, weight] : weights) {
-        bool found = false;
-        for (int d = 0; d < hsx::kDegeneracyCount; ++d)
-          if (py::str(name).cast<std::string>() == hsx::to_string(static_cast<hsx::Degeneracy>(d))) {
-            s.degeneracy_weight[d] = weight.cast<int>();
-            found = true;
-          }
-        if (!found) throw hsx::InputError("degeneracy_weights: unknown degeneracy \"" + py::str(name).cast<std::string>() + "\"");
-      }
-    } else {
-      throw py::type_error("random_scene: unknown setting \"" + k + "\"");
-    }
-  }
-  return s;
-}
-
-void bind_random(py::module_& m) {
-  m.def("_random_scene", [](std::uint64_t seed, std::uint64_t index, const py::dict& settings) {
-    const hsx::RandomSceneSettings s = random_settings(settings);
-    hsx::RandomScene r;
-    {
-      py::gil_scoped_release release;
-      try {
-        r = hsx::random_scene(s, seed, index);
-      } catch (const std::invalid_argument& e) {
-        throw hsx::InputError(std::string("random_scene: ") + e.what());
-      }
-    }
-    std::vector<std::string> names;
-    for (hsx::Degeneracy d : r.degeneracies) names.emplace_back(hsx::to_string(d));
-    return py::make_tuple(hsx::write_scene2(r.scene).dump(2) + "\n", names);
-  });
-  py::list names;
-  for (int d = 0; d < hsx::kDegeneracyCount; ++d) names.append(hsx::to_string(static_cast<hsx::Degeneracy>(d)));
-  m.attr("DEGENERACIES") = py::tuple(names);
-}
-
 }  // namespace
 
 void bind_algorithms(py::module_& m) {
@@ -644,10 +392,7 @@ void bind_algorithms(py::module_& m) {
   m.attr("DEFAULT_MAX_LABELLINGS") = bsh::ExtractOptions().brute_force_limit;
   bind_grade(m);
   bind_check(m);
-  bind_csg(m);
   bind_samples(m);
-  bind_convert(m);
-  bind_random(m);
 }
 
 }  // namespace hsxpy

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <hsx/hsx.hpp>
+#include <hsx/io/svg.hpp>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -49,6 +50,12 @@ py::tuple fraction_tuple(const std::vector<hsx::Rational>& values);
 py::object bool_array(const std::vector<char>& flags);
 std::vector<char> flags_from(py::handle sequence, std::size_t size, const std::string& what);
 
+// ---- complex.cpp ----
+/// The picture of `input` (io/svg.hpp) with `options`, as a str; None for an input without a scene.
+py::object svg_picture(const InputPtr& input, const hsx::SvgOptions& options);
+/// The method named `name` ("best_first" is read as "best-first"); `what` names the argument in the error.
+hsx::bsh::Method method_named(std::string name, const std::string& what);
+
 // ---- cancel.cpp ----
 /// A stop flag another Python thread sets (hsx.CancelToken().cancel()); read by the search through its cancel hook.
 struct CancelToken {
@@ -82,6 +89,7 @@ void bind_complex(py::module_& m);
 void bind_algorithms(py::module_& m);
 void bind_cancel(py::module_& m);
 void bind_nhrep(py::module_& m);
+void bind_csg_module(py::module_& m);
 
 }  // namespace hsxpy
 

@@ -1,11 +1,14 @@
 // Inputs and complexes: hsx.Complex (cells, patches, junctions, samples, supports) over a shared input, read from
 // JSON text or a file (load_input / load_input_text: the CLI's reading and messages), its hsx-complex/1 text and
-// its picture (io/svg.hpp).
+// its picture (io/svg.hpp); the random scene generator.
 #include "bindings.hpp"
 
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/scene_json.hpp>
 #include <hsx/io/svg.hpp>
+#include <hsx/geometry/random_scene.hpp>
+
+#include <algorithm>
 
 namespace hsxpy {
 namespace {
@@ -131,18 +134,85 @@ void bind_views(py::module_& m) {
       .def("__repr__", [](const SampleView& v) { return "<hsx.SampleSite " + std::to_string(v.index) + ">"; });
 }
 
-/// The picture of `h` with `options`; None for an input without a scene (nothing to draw).
-py::object picture(const ComplexHandle& h, const hsx::SvgOptions& options) {
-  if (!h.input->scene) return py::none();
+// ---- random scenes (geometry/random_scene.hpp) ----
+
+hsx::RandomSceneSettings random_settings(const py::dict& kw) {
+  hsx::RandomSceneSettings s;
+  for (auto [key, value] : kw) {
+    const std::string k = py::str(key);
+    if (k == "min_halfspaces") s.min_halfspaces = value.cast<int>();
+    else if (k == "max_halfspaces") s.max_halfspaces = value.cast<int>();
+    else if (k == "halfplanes") s.halfplanes = value.cast<bool>();
+    else if (k == "disks") s.disks = value.cast<bool>();
+    else if (k == "polygons") s.polygons = value.cast<bool>();
+    else if (k == "complement_percent") s.complement_percent = value.cast<int>();
+    else if (k == "denominator") s.denominator = value.cast<int>();
+    else if (k == "coordinate_bound") s.coordinate_bound = value.cast<int>();
+    else if (k == "max_radius") s.max_radius = value.cast<int>();
+    else if (k == "min_degeneracies") s.min_degeneracies = value.cast<int>();
+    else if (k == "max_degeneracies") s.max_degeneracies = value.cast<int>();
+    else if (k == "max_samples") s.max_samples = value.cast<int>();
+    else if (k == "near_percent") s.near_percent = value.cast<int>();
+    else if (k == "degeneracy_weights") {
+      const py::dict weights = py::reinterpret_borrow<py::dict>(value);
+      for (auto [name, weight] : weights) {
+        bool found = false;
+        for (int d = 0; d < hsx::kDegeneracyCount; ++d)
+          if (py::str(name).cast<std::string>() == hsx::to_string(static_cast<hsx::Degeneracy>(d))) {
+            s.degeneracy_weight[d] = weight.cast<int>();
+            found = true;
+          }
+        if (!found)
+          throw hsx::InputError("degeneracy_weights: unknown degeneracy \"" + py::str(name).cast<std::string>() +
+                                "\" (hsx.DEGENERACIES lists them)");
+      }
+    } else {
+      throw py::type_error("random_scene: unknown setting \"" + k + "\"");
+    }
+  }
+  return s;
+}
+
+void bind_random(py::module_& m) {
+  m.def("_random_scene", [](std::uint64_t seed, std::uint64_t index, const py::dict& settings) {
+    const hsx::RandomSceneSettings s = random_settings(settings);
+    hsx::RandomScene r;
+    {
+      py::gil_scoped_release release;
+      try {
+        r = hsx::random_scene(s, seed, index);
+      } catch (const std::invalid_argument& e) {
+        throw hsx::InputError(std::string("random_scene: ") + e.what());
+      }
+    }
+    std::vector<std::string> names;
+    for (hsx::Degeneracy d : r.degeneracies) names.emplace_back(hsx::to_string(d));
+    return py::make_tuple(hsx::write_scene2(r.scene).dump(2) + "\n", names);
+  });
+  py::list names;
+  for (int d = 0; d < hsx::kDegeneracyCount; ++d) names.append(hsx::to_string(static_cast<hsx::Degeneracy>(d)));
+  m.attr("DEGENERACIES") = py::tuple(names);
+}
+
+}  // namespace
+
+py::object svg_picture(const InputPtr& input, const hsx::SvgOptions& options) {
+  if (!input->scene) return py::none();
   std::string svg;
   {
     py::gil_scoped_release release;
-    svg = hsx::arrangement_svg(*h.input->scene, h.input->arranged->arrangement, h.complex(), options);
+    svg = hsx::arrangement_svg(*input->scene, input->arranged->arrangement, input->complex(), options);
   }
   return py::str(svg);
 }
 
-}  // namespace
+hsx::bsh::Method method_named(std::string name, const std::string& what) {
+  std::replace(name.begin(), name.end(), '_', '-');
+  const auto method = hsx::bsh::method_from_string(name);
+  if (!method)
+    throw hsx::InputError(what + ": unknown method \"" + name + "\" (graphcut, beam, best-first, brute-force, exact)");
+  return *method;
+}
 
 void bind_complex(py::module_& m) {
   bind_views(m);
@@ -209,19 +279,20 @@ void bind_complex(py::module_& m) {
                }
                o.highlight_legend = highlight_legend;
              }
-             return picture(h, o);
+             return svg_picture(h.input, o);
            },
            py::arg("labels") = false, py::arg("width") = 800, py::arg("title") = "", py::arg("fill") = py::none(),
            py::arg("highlight") = py::none(), py::arg("highlight_legend") = "highlighted patches",
            "The arrangement's picture as SVG text (as `hsx arrange --svg`), None without a scene. `fill`: per cell, "
            "True inside a shape (drawn as `hsx extract --svg` does, boundary bold, missing samples ringed); "
            "`highlight`: patch ids drawn highlighted, described in the legend by `highlight_legend`")
-      .def("_repr_svg_", [](const ComplexHandle& h) { return picture(h, hsx::SvgOptions{}); })
+      .def("_repr_svg_", [](const ComplexHandle& h) { return svg_picture(h.input, hsx::SvgOptions{}); })
       .def("__repr__", &complex_repr);
 
   m.def("_load_text", &load_text, py::arg("text"), py::arg("source"), py::arg("max_cells"),
         py::arg("max_side_table"));
   m.def("_load_file", &load_file, py::arg("path"), py::arg("max_cells"), py::arg("max_side_table"));
+  bind_random(m);
 }
 
 }  // namespace hsxpy

@@ -9,5 +9,6 @@ PYBIND11_MODULE(_hsx, m) {
   hsxpy::bind_cancel(m);
   hsxpy::bind_complex(m);
   hsxpy::bind_algorithms(m);
+  hsxpy::bind_csg_module(m);
   hsxpy::bind_nhrep(m);
 }

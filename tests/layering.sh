@@ -5,14 +5,15 @@
 #   1. a file of one layer includes only its own layer and the layers before it;
 #   2. only kernel/ and geometry/ include CGAL;
 #   3. no public header includes a private one (everything it includes must itself be public);
-#   4. src/cli includes only public headers of the library (and its own cli/ headers);
+#   4. src/cli includes only public headers of the library (and its own cli/ headers), and so does the Python
+#      module (python/src, the layer "python" after cli; its own headers are included without a folder);
 #   5. a public header is spelled <hsx/...>, never "layer/x.hpp".
 # Usage: layering.sh SOURCE_DIR [EXTRA_FILE...]. Prints every offending include and fails if any. Extra files
 # (for testing this script) are checked as if they were at the path named by the first line "// layering-path: P".
 set -u
 root="${1:?usage: layering.sh SOURCE_DIR}"
 shift
-layers=(kernel geometry complex algorithms io cli)
+layers=(kernel geometry complex algorithms io cli python)
 bad=0
 declare -A index_of
 for i in "${!layers[@]}"; do index_of[${layers[$i]}]=$i; done
@@ -23,6 +24,7 @@ check_file() {  # check_file FILE LOGICAL_PATH (relative to root: include/hsx/<l
   case "$path" in
     include/hsx/*) public=1; rest="${path#include/hsx/}" ;;
     src/*) rest="${path#src/}" ;;
+    python/src/*) rest="python/${path#python/src/}" ;;
     *) return ;;
   esac
   layer="${rest%%/*}"
@@ -50,6 +52,8 @@ check_file() {  # check_file FILE LOGICAL_PATH (relative to root: include/hsx/<l
           echo "$path: public header includes private header $inc"; bad=$((bad + 1))
         elif [ "$layer" = cli ] && [ "$tl" != cli ]; then
           echo "$path: the CLI includes private header $inc (use the public API)"; bad=$((bad + 1))
+        elif [ "$layer" = python ]; then
+          echo "$path: the Python module includes private header $inc (use the public API)"; bad=$((bad + 1))
         fi
       fi
     fi
@@ -65,7 +69,8 @@ check_file() {  # check_file FILE LOGICAL_PATH (relative to root: include/hsx/<l
 count=0
 while IFS= read -r f; do
   check_file "$f" "${f#$root/}"; count=$((count + 1))
-done < <(find "$root/include/hsx" "$root/src" -type f \( -name '*.hpp' -o -name '*.cpp' \) | sort)
+done < <(find "$root/include/hsx" "$root/src" $([ -d "$root/python/src" ] && echo "$root/python/src") -type f \
+           \( -name '*.hpp' -o -name '*.cpp' \) | sort)
 for extra in "$@"; do
   logical="$(sed -nE '1s|^// layering-path: (.*)$|\1|p' "$extra")"
   check_file "$extra" "${logical:?$extra: first line must be // layering-path: P}"; count=$((count + 1))

@@ -17,16 +17,19 @@ PlanarPieces LoadedInput::pieces() const {
   return {};
 }
 
-LoadedInput load_input(const std::string& path, const ArrangementLimits& limits) {
+namespace {
+
+/// `doc` read from `source` (a path, or a name for text; empty: errors carry no prefix).
+LoadedInput load_document(const nlohmann::json& doc, const std::string& source, const ArrangementLimits& limits) {
   LoadedInput in;
-  in.path = path;
-  const nlohmann::json doc = read_exact_json_file(path);
+  in.path = source;
+  const std::string prefix = source.empty() ? "" : source + ": ";
   const nlohmann::json* format = doc.is_object() && doc.contains("format") ? &doc.at("format") : nullptr;
   if (format && format->is_string() && format->get<std::string>() == kComplexFormat) {
     try {
       in.document = complex_document_from_json(doc);
     } catch (const InputError& e) {
-      throw InputError(path + ": " + e.what());
+      throw InputError(prefix + e.what());
     }
     return in;
   }
@@ -42,9 +45,25 @@ LoadedInput load_input(const std::string& path, const ArrangementLimits& limits)
       in.arranged = arrange(*in.scene, limits);
     }
   } catch (const InputError& e) {
-    throw InputError(path + ": " + e.what());
+    throw InputError(prefix + e.what());
   }
   return in;
+}
+
+}  // namespace
+
+LoadedInput load_input(const std::string& path, const ArrangementLimits& limits) {
+  return load_document(read_exact_json_file(path), path, limits);
+}
+
+LoadedInput load_input_text(const std::string& text, const std::string& source, const ArrangementLimits& limits) {
+  nlohmann::json doc;
+  try {
+    doc = parse_exact_json(text);
+  } catch (const InputError& e) {
+    throw InputError((source.empty() ? "" : source + ": ") + e.what());
+  }
+  return load_document(doc, source, limits);
 }
 
 }  // namespace hsx

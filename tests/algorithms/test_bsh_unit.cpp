@@ -969,6 +969,35 @@ TEST_CASE("bsh unit: limits - the labelling limit refuses, a limit on the ties k
   CHECK(r.sample_connected);
 }
 
+TEST_CASE("bsh unit: the cancel hook stops a search as the time limit does, with stopped_by cancelled",
+          "[bsh][unit][limits][cancel]") {
+  ThreeRooms f;
+  for (int p : {f.p0, f.p1, f.p2, f.p3, f.p4, f.p5}) f.h.sample(p);
+  const Problem problem(f.h.done());
+  for (Method m : {Method::Beam, Method::BestFirst, Method::Exact}) {
+    ExtractOptions o;
+    o.method = m;
+    long asked = 0;
+    o.cancel = [&asked] { return ++asked > 0; };
+    const ExtractResult r = extract(problem, o);
+    INFO(to_string(m));
+    CHECK(asked > 0);
+    CHECK_FALSE(r.optimal);
+    CHECK(r.stopped_by == "cancelled");
+    CHECK(r.sample_connected);  // the best boundary so far, the empty one at worst
+    o.cancel = [] { return false; };  // a hook that never says stop changes nothing
+    const ExtractResult free = extract(problem, o);
+    CHECK(free.optimal);
+    CHECK(free.stopped_by.empty());
+  }
+  CheckOptions c;
+  c.cancel = [] { return true; };
+  for (const CheckResult& r : check_all(problem.complex(), c)) {
+    INFO(r.name << ": " << r.witness);
+    CHECK((r.status == CheckResult::Skipped || r.status == CheckResult::Stopped || r.status == CheckResult::Pass));
+  }
+}
+
 TEST_CASE("bsh unit: Fig. 6 with T-junctions - the oracle certifies the tie where the search is not proven",
           "[bsh][unit][ties]") {
   Fig6 f(M(2), M(2));

@@ -32,4 +32,9 @@ struct LoadedInput {
 /// Reads `path`; a scene is arranged within `limits`. Throws InputError naming the file and field (or the limit).
 LoadedInput load_input(const std::string& path, const ArrangementLimits& limits = {});
 
+/// The same for a document held in memory (a host's JSON string, the Python module's dicts): `text` is the JSON,
+/// `source` names it in error messages ("scene.json: ..."; empty: no prefix) and becomes LoadedInput::path.
+LoadedInput load_input_text(const std::string& text, const std::string& source,
+                            const ArrangementLimits& limits = {});
+
 }  // namespace hsx

@@ -183,7 +183,7 @@ class CheckBudget {
     if (options_.time_limit <= 0) return std::numeric_limits<double>::infinity();
     return options_.time_limit - std::chrono::duration<double>(Clock::now() - start_).count();
   }
-  bool spent() const { return seconds_left() <= 0; }
+  bool spent() const { return seconds_left() <= 0 || (options_.cancel && options_.cancel()); }
   /// A search's options with the limits (the time limit is what is left of it).
   ExtractOptions search(Method method) const {
     ExtractOptions o;
@@ -192,10 +192,12 @@ class CheckBudget {
     o.max_states = options_.max_states;
     o.max_graph_cuts = options_.max_graph_cuts;
     o.time_limit = options_.time_limit > 0 ? std::max(seconds_left(), 1e-9) : 0;
+    o.cancel = options_.cancel;
     return o;
   }
   BruteForceOptions oracle() const {
-    return {options_.brute_force_limit, options_.compare, options_.time_limit > 0 ? std::max(seconds_left(), 1e-9) : 0};
+    return {options_.brute_force_limit, options_.compare, options_.time_limit > 0 ? std::max(seconds_left(), 1e-9) : 0,
+            options_.cancel};
   }
   const CheckOptions& options() const { return options_; }
 
@@ -205,7 +207,7 @@ class CheckBudget {
 };
 
 CheckResult skipped_for_time(const std::string& name) {
-  return {name, CheckResult::Skipped, "the time limit was spent before this check"};
+  return {name, CheckResult::Skipped, "the time limit was spent (or the run was cancelled) before this check"};
 }
 
 CheckResult check_existence(const Problem& problem) {
@@ -248,7 +250,7 @@ CheckResult check_prop52(const Problem& problem, const ExtractResult& best, cons
   }
   if (bf.stopped) {
     r.status = CheckResult::Stopped;
-    r.witness = "brute force stopped by time-limit after " + std::to_string(bf.enumerated) + " labellings";
+    r.witness = "brute force stopped by " + bf.stopped_by + " after " + std::to_string(bf.enumerated) + " labellings";
     return r;
   }
   reference = bf.optimal.front();

@@ -633,6 +633,8 @@ class ExactSearch {
     if (options_.max_nodes > 0 && stats_.nodes >= options_.max_nodes) stopped_by_ = "max-nodes";
     if (options_.time_limit > 0 && std::chrono::duration<double>(now - start_).count() > options_.time_limit)
       stopped_by_ = "time-limit";
+    else if (options_.cancel && options_.cancel())
+      stopped_by_ = "cancelled";
     return !stopped_by_.empty();
   }
 

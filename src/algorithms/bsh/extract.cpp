@@ -58,9 +58,10 @@ class SearchContext {
     constraints.forced = forced;
     ++stats_.graph_cuts;
     std::function<bool()> stop;
-    if (options_.time_limit > 0) stop = [this] { return seconds() > options_.time_limit; };
+    if (options_.time_limit > 0 || options_.cancel) stop = [this] { return !stop_reason().empty(); };
     CutResult result = graph_cut(problem_, constraints, stop);
-    if (result.stopped) stopped_by = "time-limit";  // its energy is -1: every caller drops it
+    if (result.stopped) stopped_by = stop_reason();  // its energy is -1: every caller drops it
+    if (result.stopped && stopped_by.empty()) stopped_by = "cancelled";  // a cancel that said stop only once
     if (result.energy.missing_samples >= 0 && !result.certified) ++stats_.uncertified_cuts;
     return result;
   }
@@ -80,8 +81,22 @@ class SearchContext {
   /// True when the graph-cut or time limit says stop (checked before every graph cut); sets stopped_by.
   bool limit_reached() {
     if (options_.max_graph_cuts > 0 && stats_.graph_cuts >= options_.max_graph_cuts) stopped_by = "max-graph-cuts";
-    if (options_.time_limit > 0 && seconds() > options_.time_limit) stopped_by = "time-limit";
+    const std::string why = stop_reason();
+    if (!why.empty()) stopped_by = why;
     return !stopped_by.empty();
+  }
+
+  /// "time-limit" when it has run out, "cancelled" when ExtractOptions::cancel says stop, else "".
+  std::string stop_reason() const {
+    if (options_.time_limit > 0 && seconds() > options_.time_limit) return "time-limit";
+    if (options_.cancel && options_.cancel()) return "cancelled";
+    return "";
+  }
+
+  /// The oracle's options under this search's limits (`limit`: labellings it may enumerate).
+  BruteForceOptions oracle(long limit) const {
+    return BruteForceOptions{limit, options_.compare, options_.time_limit > 0 ? seconds_left() : 0,
+                             options_.cancel};
   }
 
   /// Seconds left before the time limit (infinity without one; <= 0 when it has passed).
@@ -286,16 +301,14 @@ long certify_with_oracle(SearchContext& ctx, const CutResult& found, ExtractResu
   if (options.certify_limit <= 0 || ctx.seconds_left() <= 0) return 0;
   BruteForceResult bf;
   try {
-    bf = brute_force(problem, true,
-                     BruteForceOptions{options.certify_limit, options.compare,
-                                       options.time_limit > 0 ? ctx.seconds_left() : 0});
+    bf = brute_force(problem, true, ctx.oracle(options.certify_limit));
   } catch (const LabellingLimitExceeded&) {
     return 0;
   }
   if (bf.stopped) {
-    result.stopped_by = "time-limit";
-    result.optimality_note = where + ": best-first is not proven complete here and the oracle was stopped by the "
-                                     "time limit";
+    result.stopped_by = bf.stopped_by;
+    result.optimality_note = where + ": best-first is not proven complete here and the oracle was stopped (" +
+                             bf.stopped_by + ")";
     return bf.enumerated;
   }
   const Order o = compare(found.energy, bf.energy, options.compare);
@@ -321,15 +334,16 @@ long certify_with_oracle(SearchContext& ctx, const CutResult& found, ExtractResu
 ExtractResult run_brute_force(const Problem& problem, const ExtractOptions& options) {
   const auto start = Clock::now();
   const BruteForceResult bf =
-      brute_force(problem, true, BruteForceOptions{options.brute_force_limit, options.compare, options.time_limit});
+      brute_force(problem, true, BruteForceOptions{options.brute_force_limit, options.compare, options.time_limit,
+                                                   options.cancel});
   ExtractResult result;
   result.method = Method::BruteForce;
   result.labelling = bf.optimal.front();
   result.energy = bf.energy;
   result.sample_connected = true;
   if (bf.stopped) {
-    // The best of the labellings enumerated before the time limit: not proven, ties not known.
-    result.stopped_by = "time-limit";
+    // The best of the labellings enumerated before the time limit (or the cancel): not proven, ties not known.
+    result.stopped_by = bf.stopped_by;
   } else {
     result.optimal = true;
     result.ties.checked = true;
@@ -469,8 +483,10 @@ std::string limit_advice(long limit) {
          ": raise it with --max-labellings (ExtractOptions::brute_force_limit) or use best-first";
 }
 
-/// Thrown inside the enumeration when the time limit runs out (caught by brute_force).
-struct OutOfTime {};
+/// Thrown inside the enumeration when the time limit runs out or the cancel says stop (caught by brute_force).
+struct OutOfTime {
+  const char* reason;  ///< "time-limit" or "cancelled"
+};
 
 /// Depth-first enumeration of the labellings: over the first unassigned cell, 0 then 1, with propagation of the
 /// implications. Both values always propagate without conflict (a value forced by a neighbour would already be
@@ -510,9 +526,12 @@ class Enumerator {
     return true;
   }
   void descend(int from, const std::function<void(const std::vector<signed char>&)>& leaf) {
-    if (options_.time_limit > 0 && (++steps_ & 1023) == 0 &&
-        std::chrono::duration<double>(Clock::now() - start_).count() > options_.time_limit)
-      throw OutOfTime();
+    if ((options_.time_limit > 0 || options_.cancel) && (++steps_ & 1023) == 0) {
+      if (options_.time_limit > 0 &&
+          std::chrono::duration<double>(Clock::now() - start_).count() > options_.time_limit)
+        throw OutOfTime{"time-limit"};
+      if (options_.cancel && options_.cancel()) throw OutOfTime{"cancelled"};
+    }
     const int n = static_cast<int>(label_.size());
     int v = from;
     while (v < n && label_[v] >= 0) ++v;
@@ -554,7 +573,7 @@ void refuse_above_limit(Enumerator& enumerate, const Implications& g, long limit
 }  // namespace
 
 BruteForceResult brute_force(const Problem& problem, bool connectivity, long limit, const CompareOptions& compare) {
-  return brute_force(problem, connectivity, BruteForceOptions{limit, compare, 0});
+  return brute_force(problem, connectivity, BruteForceOptions{limit, compare, 0, {}});
 }
 
 BruteForceResult brute_force(const Problem& problem, bool connectivity, const BruteForceOptions& options) {
@@ -586,8 +605,9 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, const Br
   try {
     refuse_above_limit(enumerate, g, options.limit);
     enumerate.run(leaf);
-  } catch (const OutOfTime&) {
+  } catch (const OutOfTime& out) {
     result.stopped = true;
+    result.stopped_by = out.reason;
   }
   if (!have_best) {
     if (result.stopped) {  // stopped before the first leaf: the empty labelling, always admissible

@@ -4,6 +4,7 @@
 
 #include <hsx/algorithms/bsh/extract.hpp>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct CheckOptions {
   double time_limit = 0;   ///< seconds for all checks together (0: none); checks left when it runs out are skipped
   long max_states = 0;     ///< per search: expanded states (0: none)
   long max_graph_cuts = 0; ///< per search: graph cuts (0: none)
+  /// Asked where the time limit is (ExtractOptions::cancel); true stops the running check (Stopped) and skips the
+  /// rest. May be empty.
+  std::function<bool()> cancel;
 };
 
 /// Every applicable checker on one complex: existence (4.1), Prop. 5.2 (best-first = brute force when the oracle

@@ -44,6 +44,7 @@ struct SearchProgress {
 /// same input stops at the same point on every machine); time_limit is not: where it stops depends on the
 /// machine's speed and load. max_states and max_graph_cuts are checked before every graph cut, time_limit also
 /// before every augmenting path inside a graph cut's max flow and every 1024 steps of brute force's enumeration.
+/// `cancel` is asked wherever time_limit is checked (a host's stop button or Ctrl-C: the Python module's).
 struct ExtractOptions {
   Method method = Method::Beam;
   int beam_width = 1;
@@ -63,6 +64,10 @@ struct ExtractOptions {
   bool record_states = false;   ///< keep the labelling of every expanded state (ExtractResult::expanded)
   /// Called about twice a second during long searches (the CLI prints it on stderr); may be empty.
   std::function<void(const SearchProgress&)> progress;
+  /// Asked wherever time_limit is checked (see above), so it must be cheap; true stops the search as the time
+  /// limit does, with stopped_by "cancelled" (the best sample-connected boundary so far, not proven). It is
+  /// called on the searching thread; to stop from another thread, read an atomic flag. May be empty.
+  std::function<bool()> cancel;
 };
 
 struct Ties {
@@ -71,7 +76,7 @@ struct Ties {
   bool certified = true;   ///< every tie is proven (exactly equal energies); false: some only unseparated
   bool capped = false;     ///< the enumeration stopped early (stopped_by says why): there may be more than count
   /// Why the enumeration stopped early: "max-ties" (ExtractOptions::max_ties reached) or the limit that cut it
-  /// ("time-limit", "max-states", "max-graph-cuts"); "" when it finished (or did not run).
+  /// ("time-limit", "max-states", "max-graph-cuts", "cancelled"); "" when it finished (or did not run).
   std::string stopped_by;
 };
 
@@ -106,7 +111,8 @@ struct ExtractResult {
   Ties ties;
   std::vector<Labelling> tied;   ///< the other optimal labellings when ties.count > 1
   /// The limit that stopped the search for the optimum: "" (finished), "max-states", "max-graph-cuts", "max-nodes" (exact),
-  /// "time-limit" (then optimal is false). A limit that cut only the tie enumeration is in ties.stopped_by.
+  /// "time-limit", "cancelled" (ExtractOptions::cancel; then optimal is false). A limit that cut only the tie
+  /// enumeration is in ties.stopped_by.
   std::string stopped_by;
   std::string optimality_note;   ///< how optimality was decided when the search alone could not prove it
   std::vector<Labelling> expanded;  ///< with ExtractOptions::record_states: every expanded state's boundary
@@ -135,9 +141,10 @@ struct BruteForceResult {
   Energy energy;
   bool certified = true;            ///< every comparison that picked them was proven
   long enumerated = 0;
-  /// BruteForceOptions::time_limit ran out: `optimal` is the best of the labellings enumerated so far (the empty
-  /// one always among them), not proven.
+  /// BruteForceOptions::time_limit ran out or `cancel` said stop: `optimal` is the best of the labellings
+  /// enumerated so far (the empty one always among them), not proven.
   bool stopped = false;
+  std::string stopped_by;           ///< when stopped: "time-limit" or "cancelled"
 };
 struct BruteForceOptions {
   /// Labellings to enumerate at most. When a lower bound on their number (2^k for k cells whose labels are
@@ -146,6 +153,7 @@ struct BruteForceOptions {
   long limit = 1L << 22;
   CompareOptions compare;
   double time_limit = 0;            ///< seconds (0: no limit); running out sets BruteForceResult::stopped
+  std::function<bool()> cancel;     ///< asked where the time limit is; true stops as it does (may be empty)
 };
 BruteForceResult brute_force(const Problem& problem, bool connectivity, const BruteForceOptions& options);
 /// The same with only a limit and comparison options.

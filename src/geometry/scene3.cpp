@@ -307,6 +307,11 @@ void validate_and_resolve(Scene3& scene) {
 }
 
 Box3 choose_domain3(const Scene3& scene) {
+  std::size_t plane_count = 0;
+  for (const Halfspace3& h : scene.halfspaces) plane_count += h.kind == HalfspaceKind3::Plane;
+  if (plane_count > kMaxPlanesWithoutDomain)
+    fail("domain", "the scene has " + std::to_string(plane_count) + " planes and no domain; give \"domain\" (hsx "
+                   "chooses one only for at most " + std::to_string(kMaxPlanesWithoutDomain) + " planes)");
   Extent3 e;
   std::vector<const Halfspace3*> planes;
   for (const Halfspace3& h : scene.halfspaces) {

@@ -361,6 +361,10 @@ TEST_CASE("the chosen domain contains surfaces, samples and plane triple points"
   CHECK(d.max.z > 20);
   CHECK(d.min.z < -100);
   CHECK_FALSE(s.domain_given);
+  Scene3 many;
+  for (std::size_t i = 0; i <= kMaxPlanesWithoutDomain; ++i)
+    many.halfspaces.push_back(plane(pt(1, static_cast<long>(i), static_cast<long>(i * i)), Rational(1), "P" + std::to_string(i)));
+  CHECK_THAT(error_of([&] { validate_and_resolve(many); }), Contains("domain: the scene has 151 planes and no domain"));
 }
 
 TEST_CASE("OBJ, OFF and PLY of the same mesh give the same ObjMesh", "[scene3]") {

@@ -203,4 +203,14 @@ Scene3 read_bsh_config_file(const std::string& path) {
   return read_bsh_config(doc, std::filesystem::path(path).parent_path().string(), path);
 }
 
+Scene3 read_scene3_input_file(const std::string& path, const SceneReadLimits& limits) {
+  const json doc = read_exact_json_file(path, limits.json);
+  if (is_bsh_config(doc)) return read_bsh_config(doc, std::filesystem::path(path).parent_path().string(), path);
+  try {
+    return read_scene3(doc, std::filesystem::path(path).parent_path().string(), limits);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
 }  // namespace hsx

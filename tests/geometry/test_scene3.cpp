@@ -6,6 +6,7 @@
 #include <hsx/geometry/scene3.hpp>
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/bsh_config.hpp>
+#include <hsx/io/exact_json.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -411,6 +412,7 @@ TEST_CASE("the BSH authors' nine examples", "[.][bsh_examples]") {
                            "figure16_tori", "figure19_b", "figure19_c", "figure19_d"}) {
     INFO(name);
     const Scene3 s = read_bsh_config_file((dir / name / "config.json").string());
+    CHECK(read_scene3_input_file((dir / name / "config.json").string()).samples.size() == s.samples.size());
     CHECK(s.domain_given);
     CHECK_FALSE(s.samples.empty());
     std::size_t triangles = 0;
@@ -426,4 +428,17 @@ TEST_CASE("the BSH authors' nine examples", "[.][bsh_examples]") {
     ++read;
   }
   CHECK(read == 9);
+  SECTION("the authors' refusals") {
+    const std::string folder = (dir / "figure19_b").string();
+    auto refusal = [&](const char* entry) {
+      return error_of([&] { read_bsh_config(parse_exact_json(std::string(R"({"input": [)") + entry + "]}"), folder); });
+    };
+    CHECK_THAT(refusal(R"({"type": "rbf", "name": "1"})"), Contains("config.json: input[0].type: type \"rbf\" is not supported"));
+    CHECK_THAT(refusal(R"({"type": "quadric", "name": "1"})"), Contains("type \"quadric\" is not supported"));
+    CHECK_THAT(refusal(R"({"type": "cone", "name": "1"})"), Contains("type \"cone\" is not read"));
+    CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 0})"),
+               Contains("input[0].radius: must be positive"));
+    CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 1, "samples": "none.xyz"})"),
+               Contains("none.xyz: cannot open it"));
+  }
 }

@@ -1,6 +1,7 @@
 // Tests of the 3D part of hsx-scene/1 (io/scene_json.hpp): every kind read, errors naming the JSON path, mesh
 // files in OBJ, OFF and PLY giving the same scene, the write/read round trip, and the regression scenes in
 // data/scenes3d.
+#include <hsx/io/bsh_config.hpp>
 #include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
@@ -125,6 +126,7 @@ TEST_CASE("mesh files in OBJ, OFF and PLY give the same scene; regression scenes
     INFO(entry.path().string());
     const Scene3 s = read_scene3_file(entry.path().string());
     CHECK_FALSE(s.halfspaces.empty());
+    CHECK(read_scene3_input_file(entry.path().string()).halfspaces.size() == s.halfspaces.size());
     ++count;
   }
   CHECK(count >= 6);

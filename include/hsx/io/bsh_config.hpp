@@ -24,6 +24,7 @@
 #pragma once
 
 #include <hsx/geometry/scene3.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -41,5 +42,10 @@ Scene3 read_bsh_config(const nlohmann::json& doc, const std::string& directory,
 
 /// read_exact_json_file + read_bsh_config with the file's folder.
 Scene3 read_bsh_config_file(const std::string& path);
+
+/// A 3D scene file of either kind, told apart by content: the authors' config (is_bsh_config) or an hsx-scene/1
+/// document with dimension 3 (read_scene3, mesh paths relative to the file's folder). Errors are prefixed with the
+/// path.
+Scene3 read_scene3_input_file(const std::string& path, const SceneReadLimits& limits = {});
 
 }  // namespace hsx

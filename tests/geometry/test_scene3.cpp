@@ -439,6 +439,14 @@ TEST_CASE("the BSH authors' nine examples", "[.][bsh_examples]") {
         CHECK(back.halfspaces[i].complement == s.halfspaces[i].complement);
       }
       for (std::size_t j = 0; j < s.samples.size(); ++j) CHECK(back.samples[j].location == s.samples[j].location);
+      // At h/2 each circle gets about twice the segments.
+      BshReadOptions half;
+      half.h_scale = 0.5;
+      std::size_t finer = 0;
+      for (const Halfspace3& h : read_bsh_config_file((dir / name / "config.json").string(), half).halfspaces)
+        finer += h.surface.triangles.size();
+      std::cout << name << " at h/2: " << finer << " triangles\n";
+      CHECK(finer > triangles * 3 / 2);
     }
     ++read;
   }

@@ -164,6 +164,84 @@ TEST_CASE("tessellations are closed, manifold, outward, and converge to the anal
   }
 }
 
+namespace {
+
+/// An independent rebuild of the documented vertex rule in long double: the frame of axis a, the ring formula, and
+/// the rounding to the nearest multiple of 2^-32.
+struct FrameLD {
+  long double u[3], v[3], w[3];
+};
+
+FrameLD frame_ld(long double ax, long double ay, long double az) {
+  FrameLD f;
+  const long double n = std::sqrt(ax * ax + ay * ay + az * az);
+  f.w[0] = ax / n, f.w[1] = ay / n, f.w[2] = az / n;
+  const long double a[3] = {std::fabs(ax), std::fabs(ay), std::fabs(az)};
+  const int e = a[0] <= a[1] && a[0] <= a[2] ? 0 : (a[1] <= a[2] ? 1 : 2);
+  const long double E[3] = {e == 0 ? 1.0L : 0.0L, e == 1 ? 1.0L : 0.0L, e == 2 ? 1.0L : 0.0L};
+  long double c[3] = {f.w[1] * E[2] - f.w[2] * E[1], f.w[2] * E[0] - f.w[0] * E[2], f.w[0] * E[1] - f.w[1] * E[0]};
+  const long double cn = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  for (int i = 0; i < 3; ++i) f.u[i] = c[i] / cn;
+  f.v[0] = f.w[1] * f.u[2] - f.w[2] * f.u[1];
+  f.v[1] = f.w[2] * f.u[0] - f.w[0] * f.u[2];
+  f.v[2] = f.w[0] * f.u[1] - f.w[1] * f.u[0];
+  return f;
+}
+
+Rational grid(long double x) {
+  const long double scaled = std::nearbyint(std::ldexp(x, 32));
+  return make_rational(Integer(std::to_string(static_cast<long long>(scaled))), Integer(1) << 32);
+}
+
+}  // namespace
+
+TEST_CASE("the documented vertex rule rebuilds the same vertices", "[scene3]") {
+  const long double pi = 3.141592653589793238462643383279502884L;
+  SECTION("torus about a general axis") {
+    Halfspace3 h = primitive(HalfspaceKind3::Torus);
+    h.primitive.center = PointQ3{frac(1, 2), Rational(-1), Rational(2)};
+    h.primitive.axis = pt(1, 2, 3);
+    h.primitive.major_radius = 3;
+    h.primitive.minor_radius = frac(3, 4);
+    h.primitive.tessellation.segments = 10;
+    h.primitive.tessellation.minor_segments = 6;
+    h.surface = tessellate(h, Box3{});
+    const FrameLD f = frame_ld(1, 2, 3);
+    const long double c[3] = {0.5L, -1, 2};
+    REQUIRE(h.surface.vertices.size() == 60);
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 10; ++k) {
+        const long double t = 2 * pi * k / 10, phi = 2 * pi * j / 6, rho = 3 + 0.75L * std::cos(phi);
+        const PointQ3& got = h.surface.vertices[static_cast<std::size_t>(j * 10 + k)];
+        long double x[3];
+        for (int i = 0; i < 3; ++i)
+          x[i] = c[i] + rho * (std::cos(t) * f.u[i] + std::sin(t) * f.v[i]) + 0.75L * std::sin(phi) * f.w[i];
+        CHECK(got == PointQ3{grid(x[0]), grid(x[1]), grid(x[2])});
+      }
+    CHECK(h.surface.triangles[0] == std::array<int, 3>{0, 1, 10});
+    CHECK(h.surface.triangles[1] == std::array<int, 3>{1, 11, 10});
+  }
+  SECTION("sphere: poles, rings and fans") {
+    const Halfspace3 h = sphere(pt(1, 2, 3), Rational(2), 8);  // m = 4 bands: rings at -45, 0, 45 degrees
+    const FrameLD f = frame_ld(0, 0, 1);
+    CHECK(f.u[1] == 1);
+    REQUIRE(h.surface.vertices.size() == 2 + 3 * 8);
+    CHECK(h.surface.vertices[0] == pt(1, 2, 1));
+    CHECK(h.surface.vertices[25] == pt(1, 2, 5));
+    for (int j = 1; j <= 3; ++j)
+      for (int k = 0; k < 8; ++k) {
+        const long double t = 2 * pi * k / 8, phi = -pi / 2 + pi * j / 4;
+        const long double c[3] = {1, 2, 3};
+        long double x[3];
+        for (int i = 0; i < 3; ++i)
+          x[i] = c[i] + 2 * std::cos(phi) * (std::cos(t) * f.u[i] + std::sin(t) * f.v[i]) + 2 * std::sin(phi) * f.w[i];
+        CHECK(h.surface.vertices[static_cast<std::size_t>(1 + (j - 1) * 8 + k)] == PointQ3{grid(x[0]), grid(x[1]), grid(x[2])});
+      }
+    CHECK(h.surface.triangles[0] == std::array<int, 3>{0, 2, 1});     // south fan (S, L_k+1, L_k)
+    CHECK(h.surface.triangles.back() == std::array<int, 3>{25, 24, 17});  // north fan (N, U_7, U_0)
+  }
+}
+
 TEST_CASE("exact sides", "[scene3]") {
   const Halfspace3 p = plane(pt(0, 0, 2), Rational(1));  // z <= 1/2
   CHECK(p.side(PointQ3{Rational(5), Rational(0), frac(1, 2)}) == 0);

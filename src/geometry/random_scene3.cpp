@@ -8,8 +8,7 @@
 namespace hsx {
 
 Scene3 random_plane_scene3(const RandomPlanesSettings& settings, std::uint64_t seed, std::uint64_t index) {
-  if (settings.planes < 1 || settings.max_coefficient < 1 || settings.coordinate_bound < 2 ||
-      settings.denominator < 1)
+  if (settings.planes < 1 || settings.max_coefficient < 1 || settings.coordinate_bound < 2 || settings.denominator < 1)
     throw std::invalid_argument("random_plane_scene3: settings out of range");
   Random rng(item_seed(seed, index));
   const long b = settings.coordinate_bound, d = settings.denominator, m = settings.max_coefficient;

@@ -110,7 +110,10 @@ std::string summary_text(const LoadedInput& in) {
     if (c.supports[patch.support].size() > 1) out << "  (coincident with another boundary)";
     out << "\n";
   }
-  if (in.scene3) out << snapped_samples_text(*in.scene3, c);
+  if (in.scene3) {
+    out << snapped_samples_text(*in.scene3, c);
+    for (const std::string& note : in.scene3->notes) out << "note: " << note << "\n";
+  }
   return out.str();
 }
 

@@ -35,10 +35,10 @@ LoadedInput load_document(const nlohmann::json& doc, const std::string& source, 
   }
   try {
     if (is_bsh_config(doc)) {
-      in.scene3 = read_bsh_config(doc, fs::path(path).parent_path().string(), fs::path(path).filename().string());
+      in.scene3 = read_bsh_config(doc, fs::path(source).parent_path().string(), fs::path(source).filename().string());
       in.arranged3 = arrange(*in.scene3, limits);
     } else if (scene_dimension(doc) == 3) {
-      in.scene3 = read_scene3(doc, fs::path(path).parent_path().string());
+      in.scene3 = read_scene3(doc, fs::path(source).parent_path().string());
       in.arranged3 = arrange(*in.scene3, limits);
     } else {
       in.scene = read_scene2(doc);

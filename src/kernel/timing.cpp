@@ -3,8 +3,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <cmath>
 #include <stdexcept>
+
+#include <sys/resource.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace hsx {
 
@@ -62,6 +68,28 @@ TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOpti
     total += seconds;
   }
   return summarize_times(runs);
+}
+
+std::optional<long> peak_memory_of(const std::function<void()>& run) {
+  const pid_t child = fork();
+  if (child < 0) return std::nullopt;
+  if (child == 0) {
+    int status = 0;
+    try {
+      run();
+    } catch (...) {
+      status = 1;
+    }
+    _exit(status);
+  }
+  int status = 0;
+  struct rusage usage {};
+  pid_t waited;
+  do {
+    waited = wait4(child, &status, 0, &usage);
+  } while (waited < 0 && errno == EINTR);
+  if (waited != child || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return std::nullopt;
+  return static_cast<long>(usage.ru_maxrss) * 1024;  // Linux reports kilobytes
 }
 
 }  // namespace hsx

@@ -123,3 +123,16 @@ TEST_CASE("time_repeatedly: the real clock gives non-negative times", "[kernel][
   CHECK(runs == 3);
   CHECK(t.min >= 0);
 }
+
+TEST_CASE("peak_memory_of: the child's peak, the parent untouched, failures reported", "[kernel][timing]") {
+  int touched = 0;
+  const std::size_t bytes = std::size_t(64) << 20;
+  const auto peak = peak_memory_of([&] {
+    std::vector<char> block(bytes, 1);  // written: resident
+    touched = block[bytes / 2];
+  });
+  REQUIRE(peak.has_value());
+  CHECK(*peak >= static_cast<long>(bytes));
+  CHECK(touched == 0);  // the work ran in the child
+  CHECK_FALSE(peak_memory_of([] { throw std::runtime_error("fails"); }).has_value());
+}

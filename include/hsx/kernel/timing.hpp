@@ -7,9 +7,13 @@
 //   step runs before each run, untimed (e.g. copying an input that the work consumes).
 // - Summaries: median and quartiles by linear interpolation between order statistics (the "type 7" rule of R and
 //   NumPy's default), min, max and total. Timings are not reproducible; nothing exact depends on them.
+// - Peak memory (peak_memory_of) is the peak resident set size of a child process (fork) that runs the work once:
+//   getrusage's ru_maxrss as wait4 reports it. It counts the pages the child inherited and touched (the caller's
+//   resident memory at the fork, typically a few MB) as well as what the work allocated; POSIX systems only.
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace hsx {
@@ -39,5 +43,11 @@ TimingSummary summarize_times(const std::vector<double>& seconds);
 /// `options` break the bounds above.
 TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOptions& options = {},
                               const std::function<void()>& prepare = {});
+
+/// Runs `run` once in a forked child process and returns the child's peak resident set size in bytes (see the
+/// conventions), or nullopt when the child did not finish normally (`run` threw, the child crashed or was killed)
+/// or no child could be made. The parent's state is untouched by `run` (it runs in the child only); the child ends
+/// with _exit, so no buffered output is flushed twice. Call it when no other thread of the caller is running.
+std::optional<long> peak_memory_of(const std::function<void()>& run);
 
 }  // namespace hsx

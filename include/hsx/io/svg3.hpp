@@ -1,0 +1,57 @@
+// SVG pictures of a 3D arrangement without a GUI: a few orthographic views side by side, the boundary triangles
+// shaded by their halfspace's colour and lit by their normal, painted back to front.
+//
+// Conventions (owned here):
+// - A view looks along `direction` (from the viewer into the scene) with `up` pointing up on screen; screen right
+//   is direction x up. The default views (z is up): "front" looks along +y, "side" along -x, "top" along -z (y up on
+//   screen), "isometric" along (-1, 1, -1). Views are laid out two per row, each fitted to the domain box's
+//   outline with one scale for all views.
+// - What is drawn, per view: every arrangement triangle that is not on the domain box and not seen edge-on (its
+//   exact normal (v1-v0)x(v2-v0) is not orthogonal to `direction`, decided exactly): one "face" polygon each, in
+//   a "view" group. Nothing else is a polygon. Faces are painted back to front by the depth of their centroid
+//   along `direction` (ties by triangle index), filled with the colour of the triangle's first halfspace times a
+//   light factor 0.35 + 0.65 |n . l| (n the unit normal, l a fixed light direction leaning from the viewer to the
+//   upper left), with `opacity`, so that hidden parts show through. Coordinates and shading are doubles (a
+//   picture, not a proof); the choice of triangles is exact.
+// - Drawn on top of the faces, in this order: the domain box's twelve edges ("domain" lines), the samples ("sample"
+//   circles in their halfspace's colour, visible through everything), and on request the labels: "c<k>" at cell
+//   k's interior point ("cell-id"), "p<k>" at the centroid of patch k's largest triangle ("patch-id"), the ids of
+//   the complex (hsx arrange's text and hsx-complex/1). Under the views, a legend of the halfspaces ("legend").
+// - Output is deterministic: fixed drawing order, numbers with 4 decimals (io/svg.hpp's svg_number).
+#pragma once
+
+#include <hsx/complex/from_arrangement3.hpp>
+#include <hsx/geometry/scene3.hpp>
+
+#include <string>
+#include <vector>
+
+namespace hsx {
+
+struct SvgView3 {
+  std::string name;   ///< shown above the view
+  PointQ3 direction;  ///< the viewing direction, into the scene; non-zero
+  PointQ3 up;         ///< up on screen; not parallel to direction
+};
+
+/// front, side, top, isometric (see the conventions).
+std::vector<SvgView3> default_svg_views3();
+
+struct Svg3Options {
+  int width = 1000;                ///< total picture width in px (>= 200); each view is half of it, square
+  std::vector<SvgView3> views;     ///< empty: default_svg_views3()
+  double opacity = 0.85;           ///< fill opacity of the faces, in (0, 1]
+  bool show_cell_ids = false;      ///< label every cell "c<k>"
+  bool show_patch_ids = false;     ///< label every patch "p<k>"
+  std::string title;
+};
+
+/// The picture. `arranged` must have been built from `scene` (same halfspaces and samples). Throws
+/// std::invalid_argument when they do not fit together or the options break the bounds above.
+std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options = {});
+
+/// How many "face" polygons view `view` of arrangement_svg3 draws: the triangles not on the box and not seen
+/// edge-on (exact). For tests and reports.
+std::size_t svg3_visible_triangles(const Arrangement3& arrangement, const SvgView3& view);
+
+}  // namespace hsx

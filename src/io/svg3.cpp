@@ -1,0 +1,308 @@
+// SVG pictures of 3D arrangements: see svg3.hpp.
+#include <hsx/io/svg3.hpp>
+
+#include <hsx/io/svg.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace hsx {
+namespace {
+
+struct Vec {
+  double x = 0, y = 0, z = 0;
+};
+Vec operator+(const Vec& a, const Vec& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+Vec operator-(const Vec& a, const Vec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+Vec operator*(double k, const Vec& a) { return {k * a.x, k * a.y, k * a.z}; }
+double dot(const Vec& a, const Vec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Vec cross(const Vec& a, const Vec& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Vec unit(const Vec& a) {
+  const double n = std::sqrt(dot(a, a));
+  return n > 0 && std::isfinite(n) ? (1 / n) * a : Vec{};
+}
+Vec to_vec(const PointQ3& p) { return {p.x.get_d(), p.y.get_d(), p.z.get_d()}; }
+
+PointQ3 exact_normal(const Arrangement3& arr, const ArrTriangle3& t) {
+  const PointQ3& a = arr.vertices()[t.vertices[0]];
+  const PointQ3& b = arr.vertices()[t.vertices[1]];
+  const PointQ3& c = arr.vertices()[t.vertices[2]];
+  const Rational ux = b.x - a.x, uy = b.y - a.y, uz = b.z - a.z, vx = c.x - a.x, vy = c.y - a.y, vz = c.z - a.z;
+  return {uy * vz - uz * vy, uz * vx - ux * vz, ux * vy - uy * vx};
+}
+
+bool seen(const Arrangement3& arr, const ArrTriangle3& t, const PointQ3& direction) {
+  if (t.on_box) return false;
+  const PointQ3 n = exact_normal(arr, t);
+  return n.x * direction.x + n.y * direction.y + n.z * direction.z != 0;
+}
+
+/// One view's projection: screen right, screen up and depth (along the viewing direction) as unit vectors.
+struct Projection {
+  Vec right, up, depth, light;
+  double scale = 1, centre_x = 0, centre_y = 0;  // screen = centre + scale * (p - mid) . (right, -up)
+  Vec mid;
+  double X(const Vec& p) const { return centre_x + scale * dot(p - mid, right); }
+  double Y(const Vec& p) const { return centre_y - scale * dot(p - mid, up); }
+  std::string xy(const Vec& p) const { return svg_number(X(p)) + "," + svg_number(Y(p)); }
+};
+
+Projection projection_of(const SvgView3& view) {
+  const Vec d = to_vec(view.direction), u = to_vec(view.up);
+  Projection p;
+  p.depth = unit(d);
+  p.right = unit(cross(d, u));
+  p.up = unit(cross(p.right, p.depth));
+  p.light = unit(-1.0 * p.depth + 0.5 * p.up - 0.4 * p.right);
+  return p;
+}
+
+std::array<Vec, 8> corners_of(const Box3& box) {
+  std::array<Vec, 8> c;
+  const Vec lo = to_vec(box.min), hi = to_vec(box.max);
+  for (int k = 0; k < 8; ++k) c[k] = {(k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z};
+  return c;
+}
+
+/// The largest extent of the domain's outline on screen, in scene units (scale 1).
+double outline_extent(const Projection& p, const Box3& box) {
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (const Vec& c : corners_of(box)) {
+    lo_x = std::min(lo_x, dot(c, p.right));
+    hi_x = std::max(hi_x, dot(c, p.right));
+    lo_y = std::min(lo_y, dot(c, p.up));
+    hi_y = std::max(hi_y, dot(c, p.up));
+  }
+  return std::max(hi_x - lo_x, hi_y - lo_y);
+}
+
+struct Rgb {
+  double r = 0, g = 0, b = 0;
+};
+
+Rgb parse_colour(const char* hex) {  // "#rrggbb"
+  unsigned r = 0, g = 0, b = 0;
+  std::sscanf(hex, "#%02x%02x%02x", &r, &g, &b);
+  return {r / 255.0, g / 255.0, b / 255.0};
+}
+
+std::string colour_text(const Rgb& c, double factor) {
+  auto channel = [&](double v) { return static_cast<int>(std::lround(std::clamp(v * factor, 0.0, 1.0) * 255)); };
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", channel(c.r), channel(c.g), channel(c.b));
+  return buffer;
+}
+
+struct Fonts {
+  double caption, legend, label;
+  explicit Fonts(double width) {
+    const double k = width / 1000;
+    caption = std::max(10.0, 14 * k);
+    legend = std::max(9.0, 12 * k);
+    label = std::max(8.0, 11 * k);
+  }
+};
+
+void check_fit(const Scene3& scene, const Arranged3& a, const Svg3Options& o) {
+  const int n = static_cast<int>(scene.halfspaces.size());
+  if (a.arrangement.halfspace_count() != n || a.complex.halfspace_count() != n ||
+      a.arrangement.cells().size() != a.complex.cells.size() ||
+      a.arrangement.sample_triangles().size() != scene.samples.size())
+    throw std::invalid_argument("arrangement_svg3: the arrangement was not built from this scene");
+  if (o.width < 200) throw std::invalid_argument("arrangement_svg3: width below 200 px");
+  if (!(o.opacity > 0 && o.opacity <= 1)) throw std::invalid_argument("arrangement_svg3: opacity not in (0, 1]");
+  for (const SvgView3& v : o.views) {
+    const PointQ3& d = v.direction;
+    const PointQ3& u = v.up;
+    const bool parallel = d.y * u.z == d.z * u.y && d.z * u.x == d.x * u.z && d.x * u.y == d.y * u.x;
+    if ((d.x == 0 && d.y == 0 && d.z == 0) || parallel)
+      throw std::invalid_argument("arrangement_svg3: view \"" + v.name +
+                                  "\" has a zero direction or an up parallel to it");
+  }
+}
+
+std::string faces_svg(const Arrangement3& arr, const SvgView3& view, const Projection& p, double opacity) {
+  struct Face {
+    double depth;
+    int index;
+  };
+  std::vector<Face> faces;
+  const auto& triangles = arr.triangles();
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    if (!seen(arr, triangles[k], view.direction)) continue;
+    Vec c;
+    for (int v : triangles[k].vertices) c = c + to_vec(arr.vertices()[v]);
+    faces.push_back({dot((1.0 / 3) * c, p.depth), static_cast<int>(k)});
+  }
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return a.depth != b.depth ? a.depth > b.depth : a.index < b.index;  // farthest first
+  });
+  std::string s = "<g class=\"view\" data-view=\"" + svg_escape(view.name) + "\" fill-opacity=\"" +
+                  svg_number(opacity) + "\" stroke-width=\"0.4\" stroke-linejoin=\"round\">\n";
+  for (const Face& f : faces) {
+    const ArrTriangle3& t = triangles[static_cast<std::size_t>(f.index)];
+    const Vec n = unit(to_vec(exact_normal(arr, t)));
+    const double light = 0.35 + 0.65 * std::fabs(dot(n, p.light));
+    const Rgb base = parse_colour(svg_palette_colour(t.halfspaces.empty() ? -1 : t.halfspaces.front()));
+    s += "<polygon class=\"face\" data-triangle=\"" + std::to_string(f.index) + "\" points=\"";
+    for (int k = 0; k < 3; ++k) s += (k ? " " : "") + p.xy(to_vec(arr.vertices()[t.vertices[k]]));
+    s += "\" fill=\"" + colour_text(base, light) + "\" stroke=\"" + colour_text(base, 0.75 * light) + "\"/>\n";
+  }
+  return s + "</g>\n";
+}
+
+std::string domain_svg(const Box3& box, const Projection& p) {
+  const auto c = corners_of(box);
+  std::string s = "<g class=\"domain\" stroke=\"#555555\" stroke-width=\"1\" stroke-dasharray=\"4 3\">\n";
+  for (int k = 0; k < 8; ++k)
+    for (int bit : {1, 2, 4})
+      if (!(k & bit))
+        s += "<line x1=\"" + svg_number(p.X(c[k])) + "\" y1=\"" + svg_number(p.Y(c[k])) + "\" x2=\"" +
+             svg_number(p.X(c[k | bit])) + "\" y2=\"" + svg_number(p.Y(c[k | bit])) + "\"/>\n";
+  return s + "</g>\n";
+}
+
+std::string samples_svg(const Scene3& scene, const Projection& p) {
+  std::string s = "<g stroke=\"#000000\" stroke-width=\"0.8\">\n";
+  for (std::size_t k = 0; k < scene.samples.size(); ++k) {
+    const Vec q = to_vec(scene.samples[k].location);
+    s += "<circle class=\"sample\" data-id=\"" + std::to_string(k) + "\" cx=\"" + svg_number(p.X(q)) + "\" cy=\"" +
+         svg_number(p.Y(q)) + "\" r=\"3\" fill=\"" + svg_palette_colour(scene.samples[k].halfspace) + "\"/>\n";
+  }
+  return s + "</g>\n";
+}
+
+/// Where patch labels go: the centroid of each patch's largest triangle (exact comparison, lowest id on ties).
+std::vector<Vec> patch_label_points(const Arranged3& a) {
+  const auto& arr = a.arrangement;
+  std::vector<Vec> points;
+  for (const Patch& patch : a.complex.patches) {
+    int best = -1;
+    for (int t : patch.pieces)
+      if (best < 0 || arr.triangles()[t].area2 > arr.triangles()[best].area2) best = t;
+    Vec c;
+    if (best >= 0)
+      for (int v : arr.triangles()[best].vertices) c = c + (1.0 / 3) * to_vec(arr.vertices()[v]);
+    points.push_back(c);
+  }
+  return points;
+}
+
+std::string labels_svg(const Arranged3& a, const std::vector<Vec>& patch_points, const Projection& p,
+                       const Svg3Options& o, double font_size) {
+  if (!o.show_cell_ids && !o.show_patch_ids) return "";
+  const double shift = 0.35 * font_size;
+  std::string s = "<g font-size=\"" + svg_number(font_size) + "\" text-anchor=\"middle\" stroke=\"#ffffff\" " +
+                  "stroke-width=\"" + svg_number(0.3 * font_size) +
+                  "\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
+  if (o.show_cell_ids)
+    for (std::size_t c = 0; c < a.arrangement.cells().size(); ++c) {
+      const Vec q = to_vec(a.arrangement.cells()[c].interior);
+      s += "<text class=\"cell-id\" x=\"" + svg_number(p.X(q)) + "\" y=\"" + svg_number(p.Y(q) + shift) +
+           "\" fill=\"#333333\">c" + std::to_string(c) + "</text>\n";
+    }
+  if (o.show_patch_ids)
+    for (std::size_t k = 0; k < patch_points.size(); ++k)
+      s += "<text class=\"patch-id\" x=\"" + svg_number(p.X(patch_points[k])) + "\" y=\"" +
+           svg_number(p.Y(patch_points[k]) + shift) + "\" font-weight=\"bold\" fill=\"" +
+           svg_palette_colour(a.complex.patches[k].halfspace) + "\">p" + std::to_string(k) + "</text>\n";
+  return s + "</g>\n";
+}
+
+std::string legend_text(const Halfspace3& h) {
+  return h.name + " (" + to_string(h.kind) + (h.complement ? ", complement" : "") + ")";
+}
+
+/// The legend of halfspaces in as many equal columns as fit; its height goes to *height.
+std::string legend_svg(const Scene3& scene, double left, double top, double room, double font_size, double* height) {
+  const double swatch = 18, gap = 6, column_gap = 18, line = 1.5 * font_size;
+  double widest = 0;
+  for (const Halfspace3& h : scene.halfspaces) widest = std::max(widest, svg_text_width(legend_text(h), font_size));
+  const double column = swatch + gap + widest + column_gap;
+  const int columns = std::max(1, static_cast<int>((room + column_gap) / column));
+  const int n = static_cast<int>(scene.halfspaces.size());
+  const int rows = (n + columns - 1) / columns;
+  std::string s = "<g class=\"legend\" font-size=\"" + svg_number(font_size) + "\">\n";
+  for (int i = 0; i < n; ++i) {
+    const double x = left + (i / rows) * column, y = top + (i % rows) * line;
+    s += "<rect x=\"" + svg_number(x) + "\" y=\"" + svg_number(y) + "\" width=\"" + svg_number(swatch) +
+         "\" height=\"" + svg_number(0.9 * font_size) + "\" fill=\"" + svg_palette_colour(i) + "\"/>\n";
+    s += "<text x=\"" + svg_number(x + swatch + gap) + "\" y=\"" + svg_number(y + 0.8 * font_size) +
+         "\" fill=\"#222222\">" + svg_escape(legend_text(scene.halfspaces[static_cast<std::size_t>(i)])) + "</text>\n";
+  }
+  *height = rows * line;
+  return s + "</g>\n";
+}
+
+}  // namespace
+
+std::vector<SvgView3> default_svg_views3() {
+  const Rational o(0), one(1), m(-1);
+  return {{"front (along +y)", {o, one, o}, {o, o, one}},
+          {"side (along -x)", {m, o, o}, {o, o, one}},
+          {"top (along -z)", {o, o, m}, {o, one, o}},
+          {"isometric (along (-1, 1, -1))", {m, one, m}, {o, o, one}}};
+}
+
+std::size_t svg3_visible_triangles(const Arrangement3& arrangement, const SvgView3& view) {
+  std::size_t n = 0;
+  for (const ArrTriangle3& t : arrangement.triangles()) n += seen(arrangement, t, view.direction);
+  return n;
+}
+
+std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options) {
+  check_fit(scene, arranged, options);
+  const std::vector<SvgView3> views = options.views.empty() ? default_svg_views3() : options.views;
+  const double width = options.width, margin = 16;
+  const Fonts fonts(width);
+  const double title_height = options.title.empty() ? 0 : 2 * fonts.caption;
+  const double panel = (width - 2 * margin) / 2, caption = 1.6 * fonts.caption, pad = 12;
+  const int rows = static_cast<int>((views.size() + 1) / 2);
+  const Box3& box = arranged.arrangement.domain();
+  std::vector<Projection> projections;
+  double scale = INFINITY;
+  for (const SvgView3& v : views) {
+    projections.push_back(projection_of(v));
+    const double extent = outline_extent(projections.back(), box);
+    if (extent > 0) scale = std::min(scale, (panel - caption - 2 * pad) / extent);
+  }
+  if (!std::isfinite(scale)) scale = 1;
+  const Vec mid = 0.5 * (to_vec(box.min) + to_vec(box.max));
+  const std::vector<Vec> patch_points = patch_label_points(arranged);
+  std::string body;
+  for (std::size_t k = 0; k < views.size(); ++k) {
+    Projection& p = projections[k];
+    const double left = margin + static_cast<double>(k % 2) * panel;
+    const double top = margin + title_height + static_cast<double>(k / 2) * panel;
+    p.scale = scale;
+    p.mid = mid;
+    p.centre_x = left + panel / 2;
+    p.centre_y = top + caption + (panel - caption) / 2;
+    body += "<text class=\"caption\" x=\"" + svg_number(left + panel / 2) + "\" y=\"" +
+            svg_number(top + fonts.caption) + "\" text-anchor=\"middle\" font-size=\"" + svg_number(fonts.caption) +
+            "\">" + svg_escape(views[k].name) + "</text>\n";
+    body += faces_svg(arranged.arrangement, views[k], p, options.opacity);
+    body += domain_svg(box, p);
+    body += samples_svg(scene, p);
+    body += labels_svg(arranged, patch_points, p, options, fonts.label);
+  }
+  double legend_height = 0;
+  const double legend_top = margin + title_height + rows * panel + 8;
+  body += legend_svg(scene, margin, legend_top, width - 2 * margin, fonts.legend, &legend_height);
+  const double height = legend_top + legend_height + margin;
+  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  s += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + svg_number(width) + "\" height=\"" + svg_number(height) +
+       "\" viewBox=\"0 0 " + svg_number(width) + " " + svg_number(height) +
+       "\" font-family=\"Helvetica, Arial, sans-serif\">\n";
+  s += "<rect x=\"0\" y=\"0\" width=\"" + svg_number(width) + "\" height=\"" + svg_number(height) +
+       "\" fill=\"#ffffff\"/>\n";
+  if (!options.title.empty())
+    s += "<text class=\"title\" x=\"" + svg_number(width / 2) + "\" y=\"" + svg_number(margin + fonts.caption) +
+         "\" text-anchor=\"middle\" font-size=\"" + svg_number(1.2 * fonts.caption) + "\">" +
+         svg_escape(options.title) + "</text>\n";
+  return s + body + "</svg>\n";
+}
+
+}  // namespace hsx

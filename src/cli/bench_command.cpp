@@ -2,15 +2,20 @@
 // with their spread and as ratios of medians to the graph cut, side by side in one run; with --meshes, NH-Rep's
 // stages on meshes, as ratios to reading the mesh. --csv and --json write the same figures.
 #include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/bsh/graph_cut.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
 #include <hsx/geometry/mesh3.hpp>
+#include <hsx/geometry/random_scene.hpp>
 #include <hsx/io/files.hpp>
 #include <hsx/io/input.hpp>
 #include <hsx/kernel/timing.hpp>
 #include "cli/commands.hpp"
 
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+#include <boost/graph/edmonds_karp_max_flow.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -19,6 +24,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -30,6 +37,9 @@ struct BenchOptions {
   ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::vector<std::string> dirs{"data/scenes", "data/figures"};
   std::vector<std::string> meshes;  ///< NH-Rep mode: .obj files, each with a .fea beside it
+  bool cuts = false;                ///< graph-cut mode: the certified cut against double baselines
+  std::vector<int> cut_halfspaces{10, 50, 100, 200};  ///< graph-cut mode: random scenes of these sizes
+  int cut_scenes = 1;               ///< graph-cut mode: scenes per size
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -328,6 +338,134 @@ void run_bench(const BenchOptions& o, OutputFiles& files) {
   publish(report, o, files);
 }
 
+// ---- the certified graph cut against double-precision max flows ----
+// The baselines are the same graph (Fig. 8, graph_cut.hpp) with double weights samples * lambda + measure (lambda
+// above the measure of every support together; infinity for forced edges), built from the Problem and solved by
+// Boost's Boykov-Kolmogorov and Edmonds-Karp: the cost of certification is the ratio of the certified cut to them.
+
+using DoubleTraits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
+using DoubleFlowGraph = boost::adjacency_list<
+    boost::vecS, boost::vecS, boost::directedS, boost::no_property,
+    boost::property<boost::edge_capacity_t, double,
+                    boost::property<boost::edge_residual_capacity_t, double,
+                                    boost::property<boost::edge_reverse_t, DoubleTraits::edge_descriptor>>>>;
+
+/// The double graph of `problem` (no constraints); s = cell_count, t = cell_count + 1.
+DoubleFlowGraph double_cut_graph(const bsh::Problem& problem) {
+  const int n = problem.cell_count();
+  const Complex& c = problem.complex();
+  double lambda = 1;
+  for (const auto& bounds : problem.support_enclosures()) lambda += 2 * bounds.second;
+  std::vector<double> source(n, 0), sink(n, 0);
+  std::map<std::pair<int, int>, double> binary;
+  for (const Patch& p : c.patches) {
+    source[p.inside_cell] += lambda * static_cast<double>(p.samples.size());
+    sink[p.outside_cell] += lambda * static_cast<double>(p.samples.size());
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < n; ++k)
+    if (c.cells[k].outer) sink[k] = inf;
+  for (int g = 0; g < problem.support_count(); ++g) {
+    const bsh::SupportTerm& st = problem.supports()[g];
+    const auto& [lo, hi] = problem.support_enclosures()[g];
+    double& ab = binary[{st.cell_a, st.cell_b}];
+    double& ba = binary[{st.cell_b, st.cell_a}];
+    ab = st.allow_a_inside ? ab + (lo + hi) / 2 : inf;
+    ba = st.allow_b_inside ? ba + (lo + hi) / 2 : inf;
+  }
+  DoubleFlowGraph g(n + 2);
+  auto capacity = boost::get(boost::edge_capacity, g);
+  auto reverse = boost::get(boost::edge_reverse, g);
+  auto add = [&](int from, int to, double w) {
+    if (w == 0) return;
+    auto e = boost::add_edge(from, to, g).first;
+    auto r = boost::add_edge(to, from, g).first;
+    capacity[e] = w;
+    capacity[r] = 0;
+    reverse[e] = r;
+    reverse[r] = e;
+  };
+  for (int k = 0; k < n; ++k) {
+    add(n, k, source[k]);
+    add(k, n + 1, sink[k]);
+  }
+  for (const auto& [pair, w] : binary) add(pair.first, pair.second, w);
+  return g;
+}
+
+/// Builds the double graph and solves it with Boykov-Kolmogorov (`bk`) or Edmonds-Karp; returns the flow value.
+double double_cut(const bsh::Problem& problem, bool bk) {
+  DoubleFlowGraph g = double_cut_graph(problem);
+  const auto n = boost::num_vertices(g);
+  std::vector<boost::default_color_type> color(n);
+  std::vector<DoubleTraits::edge_descriptor> pred(n);
+  auto index = boost::get(boost::vertex_index, g);
+  auto colors = boost::make_iterator_property_map(color.begin(), index);
+  const auto s = n - 2, t = n - 1;
+  if (bk)
+    return boost::boykov_kolmogorov_max_flow(g, boost::get(boost::edge_capacity, g),
+                                             boost::get(boost::edge_residual_capacity, g),
+                                             boost::get(boost::edge_reverse, g), colors, index, s, t);
+  return boost::edmonds_karp_max_flow(g, s, t, boost::get(boost::edge_capacity, g),
+                                      boost::get(boost::edge_residual_capacity, g),
+                                      boost::get(boost::edge_reverse, g), colors,
+                                      boost::make_iterator_property_map(pred.begin(), index));
+}
+
+/// Random scene `index` of `halfspaces` halfspaces (seed 1, up to 3 samples per halfspace): its cut, timed.
+BenchRow bench_cut(int halfspaces, int index, const BenchOptions& o, const RepeatOptions& repeat) {
+  RandomSceneSettings settings;
+  settings.min_halfspaces = settings.max_halfspaces = halfspaces;
+  settings.max_samples = 3;
+  BenchRow row;
+  row.input = "random " + std::to_string(halfspaces) + " #" + std::to_string(index);
+  const Scene2 scene = random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene;
+  Arranged2 arranged;
+  try {
+    arranged = arrange(scene, o.limits);
+  } catch (const InputError& e) {
+    row.skipped = e.what();
+    return row;
+  }
+  const bsh::Problem problem(arranged.complex);
+  row.sizes = {problem.cell_count(), static_cast<long>(arranged.complex.patches.size())};
+  bsh::CutResult cut, cold_cut;
+  bsh::CutConstraints cold;
+  cold.warm_start = false;
+  StageResult certified, zero_flow, bk, ek;
+  certified.timing = time_repeatedly([&] { cut = bsh::graph_cut(problem, {}); }, repeat);
+  zero_flow.timing = time_repeatedly([&] { cold_cut = bsh::graph_cut(problem, cold); }, repeat);
+  bk.timing = time_repeatedly([&] { double_cut(problem, true); }, repeat);
+  ek.timing = time_repeatedly([&] { double_cut(problem, false); }, repeat);
+  row.stages = {certified, zero_flow, bk, ek};
+  const auto verdict = [](const bsh::CutResult& r) { return r.certified ? "yes" : "no: " + r.certificate_note; };
+  row.notes = {verdict(cut), verdict(cold_cut), cut.labelling == cold_cut.labelling ? "yes" : "NO"};
+  return row;
+}
+
+/// Graph-cut mode: the certified cut (warm-started, and from the zero flow: CutConstraints::warm_start) and the two
+/// double max flows on random scenes, as ratios to Boykov-Kolmogorov; notes: both certified, the same cut.
+void run_cut_bench(const BenchOptions& o, OutputFiles& files) {
+  if (o.cut_scenes < 1) throw InputError("--cut-scenes: must be at least 1");
+  for (int h : o.cut_halfspaces)
+    if (h < 1) throw InputError("--cut-halfspaces: every size must be at least 1");
+  Report report;
+  report.mode = "cuts";
+  report.input_name = "scene";
+  report.size_names = {"cells", "patches"};
+  report.stage_names = {"certified cut", "zero-flow cut", "double BK", "double EK"};
+  report.with_ratio = {1, 1, 0, 1};
+  report.reference = 2;
+  report.note_names = {"certified", "zero-flow", "same cut"};
+  report.repeat = repeat_options(o);
+  for (int h : o.cut_halfspaces)
+    for (int k = 0; k < o.cut_scenes; ++k) report.rows.push_back(bench_cut(h, k, o, report.repeat));
+  report.footer = {std::to_string(report.rows.size()) +
+                   " random scenes (seed 1, up to 3 samples per halfspace); ratios to the double Boykov-Kolmogorov "
+                   "max flow on the same graph, each built from the problem inside the timing"};
+  publish(report, o, files);
+}
+
 // ---- NH-Rep stages on meshes ----
 
 BenchRow bench_mesh(const std::string& obj, const RepeatOptions& repeat) {
@@ -400,12 +538,20 @@ void add_bench_command(CLI::App& app) {
       ->check(output_path());
   cmd->add_option("--meshes", o->meshes,
                   "time NH-Rep's stages on these .obj files (each with its .fea) instead of the BSH methods");
+  cmd->add_flag("--cuts", o->cuts,
+               "time the certified graph cut beside double Boykov-Kolmogorov and Edmonds-Karp max flows on random "
+               "scenes instead");
+  cmd->add_option("--cut-halfspaces", o->cut_halfspaces, "--cuts: the scenes' sizes (default 10 50 100 200)");
+  cmd->add_option("--cut-scenes", o->cut_scenes, "--cuts: random scenes per size (default 1)");
   add_arrangement_limits(cmd, o->limits);
   cmd->callback([o] {
     OutputFiles files;  // checked before the measurements, written at the end
     files.expect(o->csv_path, "--csv");
     files.expect(o->json_path, "--json");
-    if (o->meshes.empty())
+    if (o->cuts && !o->meshes.empty()) throw InputError("bench: --cuts and --meshes exclude each other");
+    if (o->cuts)
+      run_cut_bench(*o, files);
+    else if (o->meshes.empty())
       run_bench(*o, files);
     else
       run_nhrep_bench(*o, files);

@@ -321,6 +321,53 @@ TEST_CASE("bsh property 2: graph cut = brute force without sample-connectedness 
   });
 }
 
+/// The cut from the double warm start and the cut from the zero flow, under the same constraints, are the same cut:
+/// the source side of a maximum flow does not depend on the flow (graph_cut.hpp), and both are certified together.
+void check_warm_start_against_zero_flow(const Problem& problem, CutConstraints constraints) {
+  constraints.warm_start = true;
+  const CutResult warm = graph_cut(problem, constraints);
+  constraints.warm_start = false;
+  const CutResult cold = graph_cut(problem, constraints);
+  RC_ASSERT(warm.labelling == cold.labelling);
+  RC_ASSERT(warm.energy.missing_samples == cold.energy.missing_samples);
+  if (cold.energy.missing_samples < 0) return;
+  RC_ASSERT(compare(warm.energy, cold.energy) == Order::Equal);
+  RC_ASSERT(warm.certified == cold.certified);
+}
+
+TEST_CASE("bsh property 2b: the warm-started cut is the exact optimum (small) and the zero-flow cut (larger)",
+          "[bsh][property][graphcut]") {
+  rc::prop("small scenes: warm-started cut = relaxed oracle, certified on straight scenes", [] {
+    const Scene2 scene = *gen_scene(small_scenes());
+    const Complex complex = complex_of(scene);
+    const Problem problem(complex);
+    const BruteForceResult bf = oracle(problem, false);
+    const CutResult cut = graph_cut(problem, {});
+    RC_ASSERT(cut.energy.missing_samples >= 0);
+    const Order order = compare(cut.energy, bf.energy);
+    RC_ASSERT(order != Order::Less);
+    RC_ASSERT(order != Order::Greater);
+    if (!curved(complex)) RC_ASSERT(cut.certified);
+    check_warm_start_against_zero_flow(problem, {});
+  });
+  rc::prop("larger scenes, with forced cells and removed supports: warm start = zero flow", [] {
+    SceneGenOptions o = small_scenes();
+    o.max_halfspaces = 14;
+    o.max_samples = 20;
+    const Scene2 scene = *gen_scene(o);
+    const Complex complex = complex_of(scene);
+    const Problem problem(complex);
+    RC_CLASSIFY(problem.cell_count() > 30, "more than 30 cells");
+    check_warm_start_against_zero_flow(problem, {});
+    CutConstraints k;
+    k.forced.assign(problem.cell_count(), -1);
+    k.removed.assign(problem.support_count(), 0);
+    for (auto& f : k.forced) f = static_cast<signed char>(*rc::gen::inRange(-6, 2) < 0 ? -1 : *rc::gen::inRange(0, 2));
+    for (auto& r : k.removed) r = static_cast<char>(*rc::gen::inRange(0, 8) == 0);
+    check_warm_start_against_zero_flow(problem, k);
+  });
+}
+
 TEST_CASE("bsh property 3: cut cost = labelling energy (Eqs. 2-4); straight scenes give certified cuts",
           "[bsh][property][eq24]") {
   rc::prop("every graph cut on a straight scene is certified", [] {

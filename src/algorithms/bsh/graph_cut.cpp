@@ -3,7 +3,10 @@
 #include "algorithms/flow_graph.hpp"
 
 #include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <optional>
@@ -94,15 +97,46 @@ std::optional<int> sign_of(const Capacity& d) {
   return d.measure().sign();
 }
 
+/// Certified double enclosure of a - b (atoms only), walked without building the difference; sets `equal` when
+/// every coefficient cancels.
+DoubleBounds difference_bounds(const Capacity& a, const Capacity& b, bool* equal) {
+  const Problem* problem = a.problem ? a.problem : b.problem;
+  DoubleCombination sum;
+  *equal = true;
+  const auto add = [&](int g, long k) {
+    if (k == 0) return;
+    *equal = false;
+    const auto& [lo, hi] = problem->support_enclosures()[g];
+    sum.add(k, DoubleBounds{lo, hi});
+  };
+  std::size_t i = 0, j = 0;
+  while (i < a.atoms.size() || j < b.atoms.size()) {
+    if (j == b.atoms.size() || (i < a.atoms.size() && a.atoms[i].first < b.atoms[j].first)) {
+      add(a.atoms[i].first, a.atoms[i].second);
+      ++i;
+    } else if (i == a.atoms.size() || b.atoms[j].first < a.atoms[i].first) {
+      add(b.atoms[j].first, -b.atoms[j].second);
+      ++j;
+    } else {
+      add(a.atoms[i].first, a.atoms[i].second - b.atoms[j].second);
+      ++i;
+      ++j;
+    }
+  }
+  return sum.bounds();
+}
+
 Order order(const Capacity& a, const Capacity& b) {
   if (a.infinite || b.infinite) {
     if (a.infinite && b.infinite) return Order::Equal;
     return a.infinite ? Order::Greater : Order::Less;
   }
   if (a.samples != b.samples) return a.samples < b.samples ? Order::Less : Order::Greater;
-  const Capacity d = combine(a, b, -1);
-  if (d.atoms.empty()) return Order::Equal;
-  const std::optional<int> s = sign_of(d);
+  bool equal = false;
+  const DoubleBounds bounds = difference_bounds(a, b, &equal);
+  if (equal) return Order::Equal;
+  if (const int s = bounds.certain_sign()) return s < 0 ? Order::Less : Order::Greater;
+  const std::optional<int> s = sign_of(combine(a, b, -1));
   if (!s) return Order::Tie;
   return *s < 0 ? Order::Less : (*s > 0 ? Order::Greater : Order::Equal);
 }
@@ -165,6 +199,137 @@ Terms build_terms(const Problem& problem, const CutConstraints& constraints) {
   return t;
 }
 
+
+/// One arc of the flow network (its reverse edge, of capacity 0, is reverse[e]).
+struct Arc {
+  Traits::edge_descriptor e;
+  int from, to;
+};
+
+/// The network of Fig. 8 built on a Boost graph, with its arcs in insertion order.
+struct Network {
+  explicit Network(int vertices) : g(vertices) {}
+  FlowGraph g;
+  std::vector<Arc> arcs;
+};
+
+// ---- the double-precision warm start ----
+// The certified max flow starts from a flow found in doubles: Boost's Boykov-Kolmogorov on the capacities rounded to
+// one scalar each (samples * lambda + measure, lambda above the measure of every cut, so the scalar order of cuts
+// is the lexicographic one up to rounding), decomposed into s-t paths; each path is then augmented exactly by its
+// certified bottleneck. Rounding only makes the warm start less than maximal: Edmonds-Karp finishes the flow in
+// exact arithmetic and the certificate below is checked exactly, so the result does not depend on the doubles
+// (the source side is the set reachable from s in the residual graph of a maximum flow, the same for every
+// maximum flow).
+
+using DoubleGraph = hsx::FlowGraph<double>;
+
+/// Samples weigh more than the measure of every support together (a finite cut's measure is at most that).
+double lambda_of(const Problem& problem) {
+  double total = 0;
+  for (const auto& bounds : problem.support_enclosures()) total += bounds.second;
+  return 2 * total + 1;
+}
+
+double double_capacity(const Capacity& c, const Problem& problem, double lambda) {
+  if (c.infinite) return std::numeric_limits<double>::infinity();
+  double value = static_cast<double>(c.samples) * lambda;
+  for (const auto& [g, k] : c.atoms) {
+    const auto& [lo, hi] = problem.support_enclosures()[g];
+    value += static_cast<double>(k) * (lo + (hi - lo) / 2);
+  }
+  return value;
+}
+
+/// The flow on each arc of `net` (by index) of a maximum flow of the rounded capacities.
+std::vector<double> double_flow(const Network& net, const Problem& problem, int s, int t) {
+  const double lambda = lambda_of(problem);
+  const auto n = boost::num_vertices(net.g);
+  DoubleGraph g(n);
+  auto capacity = boost::get(boost::edge_capacity, g);
+  auto residual = boost::get(boost::edge_residual_capacity, g);
+  auto reverse = boost::get(boost::edge_reverse, g);
+  auto exact_capacity = boost::get(boost::edge_capacity, net.g);
+  std::vector<Traits::edge_descriptor> reverse_of_arc;
+  for (const Arc& a : net.arcs) {
+    auto e = boost::add_edge(a.from, a.to, g).first;
+    auto r = boost::add_edge(a.to, a.from, g).first;
+    capacity[e] = double_capacity(exact_capacity[a.e], problem, lambda);
+    capacity[r] = 0;
+    reverse[e] = r;
+    reverse[r] = e;
+    reverse_of_arc.push_back(r);
+  }
+  std::vector<boost::default_color_type> color(n);
+  boost::boykov_kolmogorov_max_flow(g, capacity, residual, reverse,
+                                    boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
+                                    boost::get(boost::vertex_index, g), s, t);
+  std::vector<double> flow;
+  flow.reserve(net.arcs.size());
+  for (const auto& r : reverse_of_arc) flow.push_back(residual[r]);  // the reverse edge's residual = the arc's flow
+  return flow;
+}
+
+/// Augments the exact flow by its certified bottleneck along `path` (arc indices, s to t); a path whose bottleneck
+/// is not certainly positive is left alone.
+void augment_exactly(Network& net, const std::vector<int>& path) {
+  auto residual = boost::get(boost::edge_residual_capacity, net.g);
+  auto reverse = boost::get(boost::edge_reverse, net.g);
+  Capacity bottleneck = residual[net.arcs[path.front()].e];
+  for (int i : path)
+    if (residual[net.arcs[i].e] < bottleneck) bottleneck = residual[net.arcs[i].e];
+  if (!(Capacity() < bottleneck)) return;
+  for (int i : path) {
+    const auto e = net.arcs[i].e;
+    residual[e] = residual[e] - bottleneck;
+    residual[reverse[e]] = residual[reverse[e]] + bottleneck;
+  }
+}
+
+/// Decomposes `flow` (per arc, in doubles) into s-t paths, depth first with a current arc per vertex (an arc whose
+/// remaining flow is negligible, or that closes a cycle, is passed over for good), and augments the exact flow
+/// along each. Asks `stop` before each path; false when stopped.
+bool warm_start(Network& net, std::vector<double> flow, int s, int t, const std::function<bool()>& stop) {
+  const int n = static_cast<int>(boost::num_vertices(net.g));
+  double largest = 0;
+  for (double f : flow)
+    if (std::isfinite(f)) largest = std::max(largest, f);
+  const double negligible = largest * 1e-12;
+  std::vector<std::vector<int>> out(n);
+  for (std::size_t i = 0; i < net.arcs.size(); ++i)
+    if (flow[i] > negligible) out[net.arcs[i].from].push_back(static_cast<int>(i));
+  std::vector<std::size_t> current(n, 0);
+  std::vector<char> on_path(n, 0);
+  for (;;) {
+    if (stop && stop()) return false;
+    std::vector<int> path;
+    int v = s;
+    on_path[s] = 1;
+    while (v != t) {
+      auto& k = current[v];
+      while (k < out[v].size() && (flow[out[v][k]] <= negligible || on_path[net.arcs[out[v][k]].to])) ++k;
+      if (k < out[v].size()) {
+        path.push_back(out[v][k]);
+        v = net.arcs[out[v][k]].to;
+        on_path[v] = 1;
+        continue;
+      }
+      if (path.empty()) return true;  // s has no flow left
+      on_path[v] = 0;                  // a dead end: back up and pass its arc over
+      v = net.arcs[path.back()].from;
+      path.pop_back();
+      ++current[v];
+    }
+    double delta = std::numeric_limits<double>::infinity();
+    for (int i : path) delta = std::min(delta, flow[i]);
+    for (int i : path) {
+      flow[i] -= delta;
+      on_path[net.arcs[i].to] = 0;
+    }
+    augment_exactly(net, path);
+  }
+}
+
 }  // namespace
 
 bool cut_cost(const Problem& problem, const CutConstraints& constraints, const Labelling& labelling, Energy* cost) {
@@ -190,21 +355,22 @@ bool cut_cost(const Problem& problem, const CutConstraints& constraints, const L
 CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, const std::function<bool()>& stop) {
   const int n = problem.cell_count();
   const Terms terms = build_terms(problem, constraints);
-  FlowGraph g(n + 2);
+  Network net(n + 2);
+  FlowGraph& g = net.g;
   const int s = n, t = n + 1;
   auto capacity = boost::get(boost::edge_capacity, g);
   auto residual = boost::get(boost::edge_residual_capacity, g);
   auto reverse = boost::get(boost::edge_reverse, g);
-  struct Arc { Traits::edge_descriptor e; int from, to; };
-  std::vector<Arc> arcs;
   auto add = [&](int from, int to, const Capacity& w) {
     auto e = boost::add_edge(from, to, g).first;
     auto r = boost::add_edge(to, from, g).first;
     capacity[e] = w;
     capacity[r] = Capacity();
+    residual[e] = w;
+    residual[r] = Capacity();
     reverse[e] = r;
     reverse[r] = e;
-    arcs.push_back({e, from, to});
+    net.arcs.push_back({e, from, to});
   };
   for (int k = 0; k < n; ++k) {
     if (terms.source_infinite[k])
@@ -246,18 +412,24 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
   std::vector<boost::default_color_type> color(n + 2);
   std::vector<Traits::edge_descriptor> pred(n + 2);
   // The flow value is computed below from the flow on each arc out of s (Boost's own sum would add "capacity -
-  // residual" on infinite edges, which is meaningless here).
-  if (!interruptible_max_flow(
-          g, s, t, capacity, residual, reverse,
-          boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
-          boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)), stop)) {
+  // residual" on infinite edges, which is meaningless here). `stop` is asked before the double flow, before each
+  // warm-start path and before each augmenting path of Edmonds-Karp.
+  const auto stopped_result = [n] {
     CutResult stopped;
     stopped.labelling.assign(n, 0);
     stopped.energy.missing_samples = -1;
     stopped.certificate_note = "stopped";
     stopped.stopped = true;
     return stopped;
-  }
+  };
+  if (stop && stop()) return stopped_result();
+  if (constraints.warm_start && !warm_start(net, double_flow(net, problem, s, t), s, t, stop))
+    return stopped_result();
+  if (!interruptible_augment(
+          g, s, t, residual, reverse,
+          boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
+          boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)), stop))
+    return stopped_result();
 
   // S side: vertices reachable from s through edges with (certainly) positive residual capacity.
   CutResult result;
@@ -287,7 +459,7 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
   if (reach[t]) note("sink reachable after max flow");
   std::vector<Capacity> balance(n + 2);
   Capacity flow;
-  for (const Arc& a : arcs) {
+  for (const Arc& a : net.arcs) {
     const Capacity& cap = capacity[a.e];
     const Capacity& res = residual[a.e];
     if (cap.infinite) {

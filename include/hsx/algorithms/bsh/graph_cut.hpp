@@ -33,11 +33,16 @@ struct CutResult {
 struct CutConstraints {
   std::vector<char> removed;       ///< per support: 1 = may not lie on the boundary (|p| = infinity); empty: none
   std::vector<signed char> forced; ///< per cell: -1 free, 0 or 1 fixed (used to enumerate ties); empty: none
+  /// How the exact max flow starts: true (the default) from a flow found in doubles (Boost's Boykov-Kolmogorov,
+  /// decomposed into paths, each augmented exactly by its certified bottleneck), false from the zero flow. Either
+  /// way Edmonds-Karp finishes it exactly and the result is the same; false is the reference tests compare with.
+  bool warm_start = true;
 };
 
 /// Minimum-energy orientation-preserving labelling under `constraints`. When the constraints admit no finite
-/// labelling, `energy.missing_samples` is -1 and `certified` is false. `stop`, when set, is asked before every
-/// augmenting path of the max flow (a time limit); when it says stop, the result has `stopped` set.
+/// labelling, `energy.missing_samples` is -1 and `certified` is false. `stop`, when set, is asked before the double
+/// flow, before each warm-start path and before every augmenting path of the max flow (a time limit); when it says
+/// stop, the result has `stopped` set.
 CutResult graph_cut(const Problem& problem, const CutConstraints& constraints,
                     const std::function<bool()>& stop = {});
 

@@ -55,6 +55,10 @@ inline void add_arrangement_limits(CLI::App* cmd, ArrangementLimits& limits) {
                   "refuse a scene whose cells x halfspaces exceeds this (default " +
                       std::to_string(limits.max_side_entries) + "; 0: no limit)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-triangles", limits.max_triangles,
+                  "3D scenes: refuse an arrangement with more refined triangles than this (default " +
+                      std::to_string(limits.max_triangles) + "; 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
 }
 
 void add_arrange_command(CLI::App& app);

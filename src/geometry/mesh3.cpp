@@ -15,6 +15,7 @@
 #include "geometry/components.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -88,6 +89,7 @@ std::string quoted(std::string_view s) {
   std::string out = "\"" + std::string(s.substr(0, kShown)) + (s.size() > kShown ? "...\"" : "\"");
   return out;
 }
+std::string quoted(const std::string& s) { return quoted(std::string_view(s)); }
 
 PointQ3 minus(const PointQ3& a, const PointQ3& b) { return PointQ3{a.x - b.x, a.y - b.y, a.z - b.z}; }
 
@@ -153,7 +155,11 @@ int orient3d(const PointQ3& a, const PointQ3& b, const PointQ3& c, const PointQ3
 
 }  // namespace
 
-std::optional<bool> point_inside_faces(const Mesh3& mesh, const std::vector<int>& faces, const PointQ3& p) {
+namespace {
+
+/// The ray-parity test over `count` triangles; `corners(i)` gives triangle i's three vertices.
+template <class Corners>
+std::optional<bool> point_inside_by_parity(std::size_t count, const Corners& corners, const PointQ3& p) {
   // Directions (1, k, k^2 + 1), k = 1, 2, ...: each degenerate event below (the ray parallel to a plane, or through
   // a given edge or vertex) holds for at most two k, so some k is free of all of them.
   for (long k = 1;; ++k) {
@@ -161,11 +167,11 @@ std::optional<bool> point_inside_faces(const Mesh3& mesh, const std::vector<int>
     const PointQ3 q{p.x + d.x, p.y + d.y, p.z + d.z};
     bool degenerate = false;
     long crossings = 0;
-    for (int f : faces) {
-      const auto& t = mesh.faces[static_cast<std::size_t>(f)];
-      const PointQ3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
-      const PointQ3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
-      const PointQ3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    for (std::size_t f = 0; f < count; ++f) {
+      const auto [pa, pb, pc] = corners(f);
+      const PointQ3& a = *pa;
+      const PointQ3& b = *pb;
+      const PointQ3& c = *pc;
       const PointQ3 n = triangle_normal(a, b, c);
       const int side = sgn(dot3(n, minus(a, p)));  // 0: p lies in the triangle's plane
       const int toward = sgn(dot3(n, d));          // 0: the ray is parallel to the plane
@@ -189,6 +195,33 @@ std::optional<bool> point_inside_faces(const Mesh3& mesh, const std::vector<int>
     }
     if (!degenerate) return crossings % 2 == 1;
   }
+}
+
+}  // namespace
+
+std::optional<bool> point_inside_faces(const Mesh3& mesh, const std::vector<int>& faces, const PointQ3& p) {
+  return point_inside_by_parity(
+      faces.size(),
+      [&](std::size_t i) {
+        const auto& t = mesh.faces[static_cast<std::size_t>(faces[i])];
+        return std::array<const PointQ3*, 3>{&mesh.vertices[static_cast<std::size_t>(t[0])],
+                                             &mesh.vertices[static_cast<std::size_t>(t[1])],
+                                             &mesh.vertices[static_cast<std::size_t>(t[2])]};
+      },
+      p);
+}
+
+std::optional<bool> point_inside_triangles(const std::vector<PointQ3>& vertices,
+                                           const std::vector<std::array<int, 3>>& triangles, const PointQ3& p) {
+  return point_inside_by_parity(
+      triangles.size(),
+      [&](std::size_t i) {
+        const auto& t = triangles[i];
+        return std::array<const PointQ3*, 3>{&vertices[static_cast<std::size_t>(t[0])],
+                                             &vertices[static_cast<std::size_t>(t[1])],
+                                             &vertices[static_cast<std::size_t>(t[2])]};
+      },
+      p);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -272,6 +305,223 @@ ObjMesh read_obj(std::istream& in, const std::string& source, const MeshReadLimi
 
 ObjMesh read_obj_file(const std::string& path, const MeshReadLimits& limits) {
   std::ifstream in = open_regular_file(path);
+  return read_obj(in, path, limits);
+}
+
+namespace {
+
+/// The whitespace-separated tokens of a text with their 1-based lines; `#` starts a comment.
+struct LineTokens {
+  std::vector<std::string> tokens;
+  std::vector<long> lines;
+  std::size_t next = 0;
+  bool done() const { return next >= tokens.size(); }
+  long line() const { return next < lines.size() ? lines[next] : (lines.empty() ? 1 : lines.back()); }
+};
+
+LineTokens tokenize(std::istream& in, const std::string& source) {
+  LineTokens out;
+  std::string line;
+  long line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    for (auto t : tokens_of(line)) {
+      out.tokens.emplace_back(t);
+      out.lines.push_back(line_no);
+    }
+  }
+  if (in.bad()) fail(source, "read error");
+  return out;
+}
+
+long long count_token(LineTokens& t, const std::string& source, const char* what, unsigned long long limit) {
+  if (t.done()) fail_at(source, t.line(), std::string("the file ends before the ") + what);
+  const long line = t.line();
+  const std::string& text = t.tokens[t.next++];
+  const auto v = parse_integer(text);
+  if (!v || *v < 0) fail_at(source, line, std::string(what) + " " + quoted(text) + " is not a count");
+  if (static_cast<unsigned long long>(*v) > limit)
+    fail_at(source, line, std::string(what) + " " + std::to_string(*v) + " exceeds the limit " + std::to_string(limit));
+  return *v;
+}
+
+Rational number_token(LineTokens& t, const std::string& source, const std::string& what, const NumberLimits& limits) {
+  if (t.done()) fail_at(source, t.line(), "the file ends before " + what);
+  const long line = t.line();
+  const std::string& text = t.tokens[t.next++];
+  std::string why;
+  auto q = parse_rational(text, &why, limits);
+  if (!q) fail_at(source, line, what + " " + quoted(text) + ": " + why);
+  return std::move(*q);
+}
+
+/// A face given as "3 a b c" with 0-based ids (OFF, PLY).
+void read_counted_face(LineTokens& t, ObjMesh& mesh, const std::string& source, std::size_t vertex_count) {
+  const long line = t.line();
+  const long long n = count_token(t, source, "face vertex count", 1u << 20);
+  if (n != 3)
+    fail_at(source, line, "face with " + std::to_string(n) + " vertices: only triangles are accepted (triangulate the mesh)");
+  std::array<int, 3> face{};
+  for (int i = 0; i < 3; ++i) {
+    if (t.done() || t.lines[t.next] != line) fail_at(source, line, "a face needs 3 vertex ids on its line");
+    const std::string& text = t.tokens[t.next++];
+    const auto v = parse_integer(text);
+    if (!v || *v < 0 || static_cast<unsigned long long>(*v) >= vertex_count)
+      fail_at(source, line, "vertex id " + quoted(text) + " out of range (the file has " +
+                                std::to_string(vertex_count) + " vertices, ids 0-based)");
+    face[static_cast<std::size_t>(i)] = static_cast<int>(*v);
+  }
+  if (face[0] == face[1] || face[1] == face[2] || face[0] == face[2])
+    fail_at(source, line, "degenerate face: vertex " + std::to_string(face[0] == face[1] ? face[0] : face[2]) +
+                              " appears twice");
+  mesh.faces.push_back(face);
+  mesh.face_lines.push_back(line);
+}
+
+/// Skips the rest of line `line` (extra properties of a PLY element, colours of an OFF face).
+void skip_line(LineTokens& t, long line) {
+  while (!t.done() && t.lines[t.next] == line) ++t.next;
+}
+
+}  // namespace
+
+ObjMesh read_off(std::istream& in, const std::string& source, const MeshReadLimits& limits) {
+  LineTokens t = tokenize(in, source);
+  ObjMesh mesh;
+  mesh.source = source;
+  if (t.done() || t.tokens[0] != "OFF")
+    fail_at(source, t.line(), "an OFF file starts with \"OFF\" (COFF, NOFF, 4OFF and binary OFF are not read)");
+  ++t.next;
+  const long header = t.line();
+  const auto nv = static_cast<std::size_t>(count_token(t, source, "vertex count", limits.max_vertices));
+  const auto nf = static_cast<std::size_t>(count_token(t, source, "face count", limits.max_faces));
+  count_token(t, source, "edge count", ~0ull >> 1);
+  skip_line(t, header);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const long line = t.line();
+    Rational c[3];
+    for (int i = 0; i < 3; ++i) {
+      if (!t.done() && t.lines[t.next] != line && i > 0) fail_at(source, line, "a vertex needs 3 coordinates on its line");
+      c[i] = number_token(t, source, "coordinate " + std::to_string(i + 1), limits.numbers);
+    }
+    skip_line(t, line);
+    mesh.vertices.push_back(PointQ3{c[0], c[1], c[2]});
+    mesh.vertex_lines.push_back(line);
+  }
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (t.done()) fail_at(source, t.line(), "the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    const long line = t.line();
+    read_counted_face(t, mesh, source, nv);
+    skip_line(t, line);
+  }
+  if (!t.done()) fail_at(source, t.line(), "unexpected text after the last face");
+  if (mesh.faces.empty()) fail(source, "no faces");
+  return mesh;
+}
+
+ObjMesh read_ply(std::istream& in, const std::string& source, const MeshReadLimits& limits) {
+  LineTokens t = tokenize(in, source);
+  ObjMesh mesh;
+  mesh.source = source;
+  auto line_tokens = [&]() {  // the tokens of the current line, consumed
+    std::vector<std::string> out;
+    if (t.done()) return out;
+    const long line = t.line();
+    while (!t.done() && t.lines[t.next] == line) out.push_back(t.tokens[t.next++]);
+    return out;
+  };
+  if (t.done() || t.tokens[0] != "ply") fail_at(source, 1, "a PLY file starts with \"ply\"");
+  line_tokens();
+  struct Element {
+    std::string name;
+    std::size_t count = 0;
+    std::vector<std::string> properties;  ///< names; a list property is named "list:<name>"
+    long line = 0;
+  };
+  std::vector<Element> elements;
+  bool ascii = false;
+  for (;;) {
+    if (t.done()) fail_at(source, t.line(), "the header has no \"end_header\"");
+    const long line = t.line();
+    const std::vector<std::string> w = line_tokens();
+    if (w[0] == "end_header") break;
+    if (w[0] == "comment" || w[0] == "obj_info") continue;
+    if (w[0] == "format") {
+      if (w.size() < 2 || w[1] != "ascii") fail_at(source, line, "only ASCII PLY is read (format ascii 1.0)");
+      ascii = true;
+    } else if (w[0] == "element") {
+      if (w.size() != 3) fail_at(source, line, "an element line is \"element NAME COUNT\"");
+      const auto n = parse_integer(w[2]);
+      const unsigned long long limit = w[1] == "face" ? limits.max_faces : limits.max_vertices;
+      if (!n || *n < 0 || static_cast<unsigned long long>(*n) > limit)
+        fail_at(source, line, "element count " + quoted(w[2]) + " is not a count within the limit");
+      elements.push_back(Element{w[1], static_cast<std::size_t>(*n), {}, line});
+    } else if (w[0] == "property") {
+      if (elements.empty()) fail_at(source, line, "a property before any element");
+      if (w.size() == 5 && w[1] == "list") elements.back().properties.push_back("list:" + w[4]);
+      else if (w.size() == 3) elements.back().properties.push_back(w[2]);
+      else fail_at(source, line, "a property line is \"property TYPE NAME\" or \"property list TYPE TYPE NAME\"");
+    } else {
+      fail_at(source, line, "unknown header line " + quoted(w[0]));
+    }
+  }
+  if (!ascii) fail(source, "the header has no \"format ascii 1.0\" line");
+  std::size_t nv = 0;
+  for (const Element& e : elements) {
+    if (e.name == "vertex") {
+      int ix = -1, iy = -1, iz = -1;
+      for (std::size_t k = 0; k < e.properties.size(); ++k) {
+        if (e.properties[k].rfind("list:", 0) == 0) fail_at(source, e.line, "a vertex with a list property");
+        if (e.properties[k] == "x") ix = static_cast<int>(k);
+        if (e.properties[k] == "y") iy = static_cast<int>(k);
+        if (e.properties[k] == "z") iz = static_cast<int>(k);
+      }
+      if (ix < 0 || iy < 0 || iz < 0) fail_at(source, e.line, "the vertex element needs properties x, y and z");
+      for (std::size_t v = 0; v < e.count; ++v) {
+        const long line = t.line();
+        if (t.done()) fail_at(source, line, "the file ends after " + std::to_string(v) + " vertices");
+        const std::vector<std::string> w = line_tokens();
+        if (w.size() != e.properties.size())
+          fail_at(source, line, "a vertex line needs " + std::to_string(e.properties.size()) + " values, got " +
+                                    std::to_string(w.size()));
+        Rational c[3];
+        const int idx[3] = {ix, iy, iz};
+        for (int i = 0; i < 3; ++i) {
+          std::string why;
+          auto q = parse_rational(w[static_cast<std::size_t>(idx[i])], &why, limits.numbers);
+          if (!q) fail_at(source, line, "coordinate " + quoted(w[static_cast<std::size_t>(idx[i])]) + ": " + why);
+          c[i] = std::move(*q);
+        }
+        mesh.vertices.push_back(PointQ3{c[0], c[1], c[2]});
+        mesh.vertex_lines.push_back(line);
+      }
+      nv = mesh.vertices.size();
+    } else if (e.name == "face") {
+      if (e.properties.empty() || (e.properties[0] != "list:vertex_indices" && e.properties[0] != "list:vertex_index"))
+        fail_at(source, e.line, "the face element's first property must be the list vertex_indices");
+      for (std::size_t f = 0; f < e.count; ++f) {
+        if (t.done()) fail_at(source, t.line(), "the file ends after " + std::to_string(f) + " faces");
+        const long line = t.line();
+        read_counted_face(t, mesh, source, nv);
+        skip_line(t, line);
+      }
+    } else {
+      for (std::size_t k = 0; k < e.count; ++k) line_tokens();  // an element hsx does not use
+    }
+  }
+  if (!t.done()) fail_at(source, t.line(), "unexpected text after the last element");
+  if (mesh.faces.empty()) fail(source, "no faces");
+  return mesh;
+}
+
+ObjMesh read_mesh_file(const std::string& path, const MeshReadLimits& limits) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext != ".obj" && ext != ".off" && ext != ".ply")
+    fail(path, "unknown mesh format " + quoted(std::string_view(ext)) + " (expected .obj, .off or .ply)");
+  std::ifstream in = open_regular_file(path);
+  if (ext == ".off") return read_off(in, path, limits);
+  if (ext == ".ply") return read_ply(in, path, limits);
   return read_obj(in, path, limits);
 }
 

@@ -67,6 +67,19 @@ struct ObjMesh {
 ObjMesh read_obj(std::istream& in, const std::string& source, const MeshReadLimits& limits = {});
 ObjMesh read_obj_file(const std::string& path, const MeshReadLimits& limits = {});
 
+/// Reads ASCII OFF text: "OFF", then "nv nf ne", nv lines "x y z" (extra values on a line, such as colours, are
+/// ignored), nf lines "3 a b c" (0-based ids; other counts refused); `#` starts a comment. The same ObjMesh as
+/// read_obj gives for the same mesh (lines are the OFF file's).
+ObjMesh read_off(std::istream& in, const std::string& source, const MeshReadLimits& limits = {});
+
+/// Reads ASCII PLY text: a header ("ply", "format ascii 1.0", "element vertex N" with properties including x, y,
+/// z, "element face M" whose first property is the list vertex_indices (or vertex_index), other elements skipped,
+/// "end_header"), then one line per element entry. Binary PLY is refused. Faces must be triangles.
+ObjMesh read_ply(std::istream& in, const std::string& source, const MeshReadLimits& limits = {});
+
+/// Reads an .obj, .off or .ply file (by extension, case-insensitive); errors "PATH:LINE: problem".
+ObjMesh read_mesh_file(const std::string& path, const MeshReadLimits& limits = {});
+
 /// A .fea file as read: `edges[i]` (two 0-based vertex ids, in file order) came from line `lines[i]`.
 struct FeatureEdgeList {
   std::string source;
@@ -155,6 +168,10 @@ EdgeShape classify_edge(const Mesh3& mesh, int edge, const SharpnessAngle& sharp
 /// a triangle's plane, are replaced by the next of a fixed sequence of directions (finitely many are degenerate,
 /// so this ends). Returns nullopt when p lies on the surface.
 std::optional<bool> point_inside_faces(const Mesh3& mesh, const std::vector<int>& faces, const PointQ3& p);
+
+/// The same test over a triangle list (`triangles` index `vertices`; together one or more closed shells).
+std::optional<bool> point_inside_triangles(const std::vector<PointQ3>& vertices,
+                                           const std::vector<std::array<int, 3>>& triangles, const PointQ3& p);
 
 /// Exact geometric helpers (public for tests).
 PointQ3 triangle_normal(const PointQ3& a, const PointQ3& b, const PointQ3& c);  ///< (b-a) x (c-a)

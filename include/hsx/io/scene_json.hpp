@@ -7,7 +7,9 @@
 // and, for files, is prefixed with the file path ("scene.json: line 3, column 7: ...").
 #pragma once
 
+#include <hsx/geometry/mesh3.hpp>
 #include <hsx/geometry/scene.hpp>
+#include <hsx/geometry/scene3.hpp>
 #include <hsx/io/exact_json.hpp>
 
 #include <nlohmann/json.hpp>
@@ -26,14 +28,17 @@ struct SceneReadLimits {
   std::size_t max_halfspaces = 100000;
   std::size_t max_samples = 100000;
   std::size_t max_polygon_vertices = 5000;  ///< also enforced by validate_and_resolve
+  MeshReadLimits meshes;                    ///< 3D: every `mesh` file
+  int max_segments = 4096;                  ///< 3D: segments per circle of a tessellation (at most kMaxSegments)
 };
 
 /// Checks `format` ("hsx-scene/1") and `dimension` and returns the dimension (2 or 3). The entry point for
-/// dispatching between 2D and (later) 3D readers.
+/// dispatching between the 2D and 3D readers.
 int scene_dimension(const nlohmann::json& doc);
 
 /// Reads a 2D scene from a DOM built by parse_exact_json, then calls validate_and_resolve. A 3D scene is refused
-/// with "dimension: 3D scenes are not supported yet".
+/// with "dimension: 3D scenes are not supported yet" (for callers that read 2D scenes only; dispatch on
+/// scene_dimension to read either).
 Scene2 read_scene2(const nlohmann::json& doc, const SceneReadLimits& limits = {});
 
 /// parse_exact_json + read_scene2.
@@ -46,5 +51,25 @@ Scene2 read_scene_file(const std::string& path, const SceneReadLimits& limits = 
 /// "-7/3"). The domain is written only when it was given; samples are written as given (`at` or `near`), so
 /// read_scene2(write_scene2(s)) reproduces s, including the chosen domain and the snapped locations.
 nlohmann::json write_scene2(const Scene2& scene);
+
+/// Reads a 3D scene (docs/scene-format.md, "3D scene"): tessellates the primitives (geometry/tessellate3.hpp),
+/// reads `mesh` files (.obj, .off, .ply by extension) relative to `base_directory` (empty: the working
+/// directory), then calls validate_and_resolve(Scene3&). A 2D scene is refused with "dimension: expected 3, got 2".
+/// Errors name the JSON path ("halfspaces[1].radius: must be positive, got -1") or the halfspace and the mesh
+/// file's line.
+Scene3 read_scene3(const nlohmann::json& doc, const std::string& base_directory = "",
+                   const SceneReadLimits& limits = {});
+
+/// parse_exact_json + read_scene3.
+Scene3 read_scene3_text(std::string_view text, const std::string& base_directory = "",
+                        const SceneReadLimits& limits = {});
+
+/// read_exact_json_file + read_scene3 with the file's folder as the base; errors are prefixed with the path.
+Scene3 read_scene3_file(const std::string& path, const SceneReadLimits& limits = {});
+
+/// A 3D scene as hsx-scene/1 JSON with exact numbers: every halfspace from its parameters (`Primitive3`, the mesh
+/// file as written), the domain when given, samples as given; read_scene3(write_scene3(s)) reproduces s (same
+/// triangles, same snapped samples) when mesh paths resolve the same way.
+nlohmann::json write_scene3(const Scene3& scene);
 
 }  // namespace hsx

@@ -1,0 +1,56 @@
+// The BSH authors' own 3D scene files (their public Boundary-Sampled Halfspaces code): a folder with `config.json`
+// ({"input": [{"type": ..., "name": ..., "samples": "N_sample.xyz", ...}]}), one samples file per halfspace
+// (first token 3, then x y z triples) and `grid_64.json` (`bbox_min`, `bbox_max`: the domain).
+//
+// Conventions (owned here):
+// - Every number is read as the exact decimal it is written as ("0.45609" is 45609/100000), never as a double.
+// - The solid is the side f < 0 of each halfspace; `is_flipped` (default false) negates f, i.e. sets complement.
+//     plane:    `point`, `normal`; f = n . (x - p)           -> plane, normal n, offset n . p
+//     sphere:   `center`, `radius`                            -> sphere
+//     cylinder: `axis_point1`, `axis_point2`, `radius`        -> infinite cylinder (their f is the distance to the
+//               axis line), clipped exactly by the domain box
+//     torus:    `center`, `axis_vector`, `major_radius`, `minor_radius` -> torus
+//   tessellated the authors' way (geometry/tessellate3.hpp): n = max(15, round(pi / asin(h / 2r))) segments per
+//   circle of radius r (torus: r = major_radius about the axis, minor_radius around the tube), h = the domain
+//   box's diagonal / 64, in double precision, as their code computes it; spheres and tori as UV meshes. Their planes
+//   are quads reaching beyond the box, which inside the box is the plane itself: hsx keeps them exact planes,
+//   clipped by the arrangement.
+// - `cone` (no example uses it, and the meaning of its `apex_angle`, half or full angle, one or two nappes, is not
+//   documented), `quadric` and `rbf` are refused with a message naming the entry. `color` is ignored; any other
+//   unknown field is refused.
+// - Samples are inexact points near the surface: each becomes a `near` sample of its halfspace (snapped exactly).
+// - Errors are InputError naming the file and the JSON path or line: "config.json: input[3].radius: ...",
+//   "4_sample.xyz:2: ...".
+#pragma once
+
+#include <hsx/geometry/scene3.hpp>
+#include <hsx/io/scene_json.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace hsx {
+
+/// Options of the reader (the defaults are the authors' own settings).
+struct BshReadOptions {
+  double h_scale = 1;  ///< h = the box diagonal / 64 * h_scale: 1/2 and 1/4 give finer tessellations (benchmarks)
+};
+
+/// True when `doc` is the authors' config: a JSON object with an "input" member (and no hsx "format").
+bool is_bsh_config(const nlohmann::json& doc);
+
+/// Reads the authors' config DOM (from parse_exact_json); samples files and grid_64.json are looked up in
+/// `directory` (empty: the working directory); `config_name` is used in messages. Validated (validate_and_resolve).
+Scene3 read_bsh_config(const nlohmann::json& doc, const std::string& directory,
+                       const std::string& config_name = "config.json", const BshReadOptions& options = {});
+
+/// read_exact_json_file + read_bsh_config with the file's folder.
+Scene3 read_bsh_config_file(const std::string& path, const BshReadOptions& options = {});
+
+/// A 3D scene file of either kind, told apart by content: the authors' config (is_bsh_config) or an hsx-scene/1
+/// document with dimension 3 (read_scene3, mesh paths relative to the file's folder). Errors are prefixed with the
+/// path.
+Scene3 read_scene3_input_file(const std::string& path, const SceneReadLimits& limits = {});
+
+}  // namespace hsx

@@ -1,0 +1,219 @@
+// The BSH authors' config.json: see bsh_config.hpp.
+#include <hsx/io/bsh_config.hpp>
+
+#include <hsx/geometry/tessellate3.hpp>
+#include <hsx/io/exact_json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace hsx {
+
+namespace {
+
+using json = nlohmann::json;
+
+PointQ3 point3(const JsonField& f) {
+  if (f.size() != 3) f.fail("expected [x, y, z], got " + std::to_string(f.size()) + " numbers");
+  return PointQ3{f.at(std::size_t{0}).rational(), f.at(std::size_t{1}).rational(), f.at(std::size_t{2}).rational()};
+}
+
+Rational positive(const JsonField& f) {
+  Rational q = f.rational();
+  if (sgn(q) <= 0) f.fail("must be positive, got " + describe_json(f.json()));
+  return q;
+}
+
+Box3 read_grid_box(const std::string& path) {
+  const json doc = read_exact_json_file(path);
+  try {
+    JsonField root(doc, "");
+    root.expect_object();
+    Box3 box{point3(root.at("bbox_min")), point3(root.at("bbox_max"))};
+    if (!(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z))
+      root.fail("bbox_min must be below bbox_max in every coordinate");
+    return box;
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
+/// A samples file: the token 3, then x y z triples, exact.
+std::vector<PointQ3> read_samples_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot open it: no such file");
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open the file");
+  std::vector<PointQ3> out;
+  std::vector<Rational> pending;
+  std::string line;
+  long line_no = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++line_no;
+    std::istringstream words(line);
+    std::string w;
+    while (words >> w) {
+      if (!header) {
+        if (w != "3") throw InputError(path + ":" + std::to_string(line_no) + ": the first token must be 3, got \"" + w + "\"");
+        header = true;
+        continue;
+      }
+      std::string why;
+      auto q = parse_rational(w, &why);
+      if (!q) throw InputError(path + ":" + std::to_string(line_no) + ": coordinate \"" + w + "\": " + why);
+      pending.push_back(std::move(*q));
+      if (pending.size() == 3) {
+        out.push_back(PointQ3{pending[0], pending[1], pending[2]});
+        pending.clear();
+      }
+    }
+  }
+  if (!header) throw InputError(path + ": empty samples file (expected 3, then x y z triples)");
+  if (!pending.empty()) throw InputError(path + ":" + std::to_string(line_no) + ": the last point has fewer than 3 coordinates");
+  return out;
+}
+
+double diagonal(const Box3& b) {
+  const double dx = Rational(b.max.x - b.min.x).get_d(), dy = Rational(b.max.y - b.min.y).get_d(),
+               dz = Rational(b.max.z - b.min.z).get_d();
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+Tessellation3 bsh_tessellation(double h, const Rational& radius, const Rational* minor = nullptr) {
+  Tessellation3 t;
+  t.segments = bsh_segments(h, radius.get_d());
+  if (minor) t.minor_segments = bsh_segments(h, minor->get_d());
+  return t;
+}
+
+Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
+  f.expect_object();
+  const std::string type = f.at("type").string();
+  Halfspace3 hs;
+  Primitive3& p = hs.primitive;
+  if (type == "plane") {
+    f.check_keys({"type", "name", "samples", "color", "point", "normal"}, "a plane");
+    hs.kind = HalfspaceKind3::Plane;
+    hs.normal = point3(f.at("normal"));
+    if (sgn(hs.normal.x) == 0 && sgn(hs.normal.y) == 0 && sgn(hs.normal.z) == 0) f.at("normal").fail("must not be zero");
+    hs.offset = dot3(hs.normal, point3(f.at("point")));
+  } else if (type == "sphere") {
+    f.check_keys({"type", "name", "samples", "color", "is_flipped", "center", "radius"}, "a sphere");
+    hs.kind = HalfspaceKind3::Sphere;
+    p.center = point3(f.at("center"));
+    p.radius = positive(f.at("radius"));
+    p.tessellation = bsh_tessellation(h, p.radius);
+  } else if (type == "cylinder") {
+    f.check_keys({"type", "name", "samples", "color", "is_flipped", "axis_point1", "axis_point2", "radius"},
+                 "a cylinder");
+    hs.kind = HalfspaceKind3::Cylinder;
+    p.point1 = point3(f.at("axis_point1"));
+    p.point2 = point3(f.at("axis_point2"));
+    if (p.point1 == p.point2) f.at("axis_point2").fail("the axis has zero length (equal to axis_point1)");
+    p.radius = positive(f.at("radius"));
+    p.infinite = true;
+    p.tessellation = bsh_tessellation(h, p.radius);
+  } else if (type == "torus") {
+    f.check_keys({"type", "name", "samples", "color", "is_flipped", "center", "axis_vector", "major_radius",
+                  "minor_radius"}, "a torus");
+    hs.kind = HalfspaceKind3::Torus;
+    p.center = point3(f.at("center"));
+    p.axis = point3(f.at("axis_vector"));
+    if (sgn(p.axis.x) == 0 && sgn(p.axis.y) == 0 && sgn(p.axis.z) == 0) f.at("axis_vector").fail("must not be zero");
+    p.major_radius = positive(f.at("major_radius"));
+    p.minor_radius = positive(f.at("minor_radius"));
+    if (p.minor_radius >= p.major_radius)
+      f.at("minor_radius").fail("must be below major_radius (otherwise the torus intersects itself)");
+    p.tessellation = bsh_tessellation(h, p.major_radius, &p.minor_radius);
+  } else if (type == "cone") {
+    f.at("type").fail("type \"cone\" is not read: none of the authors' examples has one, and the meaning of its "
+                      "apex_angle (half or full angle, one or two nappes) is not documented");
+  } else if (type == "quadric" || type == "rbf") {
+    f.at("type").fail("type \"" + type + "\" is not supported: hsx arranges planes and tessellated primitives only");
+  } else {
+    f.at("type").fail("unknown type " + describe_json(f.at("type").json()) +
+                      " (expected plane, sphere, cylinder or torus)");
+  }
+  hs.name = f.at("name").string();
+  if (hs.name.empty()) f.at("name").fail("the name must not be empty");
+  if (auto flipped = f.get("is_flipped")) hs.complement = flipped->boolean();
+  if (hs.kind != HalfspaceKind3::Plane) {
+    try {
+      hs.surface = tessellate(hs, domain);
+      hs.origin = tessellation_summary(hs) + " (the BSH authors' rule)";
+    } catch (const InputError& e) {
+      f.fail(e.what());
+    }
+  }
+  return hs;
+}
+
+}  // namespace
+
+bool is_bsh_config(const json& doc) { return doc.is_object() && doc.contains("input") && !doc.contains("format"); }
+
+Scene3 read_bsh_config(const json& doc, const std::string& directory, const std::string& config_name,
+                       const BshReadOptions& options) {
+  if (!(options.h_scale > 0) || !std::isfinite(options.h_scale))
+    throw InputError("BSH config: h_scale must be a positive number");
+  const std::filesystem::path dir(directory);
+  Scene3 scene;
+  scene.domain = read_grid_box((dir / "grid_64.json").string());
+  scene.domain_given = true;
+  const double h = diagonal(scene.domain) / 64 * options.h_scale;
+  std::vector<std::string> sample_files;
+  try {
+    JsonField root(doc, "");
+    root.expect_object();
+    JsonField input = root.at("input");
+    const std::size_t n = input.size();
+    if (n == 0) input.fail("no halfspace (at least one is needed)");
+    for (std::size_t i = 0; i < n; ++i) {
+      JsonField f = input.at(i);
+      Halfspace3 hs = read_entry(f, scene.domain, h);
+      if (scene.find_halfspace(hs.name) >= 0) f.at("name").fail("duplicate name " + describe_json(json(hs.name)));
+      sample_files.push_back(f.has("samples") ? f.at("samples").string() : std::string());
+      scene.halfspaces.push_back(std::move(hs));
+    }
+  } catch (const InputError& e) {
+    throw InputError(config_name + ": " + e.what());
+  }
+  scene.description = "BSH authors' scene " + config_name + " (h = " + std::to_string(h) + ")";
+  for (std::size_t i = 0; i < sample_files.size(); ++i) {
+    if (sample_files[i].empty()) continue;
+    for (PointQ3& p : read_samples_file((dir / sample_files[i]).string())) {
+      Sample3 s;
+      s.halfspace = static_cast<int>(i);
+      s.snapped = true;
+      s.given = std::move(p);
+      scene.samples.push_back(std::move(s));
+    }
+  }
+  try {
+    validate_and_resolve(scene);
+  } catch (const InputError& e) {
+    throw InputError(config_name + ": " + e.what());
+  }
+  return scene;
+}
+
+Scene3 read_bsh_config_file(const std::string& path, const BshReadOptions& options) {
+  const json doc = read_exact_json_file(path);
+  if (!is_bsh_config(doc)) throw InputError(path + ": not the BSH authors' config (a JSON object with \"input\")");
+  return read_bsh_config(doc, std::filesystem::path(path).parent_path().string(), path, options);
+}
+
+Scene3 read_scene3_input_file(const std::string& path, const SceneReadLimits& limits) {
+  const json doc = read_exact_json_file(path, limits.json);
+  if (is_bsh_config(doc)) return read_bsh_config(doc, std::filesystem::path(path).parent_path().string(), path);
+  try {
+    return read_scene3(doc, std::filesystem::path(path).parent_path().string(), limits);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
+}
+
+}  // namespace hsx

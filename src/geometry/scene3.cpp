@@ -82,8 +82,10 @@ PointQ3 nearest_on_triangle(const PointQ3& p, const PointQ3& a, const PointQ3& b
 double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
 double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
 
-/// A lower bound (in double) of the squared distance from p to the box of triangle t.
-double box_distance2_lower(const TriangleSurface& s, const std::array<int, 3>& t, const double p[3]) {
+/// A lower bound (in double) of the squared distance from p to the box of triangle t; `p_lo`, `p_hi` enclose p.
+/// Every gap is rounded down; 0 (no pruning) when the numbers overflow doubles.
+double box_distance2_lower(const TriangleSurface& s, const std::array<int, 3>& t, const double p_lo[3],
+                           const double p_hi[3]) {
   double total = 0;
   for (int axis = 0; axis < 3; ++axis) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -93,10 +95,12 @@ double box_distance2_lower(const TriangleSurface& s, const std::array<int, 3>& t
       lo = std::min(lo, down(x));
       hi = std::max(hi, up(x));
     }
-    const double gap = p[axis] < lo ? lo - p[axis] : (p[axis] > hi ? p[axis] - hi : 0.0);
-    total += gap * gap;
+    double gap = 0;
+    if (p_hi[axis] < lo) gap = down(lo - p_hi[axis]);
+    else if (p_lo[axis] > hi) gap = down(p_lo[axis] - hi);
+    total += std::max(gap, 0.0) * std::max(gap, 0.0);
   }
-  return total * (1 - 1e-9);
+  return std::isfinite(total) ? total * (1 - 1e-9) : 0.0;
 }
 
 struct Nearest {
@@ -108,10 +112,11 @@ struct Nearest {
 /// The exact nearest point of a surface to p; ties keep the lowest triangle id.
 Nearest nearest_on_surface(const TriangleSurface& s, const PointQ3& p) {
   const double pd[3] = {p.x.get_d(), p.y.get_d(), p.z.get_d()};
+  const double p_lo[3] = {down(pd[0]), down(pd[1]), down(pd[2])}, p_hi[3] = {up(pd[0]), up(pd[1]), up(pd[2])};
   std::vector<std::pair<double, int>> order;
   order.reserve(s.triangles.size());
   for (std::size_t i = 0; i < s.triangles.size(); ++i)
-    order.emplace_back(box_distance2_lower(s, s.triangles[i], pd), static_cast<int>(i));
+    order.emplace_back(box_distance2_lower(s, s.triangles[i], p_lo, p_hi), static_cast<int>(i));
   std::sort(order.begin(), order.end());
   Nearest best;
   double best_upper = std::numeric_limits<double>::infinity();
@@ -125,7 +130,8 @@ Nearest nearest_on_surface(const TriangleSurface& s, const PointQ3& p) {
     const int c = best.triangle < 0 ? -1 : cmp(d2, best.distance2);
     if (c < 0 || (c == 0 && i < best.triangle)) {
       best = Nearest{q, std::move(d2), i};
-      best_upper = up(best.distance2.get_d()) * (1 + 1e-9);
+      const double d = up(best.distance2.get_d()) * (1 + 1e-9);
+      best_upper = std::isfinite(d) ? d : std::numeric_limits<double>::infinity();
     }
   }
   return best;
@@ -307,6 +313,11 @@ void validate_and_resolve(Scene3& scene) {
 }
 
 Box3 choose_domain3(const Scene3& scene) {
+  std::size_t plane_count = 0;
+  for (const Halfspace3& h : scene.halfspaces) plane_count += h.kind == HalfspaceKind3::Plane;
+  if (plane_count > kMaxPlanesWithoutDomain)
+    fail("domain", "the scene has " + std::to_string(plane_count) + " planes and no domain; give \"domain\" (hsx "
+                   "chooses one only for at most " + std::to_string(kMaxPlanesWithoutDomain) + " planes)");
   Extent3 e;
   std::vector<const Halfspace3*> planes;
   for (const Halfspace3& h : scene.halfspaces) {

@@ -166,7 +166,7 @@ TriangleSurface torus_surface(const Primitive3& p) {
     throw InputError("minor_radius (" + exact_string(p.minor_radius) + ") must be below major_radius (" +
                      exact_string(p.major_radius) + "): otherwise the torus intersects itself");
   if (is_zero(p.axis)) throw InputError("axis_vector must not be zero");
-  const int n = circle_segments(p.tessellation, p.major_radius + p.minor_radius);
+  const int n = circle_segments(p.tessellation, p.major_radius);
   const int m = circle_segments(p.tessellation, p.minor_radius, true);
   check_triangles(std::size_t(2) * n * m);
   const Frame f = frame_of(p.axis);
@@ -361,6 +361,19 @@ int circle_segments(const Tessellation3& t, const Rational& radius, bool minor) 
   return static_cast<int>(n);
 }
 
+int largest_circle_segments(const Halfspace3& h) {
+  const Primitive3& p = h.primitive;
+  switch (h.kind) {
+    case HalfspaceKind3::Sphere:
+    case HalfspaceKind3::Cylinder:
+    case HalfspaceKind3::Cone: return circle_segments(p.tessellation, p.radius);
+    case HalfspaceKind3::Torus:
+      return std::max(circle_segments(p.tessellation, p.major_radius),
+                      circle_segments(p.tessellation, p.minor_radius, true));
+    default: return 0;
+  }
+}
+
 int bsh_segments(double h, double radius) {
   if (!(radius > 0) || !(h < 2 * radius)) return 15;
   const double n = std::round(M_PI / std::asin(h / (2 * radius)));
@@ -391,7 +404,7 @@ std::string tessellation_summary(const Halfspace3& h) {
       break;
     }
     case HalfspaceKind3::Torus:
-      out += ", " + std::to_string(circle_segments(t, h.primitive.major_radius + h.primitive.minor_radius)) + " x " +
+      out += ", " + std::to_string(circle_segments(t, h.primitive.major_radius)) + " x " +
              std::to_string(circle_segments(t, h.primitive.minor_radius, true)) + " segments";
       break;
     case HalfspaceKind3::Cylinder:

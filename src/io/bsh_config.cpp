@@ -155,12 +155,15 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
 
 bool is_bsh_config(const json& doc) { return doc.is_object() && doc.contains("input") && !doc.contains("format"); }
 
-Scene3 read_bsh_config(const json& doc, const std::string& directory, const std::string& config_name) {
+Scene3 read_bsh_config(const json& doc, const std::string& directory, const std::string& config_name,
+                       const BshReadOptions& options) {
+  if (!(options.h_scale > 0) || !std::isfinite(options.h_scale))
+    throw InputError("BSH config: h_scale must be a positive number");
   const std::filesystem::path dir(directory);
   Scene3 scene;
   scene.domain = read_grid_box((dir / "grid_64.json").string());
   scene.domain_given = true;
-  const double h = diagonal(scene.domain) / 64;
+  const double h = diagonal(scene.domain) / 64 * options.h_scale;
   std::vector<std::string> sample_files;
   try {
     JsonField root(doc, "");
@@ -197,10 +200,20 @@ Scene3 read_bsh_config(const json& doc, const std::string& directory, const std:
   return scene;
 }
 
-Scene3 read_bsh_config_file(const std::string& path) {
+Scene3 read_bsh_config_file(const std::string& path, const BshReadOptions& options) {
   const json doc = read_exact_json_file(path);
   if (!is_bsh_config(doc)) throw InputError(path + ": not the BSH authors' config (a JSON object with \"input\")");
-  return read_bsh_config(doc, std::filesystem::path(path).parent_path().string(), path);
+  return read_bsh_config(doc, std::filesystem::path(path).parent_path().string(), path, options);
+}
+
+Scene3 read_scene3_input_file(const std::string& path, const SceneReadLimits& limits) {
+  const json doc = read_exact_json_file(path, limits.json);
+  if (is_bsh_config(doc)) return read_bsh_config(doc, std::filesystem::path(path).parent_path().string(), path);
+  try {
+    return read_scene3(doc, std::filesystem::path(path).parent_path().string(), limits);
+  } catch (const InputError& e) {
+    throw InputError(path + ": " + e.what());
+  }
 }
 
 }  // namespace hsx

@@ -158,6 +158,10 @@ Halfspace3 read_halfspace3(const JsonField& f, const std::optional<Box3>& domain
   if (h.primitive.infinite && !domain)
     f.at("infinite").fail("an infinite cylinder is clipped by the domain: give \"domain\"");
   try {
+    const int segments = largest_circle_segments(h);
+    if (segments > limits.max_segments)
+      f.fail("tessellation: " + std::to_string(segments) + " segments per circle; the limit is " +
+             std::to_string(limits.max_segments));
     h.surface = tessellate(h, domain ? *domain : Box3{});
     h.origin = tessellation_summary(h);
   } catch (const InputError& e) {

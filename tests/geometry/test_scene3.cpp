@@ -6,6 +6,8 @@
 #include <hsx/geometry/scene3.hpp>
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/bsh_config.hpp>
+#include <hsx/io/exact_json.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
@@ -162,6 +164,84 @@ TEST_CASE("tessellations are closed, manifold, outward, and converge to the anal
   }
 }
 
+namespace {
+
+/// An independent rebuild of the documented vertex rule in long double: the frame of axis a, the ring formula, and
+/// the rounding to the nearest multiple of 2^-32.
+struct FrameLD {
+  long double u[3], v[3], w[3];
+};
+
+FrameLD frame_ld(long double ax, long double ay, long double az) {
+  FrameLD f;
+  const long double n = std::sqrt(ax * ax + ay * ay + az * az);
+  f.w[0] = ax / n, f.w[1] = ay / n, f.w[2] = az / n;
+  const long double a[3] = {std::fabs(ax), std::fabs(ay), std::fabs(az)};
+  const int e = a[0] <= a[1] && a[0] <= a[2] ? 0 : (a[1] <= a[2] ? 1 : 2);
+  const long double E[3] = {e == 0 ? 1.0L : 0.0L, e == 1 ? 1.0L : 0.0L, e == 2 ? 1.0L : 0.0L};
+  long double c[3] = {f.w[1] * E[2] - f.w[2] * E[1], f.w[2] * E[0] - f.w[0] * E[2], f.w[0] * E[1] - f.w[1] * E[0]};
+  const long double cn = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  for (int i = 0; i < 3; ++i) f.u[i] = c[i] / cn;
+  f.v[0] = f.w[1] * f.u[2] - f.w[2] * f.u[1];
+  f.v[1] = f.w[2] * f.u[0] - f.w[0] * f.u[2];
+  f.v[2] = f.w[0] * f.u[1] - f.w[1] * f.u[0];
+  return f;
+}
+
+Rational grid(long double x) {
+  const long double scaled = std::nearbyint(std::ldexp(x, 32));
+  return make_rational(Integer(std::to_string(static_cast<long long>(scaled))), Integer(1) << 32);
+}
+
+}  // namespace
+
+TEST_CASE("the documented vertex rule rebuilds the same vertices", "[scene3]") {
+  const long double pi = 3.141592653589793238462643383279502884L;
+  SECTION("torus about a general axis") {
+    Halfspace3 h = primitive(HalfspaceKind3::Torus);
+    h.primitive.center = PointQ3{frac(1, 2), Rational(-1), Rational(2)};
+    h.primitive.axis = pt(1, 2, 3);
+    h.primitive.major_radius = 3;
+    h.primitive.minor_radius = frac(3, 4);
+    h.primitive.tessellation.segments = 10;
+    h.primitive.tessellation.minor_segments = 6;
+    h.surface = tessellate(h, Box3{});
+    const FrameLD f = frame_ld(1, 2, 3);
+    const long double c[3] = {0.5L, -1, 2};
+    REQUIRE(h.surface.vertices.size() == 60);
+    for (int j = 0; j < 6; ++j)
+      for (int k = 0; k < 10; ++k) {
+        const long double t = 2 * pi * k / 10, phi = 2 * pi * j / 6, rho = 3 + 0.75L * std::cos(phi);
+        const PointQ3& got = h.surface.vertices[static_cast<std::size_t>(j * 10 + k)];
+        long double x[3];
+        for (int i = 0; i < 3; ++i)
+          x[i] = c[i] + rho * (std::cos(t) * f.u[i] + std::sin(t) * f.v[i]) + 0.75L * std::sin(phi) * f.w[i];
+        CHECK(got == PointQ3{grid(x[0]), grid(x[1]), grid(x[2])});
+      }
+    CHECK(h.surface.triangles[0] == std::array<int, 3>{0, 1, 10});
+    CHECK(h.surface.triangles[1] == std::array<int, 3>{1, 11, 10});
+  }
+  SECTION("sphere: poles, rings and fans") {
+    const Halfspace3 h = sphere(pt(1, 2, 3), Rational(2), 8);  // m = 4 bands: rings at -45, 0, 45 degrees
+    const FrameLD f = frame_ld(0, 0, 1);
+    CHECK(f.u[1] == 1);
+    REQUIRE(h.surface.vertices.size() == 2 + 3 * 8);
+    CHECK(h.surface.vertices[0] == pt(1, 2, 1));
+    CHECK(h.surface.vertices[25] == pt(1, 2, 5));
+    for (int j = 1; j <= 3; ++j)
+      for (int k = 0; k < 8; ++k) {
+        const long double t = 2 * pi * k / 8, phi = -pi / 2 + pi * j / 4;
+        const long double c[3] = {1, 2, 3};
+        long double x[3];
+        for (int i = 0; i < 3; ++i)
+          x[i] = c[i] + 2 * std::cos(phi) * (std::cos(t) * f.u[i] + std::sin(t) * f.v[i]) + 2 * std::sin(phi) * f.w[i];
+        CHECK(h.surface.vertices[static_cast<std::size_t>(1 + (j - 1) * 8 + k)] == PointQ3{grid(x[0]), grid(x[1]), grid(x[2])});
+      }
+    CHECK(h.surface.triangles[0] == std::array<int, 3>{0, 2, 1});     // south fan (S, L_k+1, L_k)
+    CHECK(h.surface.triangles.back() == std::array<int, 3>{25, 24, 17});  // north fan (N, U_7, U_0)
+  }
+}
+
 TEST_CASE("exact sides", "[scene3]") {
   const Halfspace3 p = plane(pt(0, 0, 2), Rational(1));  // z <= 1/2
   CHECK(p.side(PointQ3{Rational(5), Rational(0), frac(1, 2)}) == 0);
@@ -210,10 +290,15 @@ Rational brute_distance2(const PointQ3& p, const PointQ3& a, const PointQ3& b, c
 }  // namespace
 
 TEST_CASE("near samples snap to the exact nearest point (against brute force)", "[scene3]") {
-  const std::vector<Halfspace3> shapes = {sphere(pt(0, 0, 0), Rational(3), 10), box(pt(-2, -1, 0), pt(2, 1, 3))};
+  // The third shape sits at 10^12, where doubles cancel: the pruning bounds must stay lower bounds there.
+  const long far = 1000000000000L;
+  const std::vector<Halfspace3> shapes = {sphere(pt(0, 0, 0), Rational(3), 10), box(pt(-2, -1, 0), pt(2, 1, 3)),
+                                          box(pt(far, far, far), pt(far + 1, far + 2, far + 1))};
   rc::prop("random rational points", [&] {
-    const auto& h = shapes[static_cast<std::size_t>(*rc::gen::inRange(0, 2))];
-    const auto coordinate = [] { return frac(*rc::gen::inRange(-400, 401), *rc::gen::inRange(1, 60)); };
+    const int which = *rc::gen::inRange(0, 3);
+    const auto& h = shapes[static_cast<std::size_t>(which)];
+    const Rational offset = which == 2 ? Rational(far) : Rational(0);
+    const auto coordinate = [&]() -> Rational { return offset + frac(*rc::gen::inRange(-400, 401), *rc::gen::inRange(1, 60)); };
     Scene3 scene = one(h);
     Sample3 s;
     s.halfspace = 0;
@@ -361,6 +446,10 @@ TEST_CASE("the chosen domain contains surfaces, samples and plane triple points"
   CHECK(d.max.z > 20);
   CHECK(d.min.z < -100);
   CHECK_FALSE(s.domain_given);
+  Scene3 many;
+  for (std::size_t i = 0; i <= kMaxPlanesWithoutDomain; ++i)
+    many.halfspaces.push_back(plane(pt(1, static_cast<long>(i), static_cast<long>(i * i)), Rational(1), "P" + std::to_string(i)));
+  CHECK_THAT(error_of([&] { validate_and_resolve(many); }), Contains("domain: the scene has 151 planes and no domain"));
 }
 
 TEST_CASE("OBJ, OFF and PLY of the same mesh give the same ObjMesh", "[scene3]") {
@@ -407,6 +496,7 @@ TEST_CASE("the BSH authors' nine examples", "[.][bsh_examples]") {
                            "figure16_tori", "figure19_b", "figure19_c", "figure19_d"}) {
     INFO(name);
     const Scene3 s = read_bsh_config_file((dir / name / "config.json").string());
+    CHECK(read_scene3_input_file((dir / name / "config.json").string()).samples.size() == s.samples.size());
     CHECK(s.domain_given);
     CHECK_FALSE(s.samples.empty());
     std::size_t triangles = 0;
@@ -418,8 +508,38 @@ TEST_CASE("the BSH authors' nine examples", "[.][bsh_examples]") {
       CHECK(s.samples.size() == 23);
       CHECK(triangles > 7000);
       CHECK(triangles < 9000);
+      // Written as hsx-scene/1 and read back: the same triangles and snapped samples.
+      const Scene3 back = read_scene3(parse_exact_json(write_scene3(s).dump()));
+      REQUIRE(back.halfspaces.size() == s.halfspaces.size());
+      for (std::size_t i = 0; i < s.halfspaces.size(); ++i) {
+        CHECK(back.halfspaces[i].surface.vertices == s.halfspaces[i].surface.vertices);
+        CHECK(back.halfspaces[i].surface.triangles == s.halfspaces[i].surface.triangles);
+        CHECK(back.halfspaces[i].complement == s.halfspaces[i].complement);
+      }
+      for (std::size_t j = 0; j < s.samples.size(); ++j) CHECK(back.samples[j].location == s.samples[j].location);
+      // At h/2 each circle gets about twice the segments.
+      BshReadOptions half;
+      half.h_scale = 0.5;
+      std::size_t finer = 0;
+      for (const Halfspace3& h : read_bsh_config_file((dir / name / "config.json").string(), half).halfspaces)
+        finer += h.surface.triangles.size();
+      std::cout << name << " at h/2: " << finer << " triangles\n";
+      CHECK(finer > triangles * 3 / 2);
     }
     ++read;
   }
   CHECK(read == 9);
+  SECTION("the authors' refusals") {
+    const std::string folder = (dir / "figure19_b").string();
+    auto refusal = [&](const char* entry) {
+      return error_of([&] { read_bsh_config(parse_exact_json(std::string(R"({"input": [)") + entry + "]}"), folder); });
+    };
+    CHECK_THAT(refusal(R"({"type": "rbf", "name": "1"})"), Contains("config.json: input[0].type: type \"rbf\" is not supported"));
+    CHECK_THAT(refusal(R"({"type": "quadric", "name": "1"})"), Contains("type \"quadric\" is not supported"));
+    CHECK_THAT(refusal(R"({"type": "cone", "name": "1"})"), Contains("type \"cone\" is not read"));
+    CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 0})"),
+               Contains("input[0].radius: must be positive"));
+    CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 1, "samples": "none.xyz"})"),
+               Contains("none.xyz: cannot open it"));
+  }
 }

@@ -1,6 +1,7 @@
 // Tests of the 3D part of hsx-scene/1 (io/scene_json.hpp): every kind read, errors naming the JSON path, mesh
 // files in OBJ, OFF and PLY giving the same scene, the write/read round trip, and the regression scenes in
 // data/scenes3d.
+#include <hsx/io/bsh_config.hpp>
 #include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
@@ -125,7 +126,36 @@ TEST_CASE("mesh files in OBJ, OFF and PLY give the same scene; regression scenes
     INFO(entry.path().string());
     const Scene3 s = read_scene3_file(entry.path().string());
     CHECK_FALSE(s.halfspaces.empty());
+    CHECK(read_scene3_input_file(entry.path().string()).halfspaces.size() == s.halfspaces.size());
     ++count;
   }
   CHECK(count >= 6);
+}
+
+TEST_CASE("the BSH authors' config: a folder of our own", "[scene3_json]") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "hsx_test_bsh_config";
+  std::filesystem::create_directories(dir);
+  auto write = [&](const char* name, const std::string& text) { std::ofstream(dir / name) << text; };
+  write("grid_64.json", R"({"resolution": [64, 64, 64], "bbox_min": [-2, -2, -2], "bbox_max": [2, 2, 2]})");
+  write("1_sample.xyz", "3\n0.5 0 0.01 \n0 0.5 0\n");
+  write("2_sample.xyz", "3\n0 0 1.9\n");
+  write("config.json", R"({"input": [
+      {"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 0.5, "is_flipped": true, "samples": "1_sample.xyz",
+       "color": [1, 0, 0, 1]},
+      {"type": "plane", "name": "2", "point": [0, 0, 1.9], "normal": [0, 0, 1], "samples": "2_sample.xyz"}]})");
+  const Scene3 s = read_scene3_input_file((dir / "config.json").string());
+  REQUIRE(s.halfspaces.size() == 2);
+  CHECK(s.halfspaces[0].complement);
+  CHECK(s.halfspaces[0].primitive.tessellation.segments == 29);  // h = sqrt(48)/64: round(pi / asin(h / 1)) = 29
+  CHECK(s.halfspaces[1].offset == make_rational(Integer(19), Integer(10)));
+  CHECK(s.samples.size() == 3);
+  CHECK(s.samples[2].distance2 == 0);
+  CHECK(s.domain.max.x == 2);
+  write("1_sample.xyz", "3\n0.5 0 zero\n");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("1_sample.xyz:2: coordinate \"zero\""));
+  write("1_sample.xyz", "3\n0.5 0\n");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("fewer than 3 coordinates"));
+  std::filesystem::remove(dir / "grid_64.json");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("grid_64.json"));
+  std::filesystem::remove_all(dir);
 }

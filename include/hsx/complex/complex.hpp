@@ -12,8 +12,12 @@
 //   complement) give one patch per halfspace over the same point set; such patches form a `support` group. They
 //   separate the same two cells, and those cells differ in exactly the group's halfspaces. A measure of a set of
 //   patches counts each support once (see measure_of).
+//   In 3D: every arrangement triangle carries each halfspace whose boundary contains it (a plane given twice in
+//   either orientation, a box face on a plane, two meshes sharing a face); a patch region is a maximal set of
+//   triangles carrying the same halfspaces, joined across edges that hold exactly those two triangles
+//   (complex/from_arrangement3.hpp); each region gives one patch per halfspace it carries, all in one support group.
 // - Patch pieces lying on the domain's boundary are not patches (both of their sides cannot be cells).
-// - Junctions are where patches meet: vertices in 2D, edges in 3D. Two patches are adjacent iff they share a
+// - Junctions are where patches meet: vertices in 2D, edges in 3D (chains of arrangement edges). Two patches are adjacent iff they share a
 //   junction; a closed patch with no junction (a lone circle) has no neighbours.
 // - Samples sit on patches of their own halfspace.
 #pragma once

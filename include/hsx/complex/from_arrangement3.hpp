@@ -15,9 +15,14 @@ struct Arranged3 {
 };
 
 /// Patches are maximal sets of triangles of one halfspace connected across edges that no other boundary meets
-/// (edges with exactly two triangles, both carrying that halfspace). Patch::pieces are their triangles,
-/// ascending. Triangles on the domain box give no patch. Cells are the arrangement's cells, in the same order.
-/// Cell::measure is the volume (zero when volumes were not computed), Patch::measure the exact area.
+/// (edges with exactly two triangles, neither on the box, carrying the same halfspaces); coincident halfspaces
+/// share such a set and form a support group (complex.hpp). Patch::pieces are their triangles, ascending; patches
+/// are numbered by their lowest triangle, then by halfspace. Triangles on the domain box give no patch. Cells are
+/// the arrangement's cells, in the same order. Cell::measure is the volume (zero when volumes were not computed),
+/// Patch::measure the exact area (the sum of sqrt(area2) / 2 over its triangles).
+/// Junctions: the edges that bound a patch (every edge touching a patch triangle that is not inside a patch),
+/// chained through vertices where exactly two such edges meet with the same patches; Junction::piece is the
+/// chain's lowest edge id, Junction::patches every patch whose triangles touch the chain.
 Complex complex_from_arrangement(const Scene3& scene, const Arrangement3& arrangement);
 
 /// validate_and_resolve(Scene3&) must have been called on `scene`.

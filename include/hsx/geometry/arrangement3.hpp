@@ -14,7 +14,11 @@
 // - Cells are the connected open regions of the domain minus all triangles. A cell is `outer` iff one of its
 //   boundary triangles is on the box. `inside[c][i]` is cell c's side of halfspace i (complement applied).
 // - Edges: every segment where refined triangles meet, with its triangles sorted radially (exact orientation
-//   determinants; ArrEdge3 says which way round.
+//   determinants; ArrEdge3 says which way round). Edges are ordered by (a, b).
+// - Floating shells (a surface no other boundary or the box reaches) are joined to the region around them by an
+//   exact ray from their vertex of largest x (hits at the ray's origin ignored). Known gap: two shells that touch
+//   only at a vertex are not joined there (each is nested by its own ray).
+// - Cell ids: in order of the lowest triangle side (2 * triangle + (front ? 0 : 1)) bounding them.
 #pragma once
 
 #include <hsx/geometry/arrangement2.hpp>  // ArrangementLimits
@@ -38,12 +42,15 @@ struct ArrTriangle3 {
 
 struct ArrEdge3 {
   int a = -1, b = -1;             ///< vertex ids, a < b
-  std::vector<int> triangles;     ///< triangles containing the edge, in radial order around it
+  std::vector<int> triangles;     ///< triangles containing the edge, in radial order around it: right-handed
+                                  ///< about the direction a -> b (counter-clockwise seen from b looking at a),
+                                  ///< starting anywhere
 };
 
 struct ArrCell3 {
   bool outer = false;
-  PointQ3 interior;               ///< an exact rational point strictly inside the cell
+  PointQ3 interior;               ///< an exact rational point strictly inside the cell (half way from the centroid
+                                  ///< of its largest boundary triangle to the first triangle along its normal)
   std::vector<char> inside;       ///< per halfspace: 1 inside, 0 outside
   std::optional<Rational> volume; ///< exact; unset when Arrangement3Options::volumes is false
 };
@@ -77,7 +84,8 @@ class Arrangement3 {
   /// For each scene sample, a triangle that holds it and carries the sample's halfspace.
   const std::vector<int>& sample_triangles() const { return sample_triangles_; }
 
-  /// Exact point location of a rational point.
+  /// Exact point location of a rational point: the cell, triangle (interior), edge or vertex holding it, Outside
+  /// beyond the domain box. Exact ray shooting over every triangle (interval boxes skip most): O(triangles).
   PointLocation3 locate(const PointQ3& p) const;
 
  private:

@@ -23,6 +23,7 @@
 #include <hsx/kernel/rational.hpp>
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -113,6 +114,9 @@ struct Scene3 {
 /// halfspace. Self-intersection of a surface is decided exactly by the arrangement (Arrangement3::build), which
 /// has the triangle pairs at hand. Throws InputError naming the halfspace or sample ("halfspaces[2] (\"C\"): ...").
 void validate_and_resolve(Scene3& scene);
+
+/// choose_domain3 visits every triple of planes: beyond this many planes it refuses (InputError "domain: ...").
+inline constexpr std::size_t kMaxPlanesWithoutDomain = 150;
 
 /// A box strictly containing every surface vertex and every sample, with margin; when the scene has planes, also
 /// every point where three planes meet, and every plane crosses it; deterministic. The margin is a tenth of the

@@ -35,7 +35,8 @@
 //   face of the result is a convex polygon fanned from its first vertex, or from its vertex centroid when three
 //   consecutive vertices are collinear. Its faces on the domain box carry no patch (they are on the box).
 // - Segment counts: Segments mode gives n directly (torus tube: minor_segments, or n when 0). EdgeLength L gives
-//   each circle of radius rho n = max(3, ceil(2 pi rho / L)) (computed in double precision). Bounds: 3 <= n <=
+//   each circle of radius rho n = max(3, ceil(2 pi rho / L)) (computed in double precision; torus: rho =
+//   major_radius about the axis, minor_radius around the tube). Bounds: 3 <= n <=
 //   kMaxSegments for every circle, and at most kMaxTessellationTriangles triangles per primitive; outside them the
 //   input is refused (InputError).
 // - The BSH authors' rule (io/bsh_config.hpp): n = max(15, round(pi / asin(h / 2 rho))) in double precision, with
@@ -55,6 +56,10 @@ inline constexpr std::size_t kMaxTessellationTriangles = 2'000'000;  ///< per pr
 /// Segments of a circle of radius `radius` under `t` (`minor`: the torus tube's circles). Throws InputError
 /// ("tessellation: ...") outside the bounds above.
 int circle_segments(const Tessellation3& t, const Rational& radius, bool minor = false);
+
+/// The largest segment count of any circle of primitive `h` (sphere, cylinder, cone, torus; 0 for box, plane,
+/// mesh), without tessellating it. Throws InputError like circle_segments.
+int largest_circle_segments(const Halfspace3& h);
 
 /// The BSH authors' segment count for a circle of radius `radius` and their h (see above).
 int bsh_segments(double h, double radius);

@@ -24,6 +24,7 @@
 #pragma once
 
 #include <hsx/geometry/scene3.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -31,15 +32,25 @@
 
 namespace hsx {
 
+/// Options of the reader (the defaults are the authors' own settings).
+struct BshReadOptions {
+  double h_scale = 1;  ///< h = the box diagonal / 64 * h_scale: 1/2 and 1/4 give finer tessellations (benchmarks)
+};
+
 /// True when `doc` is the authors' config: a JSON object with an "input" member (and no hsx "format").
 bool is_bsh_config(const nlohmann::json& doc);
 
 /// Reads the authors' config DOM (from parse_exact_json); samples files and grid_64.json are looked up in
 /// `directory` (empty: the working directory); `config_name` is used in messages. Validated (validate_and_resolve).
 Scene3 read_bsh_config(const nlohmann::json& doc, const std::string& directory,
-                       const std::string& config_name = "config.json");
+                       const std::string& config_name = "config.json", const BshReadOptions& options = {});
 
 /// read_exact_json_file + read_bsh_config with the file's folder.
-Scene3 read_bsh_config_file(const std::string& path);
+Scene3 read_bsh_config_file(const std::string& path, const BshReadOptions& options = {});
+
+/// A 3D scene file of either kind, told apart by content: the authors' config (is_bsh_config) or an hsx-scene/1
+/// document with dimension 3 (read_scene3, mesh paths relative to the file's folder). Errors are prefixed with the
+/// path.
+Scene3 read_scene3_input_file(const std::string& path, const SceneReadLimits& limits = {});
 
 }  // namespace hsx

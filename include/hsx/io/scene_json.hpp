@@ -29,6 +29,7 @@ struct SceneReadLimits {
   std::size_t max_samples = 100000;
   std::size_t max_polygon_vertices = 5000;  ///< also enforced by validate_and_resolve
   MeshReadLimits meshes;                    ///< 3D: every `mesh` file
+  int max_segments = 4096;                  ///< 3D: segments per circle of a tessellation (at most kMaxSegments)
 };
 
 /// Checks `format` ("hsx-scene/1") and `dimension` and returns the dimension (2 or 3). The entry point for

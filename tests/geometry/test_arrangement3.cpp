@@ -1,0 +1,279 @@
+#include <hsx/geometry/arrangement3.hpp>
+
+#include "geometry/scenes3.hpp"
+
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+
+using namespace hsx;
+using namespace hsx::test3;
+
+namespace {
+
+/// Checks usable both in Catch test cases and in rapidcheck properties: a failure throws, naming the condition.
+#define EXPECT3(cond) \
+  do { \
+    if (!(cond)) throw std::runtime_error(std::string("check failed at line ") + std::to_string(__LINE__) + ": " #cond); \
+  } while (0)
+
+long choose(long n, long k) {
+  long r = 1;
+  for (long i = 0; i < k; ++i) r = r * (n - i) / (i + 1);
+  return r;
+}
+
+Rational box_volume(const Box3& b) { return (b.max.x - b.min.x) * (b.max.y - b.min.y) * (b.max.z - b.min.z); }
+
+/// Every invariant of an arrangement that needs no reference: volumes sum to the box, cells on either side of a
+/// triangle differ exactly in its halfspaces (on the right sides), witnesses classify directly as their sides,
+/// edges are closed (>= 2 triangles).
+void check_invariants(const Scene3& scene, const Arrangement3& arr) {
+  Rational total;
+  for (const ArrCell3& c : arr.cells()) {
+    EXPECT3(c.volume);
+    EXPECT3(*c.volume > 0);
+    total += *c.volume;
+    for (std::size_t h = 0; h < scene.halfspaces.size(); ++h)
+      EXPECT3(direct_side(scene.halfspaces[h], c.interior) == (c.inside[h] ? 1 : -1));
+    EXPECT3(arr.locate(c.interior).kind == PointLocation3::Cell);
+    EXPECT3(arr.locate(c.interior).index >= 0);
+  }
+  EXPECT3(total == box_volume(scene.domain));
+  for (std::size_t c = 0; c < arr.cells().size(); ++c)
+    EXPECT3(arr.locate(arr.cells()[c].interior).index == static_cast<int>(c));
+  for (const ArrTriangle3& t : arr.triangles()) {
+    if (t.on_box) EXPECT3((t.front_cell < 0) != (t.back_cell < 0));
+    if (t.front_cell < 0 || t.back_cell < 0) continue;
+    for (int h = 0; h < arr.halfspace_count(); ++h) {
+      const auto it = std::find(t.halfspaces.begin(), t.halfspaces.end(), h);
+      const char f = arr.cells()[t.front_cell].inside[h], b = arr.cells()[t.back_cell].inside[h];
+      if (it == t.halfspaces.end()) EXPECT3(f == b);
+      else EXPECT3((f == t.front_inside[it - t.halfspaces.begin()] && b != f));
+    }
+  }
+  for (const ArrEdge3& e : arr.edges()) EXPECT3(e.triangles.size() >= 2);
+}
+
+/// Random rational points in the box located, against direct classification.
+void check_random_points(const Scene3& scene, const Arrangement3& arr, int count) {
+  const Box3& b = scene.domain;
+  std::mt19937 engine(static_cast<unsigned>(*rc::gen::inRange(0, 1 << 30)));
+  for (int k = 0; k < count; ++k) {
+    auto r = [&engine](const Rational& lo, const Rational& hi) -> Rational {
+      return lo + (hi - lo) * Rational(std::uniform_int_distribution<int>(1, 999)(engine), 1000);
+    };
+    const PointQ3 p = {r(b.min.x, b.max.x), r(b.min.y, b.max.y), r(b.min.z, b.max.z)};
+    const PointLocation3 loc = arr.locate(p);
+    bool on_boundary = false;
+    for (const auto& h : scene.halfspaces) on_boundary = on_boundary || direct_side(h, p) == 0;
+    if (on_boundary) {
+      EXPECT3(loc.kind != PointLocation3::Cell);
+      continue;
+    }
+    EXPECT3(loc.kind == PointLocation3::Cell);
+    EXPECT3(loc.index >= 0);
+    for (std::size_t h = 0; h < scene.halfspaces.size(); ++h)
+      EXPECT3(arr.cells()[static_cast<std::size_t>(loc.index)].inside[h] == (direct_side(scene.halfspaces[h], p) > 0 ? 1 : 0));
+  }
+}
+
+/// The cells as a sorted list of (sides, volume, outer), for comparisons up to renaming.
+std::vector<std::tuple<std::vector<char>, Rational, bool>> cell_signature(const Arrangement3& arr,
+                                                                         const std::vector<int>& order) {
+  std::vector<std::tuple<std::vector<char>, Rational, bool>> out;
+  for (const ArrCell3& c : arr.cells()) {
+    std::vector<char> sides;
+    for (int h : order) sides.push_back(c.inside[static_cast<std::size_t>(h)]);
+    out.emplace_back(sides, *c.volume, c.outer);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<int> identity(int n) {
+  std::vector<int> v(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) v[static_cast<std::size_t>(i)] = i;
+  return v;
+}
+
+Box3 cube(const Rational& lo, const Rational& hi) { return {{lo, lo, lo}, {hi, hi, hi}}; }
+
+}  // namespace
+
+TEST_CASE("arrangement3: one plane through the box") {
+  const Scene3 scene = scene_of(cube(-1, 1), {plane("A", {1, 1, 0}, 0)});
+  const Arrangement3 arr = Arrangement3::build(scene);
+  REQUIRE(arr.cells().size() == 2);
+  check_invariants(scene, arr);
+  for (const auto& c : arr.cells()) REQUIRE(*c.volume == 4);
+}
+
+TEST_CASE("arrangement3: random planes in general position give 1 + n + C(n,2) + C(n,3) cells") {
+  rc::prop("cell count and invariants", [] {
+    const int n = *rc::gen::inRange(3, 7);  // from 3 on, every line of the arrangement holds a triple point
+    const Scene3 scene = random_planes(n, 3, *rc::gen::inRange(0, 1 << 30));
+    const Arrangement3 arr = Arrangement3::build(scene);
+    RC_ASSERT(static_cast<long>(arr.cells().size()) == 1 + n + choose(n, 2) + choose(n, 3));
+    check_invariants(scene, arr);
+    check_random_points(scene, arr, 10);
+  });
+}
+
+TEST_CASE("arrangement3: the result does not depend on the thread count") {
+  rc::prop("threads 1 and 2", [] {
+    const Scene3 scene = random_planes(*rc::gen::inRange(3, 6), 3, *rc::gen::inRange(0, 1 << 30));
+    Arrangement3Options one, two;
+    one.threads = 1;
+    two.threads = 2;
+    const Arrangement3 a = Arrangement3::build(scene, {}, one), b = Arrangement3::build(scene, {}, two);
+    RC_ASSERT(a.vertices() == b.vertices());
+    RC_ASSERT(a.triangles().size() == b.triangles().size());
+    for (std::size_t t = 0; t < a.triangles().size(); ++t) {
+      RC_ASSERT(a.triangles()[t].vertices == b.triangles()[t].vertices);
+      RC_ASSERT(a.triangles()[t].front_cell == b.triangles()[t].front_cell);
+    }
+  });
+}
+
+TEST_CASE("arrangement3: the same complex after permuting, translating and rotating") {
+  rc::prop("renaming invariance", [] {
+    const int n = *rc::gen::inRange(3, 6);
+    const Scene3 scene = random_planes(n, 3, *rc::gen::inRange(0, 1 << 30));
+    const Arrangement3 arr = Arrangement3::build(scene);
+    // permuted
+    std::vector<int> perm = identity(n);
+    std::reverse(perm.begin(), perm.end());
+    std::rotate(perm.begin(), perm.begin() + *rc::gen::inRange(0, n), perm.end());  // any rotation of a reversal
+    Scene3 permuted = scene;
+    for (int i = 0; i < n; ++i) permuted.halfspaces[static_cast<std::size_t>(i)] = scene.halfspaces[static_cast<std::size_t>(perm[i])];
+    std::vector<int> inverse(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) inverse[static_cast<std::size_t>(perm[i])] = i;
+    RC_ASSERT(cell_signature(Arrangement3::build(permuted), inverse) == cell_signature(arr, identity(n)));
+    // translated by an integer vector
+    const PointQ3 v = {*rc::gen::inRange(-5, 6), *rc::gen::inRange(-5, 6), *rc::gen::inRange(-5, 6)};
+    Scene3 moved = scene;
+    moved.domain = {add(scene.domain.min, v), add(scene.domain.max, v)};
+    for (auto& h : moved.halfspaces) h.offset += dot(h.normal, v);
+    RC_ASSERT(cell_signature(Arrangement3::build(moved), identity(n)) == cell_signature(arr, identity(n)));
+    // rotated by 90 degrees about z: (x, y, z) -> (-y, x, z)
+    auto rot = [](const PointQ3& p) { return PointQ3{-p.y, p.x, p.z}; };
+    Scene3 turned = scene;
+    turned.domain = {{-scene.domain.max.y, scene.domain.min.x, scene.domain.min.z},
+                     {-scene.domain.min.y, scene.domain.max.x, scene.domain.max.z}};
+    for (auto& h : turned.halfspaces) h.normal = rot(h.normal);
+    RC_ASSERT(cell_signature(Arrangement3::build(turned), identity(n)) == cell_signature(arr, identity(n)));
+  });
+}
+
+TEST_CASE("arrangement3: the same plane twice, in both orientations") {
+  for (bool complement : {false, true}) {
+    const Scene3 scene = scene_of(cube(-2, 2), {plane("A", {1, 2, 0}, 1), plane("B", {-1, -2, 0}, -1, complement),
+                                                plane("C", {0, 0, 1}, 0)});
+    const Arrangement3 arr = Arrangement3::build(scene);
+    REQUIRE(arr.cells().size() == 4);
+    check_invariants(scene, arr);
+    int shared = 0;
+    for (const auto& t : arr.triangles())
+      if (t.halfspaces.size() == 2) ++shared;
+    REQUIRE(shared > 0);
+  }
+}
+
+TEST_CASE("arrangement3: a plane on the domain's face") {
+  const Scene3 scene = scene_of(cube(0, 2), {plane("A", {0, 0, 1}, 2), plane("B", {1, 0, 0}, 1)});
+  const Arrangement3 arr = Arrangement3::build(scene);
+  REQUIRE(arr.cells().size() == 2);
+  check_invariants(scene, arr);
+  for (const auto& c : arr.cells()) REQUIRE(c.inside[0] == 1);
+  bool carried = false;
+  for (const auto& t : arr.triangles()) carried = carried || (t.on_box && t.halfspaces == std::vector<int>{0});
+  REQUIRE(carried);
+}
+
+TEST_CASE("arrangement3: boxes with coincident faces, a box face on a plane") {
+  const Scene3 touching = scene_of(cube(-1, 5), {surface("A", box_surface({0, 0, 0}, {2, 2, 2})),
+                                                 surface("B", box_surface({2, 0, 0}, {4, 2, 2}))});
+  const Arrangement3 a = Arrangement3::build(touching);
+  REQUIRE(a.cells().size() == 3);
+  check_invariants(touching, a);
+  const Scene3 on_plane = scene_of(cube(-1, 3), {surface("A", box_surface({0, 0, 0}, {2, 2, 2})),
+                                                 plane("P", {0, 0, 1}, 2, true)});
+  const Arrangement3 b = Arrangement3::build(on_plane);
+  REQUIRE(b.cells().size() == 3);
+  check_invariants(on_plane, b);
+  const Scene3 overlapping = scene_of(cube(-1, 5), {surface("A", box_surface({0, 0, 0}, {2, 2, 2})),
+                                                    surface("B", box_surface({1, 0, 1}, {3, 2, 3}))});
+  const Arrangement3 c = Arrangement3::build(overlapping);
+  REQUIRE(c.cells().size() == 4);
+  check_invariants(overlapping, c);
+}
+
+TEST_CASE("arrangement3: a plane through mesh vertices and along mesh edges") {
+  const Scene3 scene = scene_of(cube(-2, 2), {surface("O", octahedron({0, 0, 0}, 1)), plane("Z", {0, 0, 1}, 0),
+                                              plane("X", {1, 0, 0}, 0)});
+  const Arrangement3 arr = Arrangement3::build(scene);
+  REQUIRE(arr.cells().size() == 8);
+  check_invariants(scene, arr);
+}
+
+TEST_CASE("arrangement3: a cavity and floating components") {
+  // A hollow box: the outer box, and inside it a complemented inner box (a cavity).
+  const Scene3 hollow = scene_of(cube(-1, 5), {surface("A", box_surface({0, 0, 0}, {4, 4, 4})),
+                                               surface("B", box_surface({1, 1, 1}, {3, 3, 3}), true)});
+  const Arrangement3 a = Arrangement3::build(hollow);
+  REQUIRE(a.cells().size() == 3);
+  check_invariants(hollow, a);
+  std::vector<Rational> volumes;
+  for (const auto& c : a.cells()) volumes.push_back(*c.volume);
+  std::sort(volumes.begin(), volumes.end());
+  REQUIRE(volumes == std::vector<Rational>{8, 56, 216 - 64});
+  // two floating tetrahedra, one inside a floating octahedron
+  const Scene3 floating = scene_of(cube(-4, 4), {surface("T", tetrahedron({2, 2, 2}, {3, 2, 2}, {2, 3, 2}, {2, 2, 3})),
+                                                 surface("O", octahedron({0, 0, 0}, 2)),
+                                                 surface("U", tetrahedron({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}))});
+  const Arrangement3 b = Arrangement3::build(floating);
+  REQUIRE(b.cells().size() == 4);
+  check_invariants(floating, b);
+  for (const auto& c : b.cells()) REQUIRE(c.outer == (c.inside == std::vector<char>{0, 0, 0}));
+}
+
+TEST_CASE("arrangement3: samples on patches, refused on edges where boundaries meet") {
+  Scene3 scene = scene_of(cube(-2, 2), {surface("A", box_surface({-1, -1, -1}, {1, 1, 1})), plane("P", {0, 0, 1}, 0)});
+  Sample3 s;
+  s.halfspace = 0;
+  s.given = s.location = {Rational(1, 2), Rational(1, 3), 1};
+  scene.samples.push_back(s);
+  const Arrangement3 arr = Arrangement3::build(scene);
+  const ArrTriangle3& t = arr.triangles()[static_cast<std::size_t>(arr.sample_triangles()[0])];
+  REQUIRE(t.halfspaces == std::vector<int>{0});
+  scene.samples[0].location = scene.samples[0].given = {1, Rational(1, 3), 0};  // where P crosses A
+  REQUIRE_THROWS_AS(Arrangement3::build(scene), InputError);
+  scene.samples[0].location = scene.samples[0].given = {Rational(1, 2), Rational(1, 2), 1};  // A's face diagonal
+  REQUIRE_NOTHROW(Arrangement3::build(scene));
+}
+
+TEST_CASE("arrangement3: a surface that intersects itself is refused, naming its triangles") {
+  TriangleSurface two = tetrahedron({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2});
+  const TriangleSurface other = tetrahedron({Rational(1, 2), Rational(1, 2), Rational(1, 2)}, {3, 1, 1}, {1, 3, 1}, {1, 1, 3});
+  for (const auto& t : other.triangles) two.triangles.push_back({t[0] + 4, t[1] + 4, t[2] + 4});
+  two.vertices.insert(two.vertices.end(), other.vertices.begin(), other.vertices.end());
+  const Scene3 scene = scene_of(cube(-1, 4), {surface("S", two)});
+  REQUIRE_THROWS_WITH(Arrangement3::build(scene), Catch::Contains("halfspaces[0] (\"S\")") &&
+                                                      Catch::Contains("intersects itself") &&
+                                                      Catch::Contains("triangles"));
+}
+
+TEST_CASE("arrangement3: limits") {
+  const Scene3 scene = scene_of(cube(-4, 4), {plane("A", {1, 0, 0}, 0), plane("B", {0, 1, 0}, 0),
+                                              plane("C", {0, 0, 1}, 0), plane("D", {1, 1, 1}, 1)});
+  ArrangementLimits limits;
+  limits.max_cells = 5;
+  REQUIRE_THROWS_WITH(Arrangement3::build(scene, limits), Catch::Contains("--max-cells"));
+  limits = {};
+  limits.max_triangles = 10;
+  REQUIRE_THROWS_WITH(Arrangement3::build(scene, limits), Catch::Contains("triangles"));
+}

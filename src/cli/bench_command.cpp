@@ -1,11 +1,17 @@
 // hsx bench [DIR...]: every method on every scene, each timed repeatedly (kernel/timing.hpp), reported as medians
 // with their spread and as ratios of medians to the graph cut, side by side in one run; with --meshes, NH-Rep's
-// stages on meshes, as ratios to reading the mesh. --csv and --json write the same figures.
+// stages on meshes, as ratios to reading the mesh; with --3d, the exact 3D arrangement beside CGAL's Nef polyhedra.
+// --csv and --json write the same figures.
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/bsh/graph_cut.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement3.hpp>
+#include <hsx/geometry/nef3.hpp>
+#include <hsx/geometry/random_scene3.hpp>
+#include <hsx/geometry/tessellate3.hpp>
+#include <hsx/io/bsh_config.hpp>
 #include <hsx/geometry/mesh3.hpp>
 #include <hsx/geometry/random_scene.hpp>
 #include <hsx/io/files.hpp>
@@ -40,6 +46,12 @@ struct BenchOptions {
   bool cuts = false;                ///< graph-cut mode: the certified cut against double baselines
   std::vector<int> cut_halfspaces{10, 50, 100, 200};  ///< graph-cut mode: random scenes of these sizes
   int cut_scenes = 1;               ///< graph-cut mode: scenes per size
+  bool three_d = false;             ///< 3D mode: Arrangement3 beside Nef
+  std::string bsh_config = "../shared/data/bsh-examples/figure19_b/config.json";
+  std::vector<int> h_divisors{1, 2, 4};
+  std::vector<int> plane_counts{10, 20, 30, 40, 50};
+  long nef_max_triangles = 20000;   ///< Nef is skipped above this many input triangles
+  int threads = 0;
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -520,15 +532,131 @@ void run_nhrep_bench(const BenchOptions& o, OutputFiles& files) {
   publish(report, o, files);
 }
 
+// ---- the 3D arrangement beside Nef ----
+
+/// The BSH authors' scene re-tessellated by their rule at h / divisor (h = the domain's diagonal / 64, as
+/// io/bsh_config.hpp reads it at divisor 1), samples snapped again.
+Scene3 bsh_scene_at(const std::string& config, int divisor) {
+  Scene3 scene = read_bsh_config_file(config);
+  if (divisor == 1) return scene;
+  const Box3& b = scene.domain;
+  const double dx = Rational(b.max.x - b.min.x).get_d(), dy = Rational(b.max.y - b.min.y).get_d(),
+               dz = Rational(b.max.z - b.min.z).get_d();
+  const double h = std::sqrt(dx * dx + dy * dy + dz * dz) / 64 / divisor;
+  for (Halfspace3& hs : scene.halfspaces) {
+    if (hs.kind == HalfspaceKind3::Plane) continue;
+    Primitive3& p = hs.primitive;
+    const bool torus = hs.kind == HalfspaceKind3::Torus;
+    p.tessellation.segments = bsh_segments(h, (torus ? p.major_radius : p.radius).get_d());
+    if (torus) p.tessellation.minor_segments = bsh_segments(h, p.minor_radius.get_d());
+    hs.surface = tessellate(hs, scene.domain);
+    hs.origin = tessellation_summary(hs) + " (the BSH authors' rule at h/" + std::to_string(divisor) + ")";
+  }
+  validate_and_resolve(scene);
+  return scene;
+}
+
+long input_triangles(const Scene3& scene) {
+  long n = 0;
+  for (const Halfspace3& h : scene.halfspaces) n += static_cast<long>(h.surface.triangles.size());
+  return n;
+}
+
+std::string megabytes(const std::optional<long>& bytes) {
+  return bytes ? printf_string("%.0f", static_cast<double>(*bytes) / (1 << 20)) : "-";
+}
+
+/// One 3D scene: the exact arrangement and complex (no volumes), then Nef, each timed and its peak memory taken.
+BenchRow bench_scene3(const std::string& name, const Scene3& scene, const BenchOptions& o,
+                      const RepeatOptions& repeat) {
+  BenchRow row;
+  row.input = name;
+  Arrangement3Options options;
+  options.volumes = false;
+  options.threads = o.threads;
+  std::optional<Arranged3> arranged;
+  StageResult arrangement;
+  arrangement.timing = time_repeatedly([&] { arranged = arrange(scene, o.limits, options); }, repeat);
+  const auto arrangement_peak = peak_memory_of([&] { arrange(scene, o.limits, options); });
+  const long triangles = input_triangles(scene);
+  StageResult nef;
+  std::optional<NefCellCounts> counts;
+  std::optional<long> nef_peak;
+  if (o.nef_max_triangles > 0 && triangles > o.nef_max_triangles) {
+    nef.status = "skipped";
+  } else {
+    nef.timing = time_repeatedly([&] { counts = nef_cell_counts(scene); }, repeat);
+    nef_peak = peak_memory_of([&] { nef_cell_counts(scene); });
+  }
+  const Complex& c = arranged->complex;
+  const long cells = static_cast<long>(c.cells.size());
+  row.sizes = {static_cast<long>(scene.halfspaces.size()), triangles,
+               static_cast<long>(arranged->arrangement.triangles().size()), cells,
+               static_cast<long>(c.outer_cell_count()), static_cast<long>(c.patches.size())};
+  row.stages = {arrangement, nef};
+  std::string agree = "-";
+  if (counts) agree = counts->cells == cells && counts->outer_cells == c.outer_cell_count() ? "yes" : "DIFFER";
+  row.notes = {counts ? std::to_string(counts->cells) : "-", agree, megabytes(arrangement_peak), megabytes(nef_peak)};
+  return row;
+}
+
+/// The BSH authors' figure19_b at h, h/2, h/4 and random planes: Arrangement3 beside Nef.
+void run_bench3(const BenchOptions& o, OutputFiles& files) {
+  Report report;
+  report.mode = "3d";
+  report.input_name = "scene";
+  report.size_names = {"halfsp", "in tri", "tri", "cells", "outer", "patches"};
+  report.stage_names = {"arrange", "nef"};
+  report.with_ratio = {0, 1};
+  report.reference = 0;
+  report.note_names = {"nef cells", "agree", "arr MB", "nef MB"};
+  report.repeat = repeat_options(o);
+  if (o.nef_max_triangles < 0) throw InputError("--nef-max-triangles: must be >= 0");
+  const std::string label = std::filesystem::path(o.bsh_config).parent_path().filename().string();
+  for (int divisor : o.h_divisors) {
+    if (divisor < 1) throw InputError("--h-divisors: every divisor must be at least 1");
+    const std::string name =
+        (label.empty() ? std::string("bsh") : label) + (divisor == 1 ? " h" : " h/" + std::to_string(divisor));
+    if (!std::filesystem::exists(o.bsh_config)) {
+      BenchRow row;
+      row.input = name;
+      row.skipped = "no " + o.bsh_config + " (the BSH authors' data is not in this repository; --bsh-config PATH)";
+      report.rows.push_back(row);
+      continue;
+    }
+    report.rows.push_back(bench_scene3(name, bsh_scene_at(o.bsh_config, divisor), o, report.repeat));
+  }
+  for (int n : o.plane_counts) {
+    if (n < 1) throw InputError("--planes: every count must be at least 1");
+    RandomPlanesSettings settings;
+    settings.planes = n;
+    settings.max_coefficient = 50;  // general position is likely
+    report.rows.push_back(bench_scene3(std::to_string(n) + " random planes", random_plane_scene3(settings, 1, 0), o,
+                                       report.repeat));
+  }
+  report.footer = {
+      "arrange: the exact arrangement and its complex, without volumes (Arrangement3Options::volumes = false); nef: "
+      "CGAL's Nef_polyhedron_3 counting the same cells (geometry/nef3.hpp), skipped above --nef-max-triangles input "
+      "triangles; in tri: input surface triangles (planes are clipped by the box); tri: refined triangles",
+      "agree: Nef's cell and outer-cell counts equal the arrangement's; MB: peak resident memory of a process doing "
+      "that computation once (kernel/timing.hpp, peak_memory_of)",
+      "the BSH authors' floating-point arrangement of figure19_b at h takes about 1.8 s on the reference machine "
+      "(issue 12, section 5)"};
+  publish(report, o, files);
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* cmd = app.add_subcommand(
       "bench", "Time every BSH method on every scene of the given folders, repeatedly, side by side in one run");
-  cmd->add_option("DIRS", o->dirs, "folders of scenes (default data/scenes data/figures)");
-  cmd->add_option("--brute-force-limit", o->brute_force_limit, "skip the oracle above this many labellings");
-  cmd->add_option("--time-limit", o->time_limit, "seconds per search before it stops (default 60)")->check(seconds());
+  CLI::Option* dirs = cmd->add_option("DIRS", o->dirs, "folders of scenes (default data/scenes data/figures)");
+  CLI::Option* brute_force =
+      cmd->add_option("--brute-force-limit", o->brute_force_limit, "skip the oracle above this many labellings");
+  CLI::Option* time_limit =
+      cmd->add_option("--time-limit", o->time_limit, "seconds per search before it stops (default 60)")
+          ->check(seconds());
   cmd->add_option("--repetitions", o->repetitions, "run each measurement at least N times (default 5)");
   cmd->add_option("--min-time", o->min_time,
                   "and repeat it until the runs add up to S seconds (default 0.2; 0: exactly --repetitions runs)");
@@ -543,14 +671,37 @@ void add_bench_command(CLI::App& app) {
                "scenes instead");
   cmd->add_option("--cut-halfspaces", o->cut_halfspaces, "--cuts: the scenes' sizes (default 10 50 100 200)");
   cmd->add_option("--cut-scenes", o->cut_scenes, "--cuts: random scenes per size (default 1)");
+  cmd->add_flag("--3d", o->three_d,
+               "time the exact 3D arrangement beside CGAL's Nef polyhedra on the BSH authors' figure19_b (at h, h/2, "
+               "h/4) and on random planes, instead of the BSH methods");
+  const std::vector<CLI::Option*> only_3d = {
+      cmd->add_option("--bsh-config", o->bsh_config,
+                      "--3d: the BSH authors' config.json (default " + o->bsh_config +
+                          "; a missing file skips its rows)"),
+      cmd->add_option("--h-divisors", o->h_divisors, "--3d: tessellate that scene at h/k for each k (default 1 2 4)")
+          ->delimiter(','),
+      cmd->add_option("--planes", o->plane_counts, "--3d: random plane scenes of these sizes (default 10 20 30 40 50)")
+          ->delimiter(','),
+      cmd->add_option("--nef-max-triangles", o->nef_max_triangles,
+                      "--3d: skip Nef above this many input triangles (default 20000; 0: never skip)"),
+      cmd->add_option("--threads", o->threads, "--3d: worker threads of the arrangement (default 0: all cores)")
+          ->check(CLI::NonNegativeNumber)};
   add_arrangement_limits(cmd, o->limits);
-  cmd->callback([o] {
+  cmd->callback([o, dirs, brute_force, time_limit, only_3d] {
+    for (CLI::Option* option : only_3d)
+      if (!o->three_d && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --3d");
+    for (CLI::Option* option : {dirs, brute_force, time_limit})
+      if (o->three_d && option->count() > 0)
+        throw InputError("bench: " + option->get_name() + " does not apply to --3d");
     OutputFiles files;  // checked before the measurements, written at the end
     files.expect(o->csv_path, "--csv");
     files.expect(o->json_path, "--json");
-    if (o->cuts && !o->meshes.empty()) throw InputError("bench: --cuts and --meshes exclude each other");
+    if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) > 1)
+      throw InputError("bench: --cuts, --3d and --meshes exclude each other");
     if (o->cuts)
       run_cut_bench(*o, files);
+    else if (o->three_d)
+      run_bench3(*o, files);
     else if (o->meshes.empty())
       run_bench(*o, files);
     else

@@ -169,7 +169,7 @@ std::string samples_svg(const Scene3& scene, const Projection& p) {
   for (std::size_t k = 0; k < scene.samples.size(); ++k) {
     const Vec q = to_vec(scene.samples[k].location);
     s += "<circle class=\"sample\" data-id=\"" + std::to_string(k) + "\" cx=\"" + svg_number(p.X(q)) + "\" cy=\"" +
-         svg_number(p.Y(q)) + "\" r=\"3\" fill=\"" + svg_palette_colour(scene.samples[k].halfspace) + "\"/>\n";
+         svg_number(p.Y(q)) + "\" r=\"4\" fill=\"" + svg_palette_colour(scene.samples[k].halfspace) + "\"/>\n";
   }
   return s + "</g>\n";
 }

@@ -292,6 +292,29 @@ assert all(s["repetitions"] == 5 and s["median_s"] > 0 for s in st), st
 else
   fail "bench --meshes: $(head -c 300 "$TMP/stderr.txt")"
 fi
+# --3d: the exact 3D arrangement beside Nef; a missing BSH config is a skipped row, never a failure.
+if "$HSX" bench --3d --planes 4,6 --h-divisors 1 --bsh-config "$TMP/no-such/config.json" --repetitions 1 \
+  --min-time 0 --json "$TMP/bench3.json" >"$TMP/bench3.txt" 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = d["rows"]
+assert d["mode"] == "3d" and "skipped" in rows[0], rows[0]
+for r in rows[1:]:
+    assert [s["stage"] for s in r["stages"]] == ["arrange", "nef"], r
+    assert r["agree"] == "yes" and int(r["nef cells"]) == r["cells"] and r["cells"] > 1, r
+    assert all(s["repetitions"] == 1 for s in r["stages"]), r
+' "$TMP/bench3.json"; then
+  pass
+else
+  fail "bench --3d: $(head -c 300 "$TMP/stderr.txt")"
+fi
+"$HSX" bench --planes 4 >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--planes needs --3d" "$TMP/stderr.txt"; then pass; else fail "bench --planes without --3d: exit $rc"; fi
+"$HSX" bench --3d "$TMP/bench" >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "does not apply to --3d" "$TMP/stderr.txt"; then pass; else fail "bench --3d DIRS: exit $rc"; fi
 # ---- arrange/extract --labels: cell and patch ids in the picture ----
 if "$HSX" arrange "$ROOT/data/scenes/lens.json" --svg "$TMP/labels.svg" --labels -q &&
   grep -q 'class="cell-id"' "$TMP/labels.svg" && grep -q 'class="patch-id"' "$TMP/labels.svg"; then

@@ -7,16 +7,17 @@
 //     region = interior(domain box) minus the union of every halfspace's boundary,
 //   and the cells are the marked volumes of `region` (the connected components of the open box minus all
 //   boundaries, as Arrangement3 defines them). A plane's boundary is taken as the boundary of the convex polytope
-//   convex_hull_3(halfspace ∩ box) (its faces on the box are outside the open box, so they remove nothing); a plane
-//   that does not cross the open box (the box lies in one closed side of it: it misses the box or only touches a
-//   face, an edge or a corner) removes nothing and is skipped. A surface's boundary is the Nef polyhedron of its
-//   triangles. `complement` does not matter (a boundary is the same set either way).
+//   convex_hull_3(halfspace intersected with the box) (its faces on the box are outside the open box, so they
+//   remove nothing); a plane that does not cross the open box (the box lies in one closed side of it: it misses
+//   the box or only touches a face, an edge or a corner) removes nothing and is skipped. A surface's boundary is
+//   the Nef polyhedron of its triangles. `complement` does not matter (a boundary is the same set either way).
 // - A cell is outer iff one of the facets bounding it lies on a face of the box (Arrangement3's definition: a
 //   boundary triangle on the box; touching the box only along an edge or at a corner does not make a cell outer).
-// - Cost (measured on a 2-core machine, g++ 12 -O2): about 0.4 s for 10 random planes and 12 s for 30; the BSH
-//   authors' figure19_b (17 halfspaces, ~8k triangles) about 4 s, ~14k triangles 16 s; memory grows with the
-//   result's size (hundreds of MB for tens of thousands of facets). It is single-threaded and keeps no source id
-//   per facet, so it gives counts only. Use it on small scenes in tests; `hsx bench` times it beside Arrangement3.
+// - Cost (measured on the project's 2-core machine, g++ 12 -O2, shared with other jobs, so figures vary by 2-3x):
+//   random planes in general position: 10 planes 1.3-2 s, 20 planes 8-11 s, 30 planes ~19 s; the BSH authors'
+//   figure19_b (17 halfspaces, 7,982 triangles) 4-27 s and 130-170 MB peak, at h/2 (15,874 triangles) 22 s and
+//   280 MB. It is single-threaded and keeps no source id per facet, so it gives counts only: use it on small
+//   scenes in tests; `hsx bench --3d` times it beside Arrangement3.
 #pragma once
 
 #include <hsx/geometry/scene3.hpp>

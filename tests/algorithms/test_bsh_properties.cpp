@@ -322,7 +322,10 @@ TEST_CASE("bsh property 2: graph cut = brute force without sample-connectedness 
 }
 
 /// The cut from the double warm start and the cut from the zero flow, under the same constraints, are the same cut:
-/// the source side of a maximum flow does not depend on the flow (graph_cut.hpp), and both are certified together.
+/// the source side of a maximum flow does not depend on the flow (graph_cut.hpp). Their `certified` flags may
+/// differ: the certificate checks the flow each one found, and one flow can leave an arc whose residual is an exact
+/// zero of arc-angle terms that intervals cannot decide (issue 11 §2; found by this property on a scene of disks,
+/// rapidcheck seed 9371466805928338663, where the zero flow's certificate tied and the warm start's held).
 void check_warm_start_against_zero_flow(const Problem& problem, CutConstraints constraints) {
   constraints.warm_start = true;
   const CutResult warm = graph_cut(problem, constraints);
@@ -331,8 +334,8 @@ void check_warm_start_against_zero_flow(const Problem& problem, CutConstraints c
   RC_ASSERT(warm.labelling == cold.labelling);
   RC_ASSERT(warm.energy.missing_samples == cold.energy.missing_samples);
   if (cold.energy.missing_samples < 0) return;
-  RC_ASSERT(compare(warm.energy, cold.energy) == Order::Equal);
-  RC_ASSERT(warm.certified == cold.certified);
+  const Order order = compare(warm.energy, cold.energy);
+  RC_ASSERT(order == Order::Equal || (order == Order::Tie && !(warm.certified && cold.certified)));
 }
 
 TEST_CASE("bsh property 2b: the warm-started cut is the exact optimum (small) and the zero-flow cut (larger)",

@@ -1,6 +1,7 @@
 // hsx-complex/1, the 3D geometry section: reading it (with every check complex_json.hpp lists) and writing it.
 #include "io/complex_json3.hpp"
 
+#include <hsx/geometry/mesh3.hpp>  // triangle_normal, dot3
 #include <hsx/io/json_values.hpp>
 
 #include <algorithm>
@@ -17,14 +18,6 @@ PointQ3 read_point3(const JsonField& f) {
   if (f.size() != 3) f.fail("expected a point [x, y, z], got " + std::to_string(f.size()) + " coordinates");
   return PointQ3{f.at(std::size_t{0}).rational(), f.at(std::size_t{1}).rational(), f.at(std::size_t{2}).rational()};
 }
-
-PointQ3 minus(const PointQ3& a, const PointQ3& b) { return PointQ3{a.x - b.x, a.y - b.y, a.z - b.z}; }
-
-PointQ3 cross(const PointQ3& u, const PointQ3& v) {
-  return PointQ3{u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
-}
-
-Rational dot(const PointQ3& u, const PointQ3& v) { return u.x * v.x + u.y * v.y + u.z * v.z; }
 
 /// A cell index or -1 (outside the domain).
 int read_cell_or_outside(const JsonField& f, std::size_t cell_count) {
@@ -45,8 +38,8 @@ ArrTriangle3 read_triangle(const JsonField& t, const Names& names, std::size_t c
   if (tri.vertices[0] == tri.vertices[1] || tri.vertices[1] == tri.vertices[2] || tri.vertices[0] == tri.vertices[2])
     vs.fail("repeats a vertex");
   const PointQ3& a = vertices[tri.vertices[0]];
-  const PointQ3 n = cross(minus(vertices[tri.vertices[1]], a), minus(vertices[tri.vertices[2]], a));
-  tri.area2 = dot(n, n);
+  const PointQ3 n = triangle_normal(a, vertices[tri.vertices[1]], vertices[tri.vertices[2]]);
+  tri.area2 = dot3(n, n);
   if (tri.area2 == 0) vs.fail("the three vertices are collinear (the triangle has no area)");
   const JsonField hs = t.at("halfspaces");
   const JsonField fi = t.at("front_inside");
@@ -101,7 +94,7 @@ std::vector<Rational> cell_volumes(const ComplexDocument& doc, std::size_t cell_
     const PointQ3& a = doc.vertices3[t.vertices[0]];
     const PointQ3& b = doc.vertices3[t.vertices[1]];
     const PointQ3& c = doc.vertices3[t.vertices[2]];
-    const Rational six_v = dot(a, cross(b, c));
+    const Rational six_v = dot3(a, triangle_normal(PointQ3{0, 0, 0}, b, c));  // det(a, b, c)
     if (t.back_cell >= 0) volume[t.back_cell] += six_v;
     if (t.front_cell >= 0) volume[t.front_cell] -= six_v;
   }

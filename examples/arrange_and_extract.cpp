@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     options.method = hsx::bsh::Method::BestFirst;  // complete: the result is proven optimal
     const hsx::bsh::ExtractResult shape = hsx::extract_shape(complex, options);
 
-    const hsx::Measure& length = shape.energy.measure;
+    const hsx::Measure& length = shape.energy.measure();
     std::cout << "optimal " << (shape.optimal ? "yes" : "no") << ", " << shape.energy.missing_samples
               << " missing samples, boundary length " << length.decimal_string(20) << " = "
               << length.exact_string().value_or("(no closed form)") << "\n";

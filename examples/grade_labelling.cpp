@@ -26,9 +26,9 @@ int main(int argc, char** argv) {
     for (const hsx::bsh::Component& island : grade.islands)
       std::cout << "  island on " << complex.halfspace_names[island.halfspace] << ": " << island.patches.size()
                 << " patches without a sample\n";
-    std::cout << "energy " << grade.energy.missing_samples << " missing, " << grade.energy.measure.decimal_string(15)
+    std::cout << "energy " << grade.energy.missing_samples << " missing, " << grade.energy.measure().decimal_string(15)
               << "; optimum " << grade.optimum.energy.missing_samples << " missing, "
-              << grade.optimum.energy.measure.decimal_string(15) << "\n";
+              << grade.optimum.energy.measure().decimal_string(15) << "\n";
     std::cout << "versus optimum: " << hsx::to_string(grade.versus_optimum) << "\n";
     std::cout << (grade.optimal() ? "OPTIMAL" : "NOT OPTIMAL") << "\n";
     return grade.optimal() ? 0 : 3;

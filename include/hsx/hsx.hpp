@@ -7,7 +7,7 @@
 //   hsx::LoadedInput in = hsx::load_input("lens.json");              // a scene, arranged exactly, or a complex
 //   const hsx::Complex& c = in.complex();                           // cells, patches, junctions, samples
 //   hsx::bsh::ExtractResult shape = hsx::extract_shape(c);          // BSH shape (default: beam search, K = 1)
-//   shape.energy.missing_samples; shape.energy.measure.exact_string();
+//   shape.energy.missing_samples; shape.energy.measure().exact_string();
 //   hsx::bsh::Grade g = hsx::grade_labelling(c, my_labels);         // someone else's answer, graded exactly
 //   auto checks = hsx::bsh::check_all(c);                           // every proposition checker
 //   std::vector<char> solid = hsx::solid_from_csg(c, "(A | B) & ~C");

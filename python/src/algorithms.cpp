@@ -156,7 +156,7 @@ py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int
 void bind_result(py::module_& m) {
   py::class_<bsh::Energy>(m, "Energy", "E(b) = (missing samples, boundary measure), compared lexicographically")
       .def_readonly("missing_samples", &bsh::Energy::missing_samples)
-      .def_readonly("measure", &bsh::Energy::measure)
+      .def_property_readonly("measure", [](const bsh::Energy& e) { return e.measure(); })
       .def("compare",
            [](const bsh::Energy& a, const bsh::Energy& b, long max_bits) {
              hsx::CompareOptions o;
@@ -164,10 +164,10 @@ void bind_result(py::module_& m) {
              return bsh::compare(a, b, o);
            },
            py::arg("other"), py::arg("max_bits") = 2048, "Certified: Less/Equal/Greater are proofs, Tie is not")
-      .def("__iter__", [](const bsh::Energy& e) { return py::iter(py::make_tuple(e.missing_samples, e.measure)); })
+      .def("__iter__", [](const bsh::Energy& e) { return py::iter(py::make_tuple(e.missing_samples, e.measure())); })
       .def("__repr__", [](const bsh::Energy& e) {
         return "Energy(missing_samples=" + std::to_string(e.missing_samples) +
-               ", measure=" + py::repr(py::cast(e.measure)).cast<std::string>() + ")";
+               ", measure=" + py::repr(py::cast(e.measure())).cast<std::string>() + ")";
       });
   py::class_<bsh::Ties>(m, "Ties", "Other optimal boundaries (complete methods)")
       .def_readonly("count", &bsh::Ties::count)
@@ -227,7 +227,7 @@ void bind_result(py::module_& m) {
       .def("__repr__", [](const ResultHandle& h) {
         return "<hsx.Result " + std::string(bsh::to_string(h.r().method)) + (h.r().optimal ? " optimal" : "") +
                ": " + std::to_string(h.r().energy.missing_samples) + " missing, measure " +
-               h.r().energy.measure.decimal_string(12) + ">";
+               h.r().energy.measure().decimal_string(12) + ">";
       });
 }
 

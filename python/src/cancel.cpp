@@ -49,7 +49,7 @@ std::function<void(const hsx::bsh::SearchProgress&)> Guard::progress() const {
       d["queue_size"] = p.queue_size;
       d["graph_cuts"] = p.graph_cuts;
       if (p.best_energy)
-        d["best_energy"] = py::make_tuple(p.best_energy->missing_samples, p.best_energy->measure);
+        d["best_energy"] = py::make_tuple(p.best_energy->missing_samples, p.best_energy->measure());
       else
         d["best_energy"] = py::none();
       if (p.lower_bound)

@@ -34,8 +34,8 @@ struct ExtractCommandOptions {
 
 std::string energy_text(const bsh::Energy& e) {
   std::string s = std::to_string(e.missing_samples) + " missing sample" + (e.missing_samples == 1 ? "" : "s") +
-                  ", boundary measure " + e.measure.decimal_string(30);
-  if (auto exact = e.measure.exact_string()) s += " = " + *exact;
+                  ", boundary measure " + e.measure().decimal_string(30);
+  if (auto exact = e.measure().exact_string()) s += " = " + *exact;
   return s;
 }
 
@@ -118,7 +118,7 @@ void run_extract(const ExtractCommandOptions& o) {
                 << p.queue_size << ", graph cuts " << p.graph_cuts;
       if (p.best_energy)
         std::cerr << ", best so far " << p.best_energy->missing_samples << " missing / "
-                  << p.best_energy->measure.decimal_string(12);
+                  << p.best_energy->measure().decimal_string(12);
       if (p.lower_bound) std::cerr << ", lower bound " << bound_text(*p.lower_bound);
       std::cerr << "      " << std::flush;
     };

@@ -136,7 +136,7 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
   j["optimal"] = r.optimal;
   if (!r.stopped_by.empty()) j["stopped_by"] = r.stopped_by;
   if (!r.optimality_note.empty()) j["optimality_note"] = r.optimality_note;
-  j["energy"] = {{"missing_samples", r.energy.missing_samples}, {"measure", measure_to_json(r.energy.measure)}};
+  j["energy"] = {{"missing_samples", r.energy.missing_samples}, {"measure", measure_to_json(r.energy.measure())}};
   j[c.dimension == 3 ? "volume" : "area"] = measure_to_json(bsh::inside_measure(c, r.labelling));
   j["sample_connected"] = r.sample_connected;
   j["ties"] = {{"count", r.ties.count},

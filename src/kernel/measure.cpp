@@ -411,7 +411,7 @@ IntervalNT pi_interval_nt() {
 // ---------------------------------------------------------------------------------------------------------------
 
 Measure::Measure(const Rational& q) {
-  if (sgn(q) != 0) algebraic_.emplace(Integer(1), q);
+  if (sgn(q) != 0) algebraic_.emplace(Integer(1), Term{q, {}});
 }
 
 Measure Measure::sqrt_of(const Rational& q) {
@@ -437,71 +437,155 @@ void Measure::add_sqrt_term(const Rational& coefficient, const Integer& radicand
   if (sgn(coefficient) == 0 || sgn(radicand) == 0) return;
   if (sgn(radicand) < 0) throw std::domain_error("Measure: square root of a negative integer");
   if (radicand == 1) {
-    insert_reduced(coefficient, radicand, true);
+    insert_reduced(coefficient, radicand, true, ClassPrint());
     return;
   }
   const Reduced r = reduce_radicand(radicand);
-  insert_reduced(r.root == 1 ? coefficient : Rational(coefficient * r.root), r.rest, r.squarefree);
+  insert_reduced(r.root == 1 ? coefficient : Rational(coefficient * r.root), r.rest, r.squarefree, ClassPrint());
 }
 
-void Measure::insert_reduced(const Rational& coefficient, const Integer& radicand, bool squarefree) {
+// ---- square-class index ----------------------------------------------------------------------------------
+namespace {
+
+constexpr std::size_t kIndexThreshold = 24;  // below this many terms a linear scan is as fast as the index
+
+/// The 64 fingerprint primes: the first 64 primes above 2^16, so that a radicand (free of small square factors)
+/// is rarely divisible by one.
+const std::vector<unsigned long>& print_primes() {
+  static const std::vector<unsigned long> primes = [] {
+    std::vector<unsigned long> out;
+    for (unsigned long n = 65537; out.size() < 64; n += 2) {
+      bool prime = true;
+      for (unsigned long d = 3; d * d <= n && prime; d += 2) prime = n % d != 0;
+      if (prime) out.push_back(n);
+    }
+    return out;
+  }();
+  return primes;
+}
+
+}  // namespace
+
+void Measure::build_index() {
+  indexed_ = true;
+  for (auto& [k, t] : algebraic_) {
+    if (k == 1) continue;
+    if (!t.print.known) t.print = class_print(k);
+    index_insert(k, t.print);
+  }
+}
+
+Measure::ClassPrint Measure::class_print(const Integer& k) {
+  ClassPrint p;
+  const std::vector<unsigned long>& primes = print_primes();
+  for (std::size_t i = 0; i < primes.size(); ++i) {
+    const int r = mpz_kronecker_ui(k.get_mpz_t(), primes[i]);
+    if (r == 1) p.residues |= std::uint64_t(1) << i;
+    if (r == 0) p.divides |= std::uint64_t(1) << i;
+  }
+  p.known = true;
+  return p;
+}
+
+void Measure::index_insert(const Integer& radicand, const ClassPrint& print) {
+  if (print.divides != 0) {
+    unclean_.insert(radicand);
+  } else {
+    classes_.emplace(print.residues, radicand);
+  }
+}
+
+void Measure::index_erase(const Integer& radicand, const ClassPrint& print) {
+  if (print.divides != 0) {
+    unclean_.erase(radicand);
+    return;
+  }
+  auto [lo, hi] = classes_.equal_range(print.residues);
+  for (auto it = lo; it != hi; ++it)
+    if (it->second == radicand) {
+      classes_.erase(it);
+      return;
+    }
+}
+
+void Measure::erase_term(std::map<Integer, Term>::iterator it) {
+  if (!unsure_.empty()) unsure_.erase(it->first);
+  if (indexed_ && it->first != 1) index_erase(it->first, it->second.print);
+  algebraic_.erase(it);
+}
+
+const Integer* Measure::class_partner(const Integer& radicand, bool squarefree, ClassPrint* print) {
+  // The radicand j already held (at most one, by the invariant) with radicand*j a perfect square.
+  Integer product;
+  auto same_class = [&](const Integer& j) {
+    product = radicand * j;
+    return is_square(product);
+  };
+  if (!indexed_ && !squarefree && algebraic_.size() >= kIndexThreshold) build_index();
+  if (!indexed_) {
+    if (squarefree) {
+      for (const Integer& j : unsure_)
+        if (same_class(j)) return &j;
+    } else {
+      for (const auto& [j, t] : algebraic_)
+        if (j != 1 && same_class(j)) return &j;
+    }
+    return nullptr;
+  }
+  if (!print->known) *print = class_print(radicand);
+  // Two proven square-free radicands are never in one class: a proven one only looks at unproven partners.
+  auto candidate = [&](const Integer& j, const ClassPrint& pj) {
+    return (!squarefree || unsure_.count(j) != 0) && print->compatible(pj) && same_class(j);
+  };
+  if (print->divides != 0) {  // rare: a fingerprint prime divides the radicand, so every class may match
+    for (const auto& [j, t] : algebraic_)
+      if (j != 1 && candidate(j, t.print)) return &j;
+    return nullptr;
+  }
+  auto [lo, hi] = classes_.equal_range(print->residues);
+  for (auto it = lo; it != hi; ++it)
+    if (candidate(it->second, algebraic_.at(it->second).print)) return &it->second;
+  for (const Integer& j : unclean_)
+    if (candidate(j, algebraic_.at(j).print)) return &j;
+  return nullptr;
+}
+
+void Measure::insert_reduced(const Rational& coefficient, const Integer& radicand, bool squarefree,
+                             ClassPrint print) {
   if (sgn(coefficient) == 0) return;
   auto it = algebraic_.find(radicand);
   if (it != algebraic_.end()) {
-    it->second += coefficient;
-    if (sgn(it->second) == 0) {
-      if (!unsure_.empty()) unsure_.erase(it->first);
-      algebraic_.erase(it);
-    }
+    it->second.c += coefficient;
+    if (sgn(it->second.c) == 0) erase_term(it);
     return;
   }
   if (radicand != 1) {
-    // Find the radicand j (at most one, by the invariant) with radicand*j a perfect square.
-    const Integer* match = nullptr;
-    Integer product;
-    auto same_class = [&](const Integer& j) {
-      product = radicand * j;
-      return is_square(product);
-    };
-    if (squarefree) {
-      for (const Integer& j : unsure_)
-        if (same_class(j)) {
-          match = &j;
-          break;
-        }
-    } else {
-      for (const auto& [j, c] : algebraic_)
-        if (j != 1 && same_class(j)) {
-          match = &j;
-          break;
-        }
-    }
-    if (match) {
+    if (const Integer* match = class_partner(radicand, squarefree, &print)) {
       // radicand = g*a^2 and j = g*b^2 with g = gcd: c_j*sqrt(j) + c*sqrt(radicand) = (c_j*b + c*a)*sqrt(g).
       const Integer j = *match;
       Integer g;
       mpz_gcd(g.get_mpz_t(), radicand.get_mpz_t(), j.get_mpz_t());
       auto jt = algebraic_.find(j);
-      const Rational cj = jt->second;
+      const Rational cj = jt->second.c;
       const Integer a = isqrt(Integer(radicand / g));
       const Integer b = isqrt(Integer(j / g));
       const Rational total = cj * b + coefficient * a;
       if (g == j) {
-        jt->second = total;
-        if (sgn(total) == 0) {
-          unsure_.erase(j);
-          algebraic_.erase(jt);
-        }
+        jt->second.c = total;
+        if (sgn(total) == 0) erase_term(jt);
         return;
       }
-      unsure_.erase(j);
-      algebraic_.erase(jt);
+      erase_term(jt);
       add_sqrt_term(total, g);  // g is in the same class and smaller; no other radicand is in this class
       return;
     }
   }
-  algebraic_.emplace(radicand, coefficient);
+  Term& t = algebraic_.emplace(radicand, Term{coefficient, print}).first->second;
   if (!squarefree) unsure_.insert(radicand);
+  if (indexed_ && radicand != 1) {
+    if (!t.print.known) t.print = class_print(radicand);
+    index_insert(radicand, t.print);
+  }
 }
 
 void Measure::add_special(const std::shared_ptr<const SpecialTerm>& term, const Rational& coefficient) {
@@ -521,14 +605,17 @@ void Measure::add_measure(const Measure& other, bool negate) {
       algebraic_.clear();
       special_.clear();
       unsure_.clear();
+      indexed_ = false;
+      classes_.clear();
+      unclean_.clear();
     } else {
       *this *= Rational(2);
     }
     return;
   }
-  for (const auto& [k, c] : other.algebraic_) {
+  for (const auto& [k, t] : other.algebraic_) {
     const bool squarefree = other.unsure_.empty() || other.unsure_.count(k) == 0;
-    insert_reduced(negate ? Rational(-c) : c, k, squarefree);
+    insert_reduced(negate ? Rational(-t.c) : t.c, k, squarefree, t.print);
   }
   for (const auto& [key, s] : other.special_) add_special(s.term, negate ? Rational(-s.coefficient) : s.coefficient);
 }
@@ -548,16 +635,19 @@ Measure& Measure::operator*=(const Rational& factor) {
     algebraic_.clear();
     special_.clear();
     unsure_.clear();
+    indexed_ = false;
+    classes_.clear();
+    unclean_.clear();
     return *this;
   }
-  for (auto& [k, c] : algebraic_) c *= factor;
+  for (auto& [k, t] : algebraic_) t.c *= factor;
   for (auto& [key, s] : special_) s.coefficient *= factor;
   return *this;
 }
 
 Measure Measure::operator-() const {
   Measure m = *this;
-  for (auto& [k, c] : m.algebraic_) c = -c;
+  for (auto& [k, t] : m.algebraic_) t.c = -t.c;
   for (auto& [key, s] : m.special_) s.coefficient = -s.coefficient;
   return m;
 }
@@ -566,7 +656,7 @@ Measure Measure::product(const OneRoot& a, const OneRoot& b) {
   // (a0 + a1 sqrt(r))(b0 + b1 sqrt(s)) = a0 b0 + a0 b1 sqrt(s) + a1 b0 sqrt(r) + a1 b1 sqrt(r s)
   Measure m;
   const bool ra = !a.is_rational(), rb = !b.is_rational();
-  m.insert_reduced(a.a0 * b.a0, Integer(1), true);
+  m.insert_reduced(a.a0 * b.a0, Integer(1), true, ClassPrint());
   if (rb) m.add_sqrt_rational(a.a0 * b.a1, b.root);
   if (ra) m.add_sqrt_rational(a.a1 * b.a0, a.root);
   if (ra && rb) m.add_sqrt_rational(a.a1 * b.a1, a.root == b.root ? Rational(a.root * a.root) : Rational(a.root * b.root));
@@ -575,8 +665,9 @@ Measure Measure::product(const OneRoot& a, const OneRoot& b) {
 
 Measure Measure::multiply_algebraic(const Measure& a, const Measure& b) {
   Measure m;
-  for (const auto& [k1, c1] : a.algebraic_) {
-    for (const auto& [k2, c2] : b.algebraic_) {
+  for (const auto& [k1, t1] : a.algebraic_) {
+    for (const auto& [k2, t2] : b.algebraic_) {
+      const Rational &c1 = t1.c, &c2 = t2.c;
       // sqrt(k1 k2) = g*sqrt((k1/g)(k2/g)), g = gcd(k1, k2)
       Integer g;
       mpz_gcd(g.get_mpz_t(), k1.get_mpz_t(), k2.get_mpz_t());
@@ -612,8 +703,8 @@ Measure Measure::distance(const OneRootPoint& p, const OneRootPoint& q) {
     // sqrt(A + B sqrt(c)) = sqrt((A + s)/2) + sign(B)*sqrt((A - s)/2).
     const auto last = std::prev(d2.algebraic_.end());
     const Integer c = last->first;
-    const Rational B = last->second;
-    const Rational A = d2.algebraic_.size() == 2 ? d2.algebraic_.begin()->second : Rational(0);
+    const Rational B = last->second.c;
+    const Rational A = d2.algebraic_.size() == 2 ? d2.algebraic_.begin()->second.c : Rational(0);
     const Rational disc = A * A - B * B * c;
     if (sgn(disc) >= 0 && is_square(disc.get_num()) && is_square(disc.get_den())) {
       const Rational s = make_rational(isqrt(disc.get_num()), isqrt(disc.get_den()));
@@ -675,7 +766,7 @@ bool Measure::is_algebraic() const {
 std::optional<Rational> Measure::rational_value() const {
   if (!special_.empty()) return std::nullopt;
   if (algebraic_.empty()) return Rational(0);
-  if (algebraic_.size() == 1 && algebraic_.begin()->first == 1) return algebraic_.begin()->second;
+  if (algebraic_.size() == 1 && algebraic_.begin()->first == 1) return algebraic_.begin()->second.c;
   return std::nullopt;
 }
 
@@ -688,7 +779,8 @@ Interval Measure::enclose(mpfr_prec_t bits) const {
   mpfr_inits2(p, lo, hi, s_lo, s_hi, static_cast<mpfr_ptr>(nullptr));
   mpfr_set_zero(lo, 1);
   mpfr_set_zero(hi, 1);
-  for (const auto& [k, c] : algebraic_) {
+  for (const auto& [k, t] : algebraic_) {
+    const Rational& c = t.c;
     if (k == 1) {
       mpfr_set_q(s_lo, c.get_mpq_t(), MPFR_RNDD);
       mpfr_set_q(s_hi, c.get_mpq_t(), MPFR_RNDU);
@@ -731,7 +823,8 @@ std::optional<std::string> Measure::exact_string() const {
     append_term(out, q, pi_term()->key(), first);
     first = false;
   }
-  for (const auto& [k, c] : algebraic_) {
+  for (const auto& [k, t] : algebraic_) {
+    const Rational& c = t.c;
     append_term(out, c, k == 1 ? std::string() : "sqrt(" + k.get_str(10) + ")", first);
     first = false;
   }
@@ -769,7 +862,8 @@ std::optional<DoubleBounds> Measure::double_bounds() const {
   // unprotected intervals inside one Protect_FPU_rounding block (one mode switch instead of one per operation).
   std::vector<std::pair<IntervalNT, IntervalNT>> terms;  // (c, k), k = 1 for the rational part
   terms.reserve(algebraic_.size() + special_.size());
-  for (const auto& [k, c] : algebraic_) {
+  for (const auto& [k, t] : algebraic_) {
+    const Rational& c = t.c;
     const long e = static_cast<long>(mpz_sizeinbase(c.get_num_mpz_t(), 2)) -
                    static_cast<long>(mpz_sizeinbase(c.get_den_mpz_t(), 2));
     if (e > 400 || e < -400) return std::nullopt;
@@ -785,7 +879,8 @@ std::optional<DoubleBounds> Measure::double_bounds() const {
   const CGAL::Protect_FPU_rounding<true> upward;  // restores the caller's mode on leaving the scope
   Fast sum(0);
   std::size_t i = 0;
-  for (const auto& [k, c] : algebraic_) {
+  for (const auto& entry : algebraic_) {
+    const Integer& k = entry.first;
     const auto& [ci, ki] = terms[i++];
     const Fast cf(ci.inf(), ci.sup());
     sum += k == 1 ? cf : cf * CGAL::sqrt(Fast(ki.inf(), ki.sup()));
@@ -805,16 +900,17 @@ int Measure::algebraic_sign(mpfr_prec_t start_bits) const {
   const std::size_t n = algebraic_.size();
   if (n == 0) return 0;
   auto it = algebraic_.begin();
-  if (n == 1) return sgn(it->second);
+  if (n == 1) return sgn(it->second.c);
   const bool has_rational = it->first == 1;
   if (n == 2) {
     const auto second = std::next(it);
-    if (has_rational) return OneRoot(it->second, second->second, Rational(second->first)).sign();
-    return compare(OneRoot(0, it->second, Rational(it->first)), OneRoot(0, -second->second, Rational(second->first)));
+    if (has_rational) return OneRoot(it->second.c, second->second.c, Rational(second->first)).sign();
+    return compare(OneRoot(0, it->second.c, Rational(it->first)),
+                   OneRoot(0, -second->second.c, Rational(second->first)));
   }
   if (n == 3 && has_rational) {
     const auto b = std::next(it), c = std::next(b);
-    return compare(OneRoot(it->second, b->second, Rational(b->first)), OneRoot(0, -c->second, Rational(c->first)));
+    return compare(OneRoot(it->second.c, b->second.c, Rational(b->first)), OneRoot(0, -c->second.c, Rational(c->first)));
   }
   if (const auto bounds = double_bounds()) {
     if (const int s = bounds->certain_sign()) return s;

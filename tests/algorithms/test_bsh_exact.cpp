@@ -189,7 +189,7 @@ TEST_CASE("exact: limits stop it with the incumbent and a proven lower bound, ne
     const EnergyBound& lb = r.stats.lower_bound;
     CHECK(lb.missing_samples <= full.energy.missing_samples);
     if (lb.missing_samples == full.energy.missing_samples)
-      CHECK(lb.measure <= full.energy.measure.enclose(64).hi_double());
+      CHECK(lb.measure <= full.energy.measure().enclose(64).hi_double());
   };
   ExtractOptions o;
   o.method = Method::Exact;

@@ -405,7 +405,7 @@ TEST_CASE("bsh property 3: cut cost = labelling energy (Eqs. 2-4); straight scen
     Energy cost;
     RC_ASSERT(cut_cost(problem, {}, l, &cost));
     RC_ASSERT(cost.missing_samples == energy(problem, l).missing_samples);
-    RC_ASSERT(compare(cost.measure, energy(problem, l).measure) == Order::Equal);
+    RC_ASSERT(compare(cost.measure(), energy(problem, l).measure()) == Order::Equal);
     // An arbitrary labelling costs infinity exactly when it breaks orientation preservation.
     const Labelling any = random_labelling(problem.cell_count());
     const bool finite = cut_cost(problem, {}, any, &cost);
@@ -423,6 +423,35 @@ TEST_CASE("bsh property 3: cut cost = labelling energy (Eqs. 2-4); straight scen
       const CutResult cut = graph_cut(problem, k);
       RC_ASSERT(compare(cut.energy, energy(problem, l)) != Order::Greater);
     }
+  });
+}
+
+TEST_CASE("bsh property 3b: energies compared by their supports agree with their exact sums",
+          "[bsh][property][energy]") {
+  rc::prop("compare(energy(L1), energy(L2)) == compare of the summed measures; measure() is the sum", [] {
+    const Scene2 scene = *gen_scene(small_scenes());
+    const Complex complex = complex_of(scene);
+    const Problem problem(complex);
+    const Labelling l1 = random_op_labelling(problem);
+    const Labelling l2 = *rc::gen::inRange(0, 4) == 0 ? l1 : random_op_labelling(problem);
+    const Energy e1 = energy(problem, l1), e2 = energy(problem, l2);
+    // The eager sum, formed independently of Energy: the measures of the boundary's supports.
+    const auto sum = [&](const Labelling& l) {
+      Measure m;
+      for (int g : boundary_supports(problem, l)) m += problem.supports()[g].measure;
+      return Energy(energy(problem, l).missing_samples, m);
+    };
+    const Energy s1 = sum(l1), s2 = sum(l2);
+    RC_ASSERT((e1.measure() - s1.measure()).is_zero());
+    const Order lazy = compare(e1, e2), eager = compare(s1, s2);
+    if (lazy != Order::Tie && eager != Order::Tie) RC_ASSERT(lazy == eager);
+    if (l1 == l2) RC_ASSERT(lazy == Order::Equal);
+    // Energies outlive their problem: the supports' measures are shared.
+    const Energy kept = [&] {
+      const Problem other(complex);
+      return energy(other, l1);
+    }();
+    RC_ASSERT((kept.measure() - s1.measure()).is_zero());
   });
 }
 
@@ -572,7 +601,7 @@ TEST_CASE("bsh property 7: permuting halfspaces or translating by an integer vec
       const Problem p1(c1);
       const ExtractResult r1 = best_first(p1);
       RC_ASSERT(r1.energy.missing_samples == r0.energy.missing_samples);
-      const Order e = compare(r1.energy.measure, r0.energy.measure);
+      const Order e = compare(r1.energy.measure(), r0.energy.measure());
       RC_ASSERT(e != Order::Less);
       RC_ASSERT(e != Order::Greater);
       if (e == Order::Tie) {

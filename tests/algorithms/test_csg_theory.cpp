@@ -897,8 +897,8 @@ bool greedy_diagnosis(const Complex& c, const bsh::Labelling& target, bsh::Metho
     for (int p : samples) out << " " << p << "(" << c.halfspace_names[c.patches[p].halfspace] << ")";
     out << "; target admissible " << bsh::is_orientation_preserving(sp, target) << ", target energy "
               << bsh::energy(sp, target).missing_samples << " missing / "
-              << bsh::energy(sp, target).measure.decimal_string(6) << "; found " << found.energy.missing_samples
-              << " missing / " << found.energy.measure.decimal_string(6) << "\n";
+              << bsh::energy(sp, target).measure().decimal_string(6) << "; found " << found.energy.missing_samples
+              << " missing / " << found.energy.measure().decimal_string(6) << "\n";
     if (found.labelling == target) return true;
     std::vector<char> on_found(problem.support_count(), 0);
     for (int g : bsh::boundary_supports(problem, found.labelling)) on_found[g] = 1;

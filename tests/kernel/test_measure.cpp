@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -228,6 +230,51 @@ TEST_CASE("square factors of large primes are found whatever the order", "[measu
     RC_ASSERT(compare(whole + noise, noise + parts) == Order::Equal);
     // and the square-free form is what gets printed once both spellings were seen, in either order
     RC_ASSERT(*(whole + parts).exact_string() == *(parts * Rational(2)).exact_string());
+  });
+}
+
+TEST_CASE("square classes are found among many unproven radicands", "[measure][property]") {
+  // Sums of more than a few dozen terms whose radicands are not proven square-free (3D triangle areas) find a
+  // radicand's class partner through an index of quadratic characters modulo primes above 2^16 (measure.cpp);
+  // 65537 and 65539 are such primes, so some radicands here are divisible by one ("unclean").
+  static const long primes[] = {1009, 1013, 65537, 65539, 1000003, 1000033, 998244353, 1000000007};
+  rc::prop("sum of c_i sqrt(m_i^2 r_i) == sum over classes r of (sum c_i m_i) sqrt(r), in any order", [] {
+    const int n = *rc::gen::inRange(30, 90);
+    std::vector<std::pair<Rational, Integer>> terms;  // (coefficient, radicand)
+    std::map<Integer, Rational> expected;            // square-free part -> coefficient
+    for (int i = 0; i < n; ++i) {
+      const int a = *rc::gen::inRange(0, 8), b = *rc::gen::inRange(0, 8), m = *rc::gen::inRange(-1, 8);
+      const Integer r = a == b ? Integer(primes[a]) : Integer(primes[a]) * primes[b];
+      const Integer mult = m < 0 ? Integer(1) : Integer(primes[m]);
+      const Rational c = R(*rc::gen::inRange(-3, 4), *rc::gen::inRange(1, 4));
+      terms.emplace_back(c, mult * mult * r);
+      expected[r] += c * mult;
+    }
+    Measure forward, shuffled;
+    for (const auto& [c, k] : terms) forward += Measure::sqrt_of(Rational(k)) * c;
+    const auto order = *rc::gen::apply(
+        [](std::vector<std::pair<Rational, Integer>> v, unsigned seed) {
+          std::mt19937 g(seed);
+          std::shuffle(v.begin(), v.end(), g);
+          return v;
+        },
+        rc::gen::just(terms), rc::gen::arbitrary<unsigned>());
+    for (const auto& [c, k] : order) shuffled += Measure::sqrt_of(Rational(k)) * c;
+    Measure reference;
+    long classes = 0;
+    for (const auto& [r, c] : expected) {
+      if (sgn(c) == 0) continue;
+      ++classes;
+      reference += Measure::sqrt_of(Rational(r)) * c;
+    }
+    RC_ASSERT((forward - reference).is_zero());
+    RC_ASSERT((shuffled - forward).is_zero());
+    const std::string text = *forward.exact_string();
+    RC_ASSERT(static_cast<long>(std::count(text.begin(), text.end(), 'q')) == classes);  // one "sqrt" per class
+    // and removing the terms again, in the other order, leaves an exact zero
+    Measure rest = forward;
+    for (const auto& [c, k] : order) rest -= Measure::sqrt_of(Rational(k)) * c;
+    RC_ASSERT(rest.is_zero());
   });
 }
 

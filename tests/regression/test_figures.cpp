@@ -146,7 +146,7 @@ void check_method(const Arranged2& arranged, const bsh::Problem& problem, const 
 
   CHECK(result.stopped_by.empty());
   CHECK(result.energy.missing_samples == want.at("missing_samples").get<long>());
-  check_measure(result.energy.measure, want.at("measure"), "energy.measure");
+  check_measure(result.energy.measure(), want.at("measure"), "energy.measure()");
   CHECK(result.ties.count == want.at("ties").get<int>());
   CHECK(result.ties.certified == want.value("ties_certified", true));
   CHECK(result.sample_connected == want.at("sample_connected").get<bool>());
@@ -168,7 +168,7 @@ void check_method(const Arranged2& arranged, const bsh::Problem& problem, const 
     // The labelling's own energy agrees with the reported one (all shapes of a method have equal energies).
     const bsh::Energy e = bsh::energy(problem, labelling);
     CHECK(e.missing_samples == result.energy.missing_samples);
-    CHECK(compare(e.measure, result.energy.measure) == Order::Equal);
+    CHECK(compare(e.measure(), result.energy.measure()) == Order::Equal);
     CHECK(bsh::is_orientation_preserving(problem, labelling));
   }
 
@@ -183,7 +183,7 @@ void check_method(const Arranged2& arranged, const bsh::Problem& problem, const 
     bsh::Energy cost;
     REQUIRE(bsh::cut_cost(problem, {}, result.labelling, &cost));
     CHECK(cost.missing_samples == want.at("cut_cost").at("missing_samples").get<long>());
-    check_measure(cost.measure, want.at("cut_cost").at("measure"), "cut cost");
+    check_measure(cost.measure(), want.at("cut_cost").at("measure"), "cut cost");
   }
 }
 
@@ -244,7 +244,7 @@ TEST_CASE("figures: asserted outcomes", "[figures]") {
           if (!op) continue;
           const bsh::Energy e = bsh::energy(problem, labelling);
           CHECK(e.missing_samples == candidate.at("missing_samples").get<long>());
-          check_measure(e.measure, candidate.at("measure"), "candidate measure");
+          check_measure(e.measure(), candidate.at("measure"), "candidate measure");
           CHECK(bsh::sample_connectivity(problem, labelling).sample_connected() ==
                 candidate.at("sample_connected").get<bool>());
           if (candidate.value("worse_than_result", false)) CHECK(bsh::compare(e, reference.energy) == Order::Greater);

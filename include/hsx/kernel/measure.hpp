@@ -22,6 +22,7 @@
 #include <hsx/kernel/one_root.hpp>
 #include <hsx/kernel/rational.hpp>
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -145,8 +146,21 @@ class Measure {
   std::optional<DoubleBounds> double_bounds() const;
 
  private:
+  /// Quadratic characters of a radicand k modulo 64 fixed primes q (measure.cpp): bit i of `residues` is set
+  /// when k is a non-zero square mod q_i, of `divides` when q_i divides k. If k*j is a perfect square then
+  /// (k|q)(j|q) = 1 for every q dividing neither, so the residues agree wherever neither divides: a necessary
+  /// condition for "same square class", checked before the exact perfect-square test.
+  struct ClassPrint {
+    std::uint64_t residues = 0, divides = 0;
+    bool known = false;
+    bool compatible(const ClassPrint& o) const { return ((residues ^ o.residues) & ~(divides | o.divides)) == 0; }
+  };
+  struct Term {
+    Rational c;
+    ClassPrint print;  ///< computed when the measure is indexed (see below); radicand 1 has none
+  };
   // radicand (positive integer, no two with a perfect-square product) -> coefficient; radicand 1 = rational part
-  std::map<Integer, Rational> algebraic_;
+  std::map<Integer, Term> algebraic_;
   struct Special {
     std::shared_ptr<const SpecialTerm> term;
     Rational coefficient;
@@ -155,11 +169,24 @@ class Measure {
   // Radicands of algebraic_ not proven square-free; only these need the perfect-square-product scan when a
   // proven square-free radicand is added (see measure.cpp). Usually empty.
   std::set<Integer> unsure_;
+  // Square-class index, built once a measure holds an unproven radicand among many terms (3D areas: thousands
+  // of triangles with large radicands): every radicand other than 1 is in `classes_` under its residues, or in
+  // `unclean_` when a fingerprint prime divides it. Finding a radicand's class partner is then a lookup.
+  bool indexed_ = false;
+  std::multimap<std::uint64_t, Integer> classes_;
+  std::set<Integer> unclean_;
 
+  static ClassPrint class_print(const Integer& radicand);
+  void build_index();
+  void index_insert(const Integer& radicand, const ClassPrint& print);
+  void index_erase(const Integer& radicand, const ClassPrint& print);
+  void erase_term(std::map<Integer, Term>::iterator it);
+  const Integer* class_partner(const Integer& radicand, bool squarefree, ClassPrint* print);
   void add_sqrt_term(const Rational& coefficient, const Integer& radicand);
   void add_sqrt_rational(const Rational& coefficient, const Rational& q);  // coefficient*sqrt(q), q >= 0
   // radicand: positive, no square factor of a prime below 1000, not a square unless 1; squarefree: proven so.
-  void insert_reduced(const Rational& coefficient, const Integer& radicand, bool squarefree);
+  // print: the radicand's class print when the caller has it (another measure's term), else unknown.
+  void insert_reduced(const Rational& coefficient, const Integer& radicand, bool squarefree, ClassPrint print);
   void add_measure(const Measure& other, bool negate);
   void add_special(const std::shared_ptr<const SpecialTerm>& term, const Rational& coefficient);
   static Measure multiply_algebraic(const Measure& a, const Measure& b);  // special terms are ignored

@@ -29,7 +29,7 @@ std::string patch_name(const Complex& c, int p) {
 }
 
 std::string energy_text(const Energy& e) {
-  return std::to_string(e.missing_samples) + " missing / " + e.measure.decimal_string(15);
+  return std::to_string(e.missing_samples) + " missing / " + e.measure().decimal_string(15);
 }
 
 std::string cells_text(const Labelling& l) {

@@ -579,7 +579,7 @@ class ExactSearch {
   void set_incumbent(const Labelling& labelling, const std::optional<Energy>& e) {
     incumbent_ = labelling;
     incumbent_energy_ = e ? *e : energy(problem_, labelling);
-    const Interval enclosure = incumbent_energy_.measure.enclose(64);
+    const Interval enclosure = incumbent_energy_.measure().enclose(64);
     incumbent_lo_ = enclosure.lo_double();
     incumbent_hi_ = enclosure.hi_double();
     optimal_ = {labelling};

@@ -23,7 +23,7 @@ Grade grade(const Problem& problem, const Labelling& labelling, const ExtractOpt
   g.optimum = extract(problem, oracle);
   g.versus_optimum = compare(g.energy, g.optimum.energy, oracle.compare);
   g.missing_samples_gap = g.energy.missing_samples - g.optimum.energy.missing_samples;
-  g.measure_gap = g.energy.measure - g.optimum.energy.measure;
+  g.measure_gap = g.energy.measure() - g.optimum.energy.measure();
   return g;
 }
 

@@ -347,8 +347,7 @@ bool cut_cost(const Problem& problem, const CutConstraints& constraints, const L
   for (const auto& [pair, w] : t.binary)
     if (labelling[pair.first] && !labelling[pair.second]) total = total + w;
   if (total.infinite) return false;
-  cost->missing_samples = total.samples;
-  cost->measure = total.measure();
+  *cost = Energy(total.samples, total.measure());
   return true;
 }
 

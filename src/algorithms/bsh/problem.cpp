@@ -4,19 +4,85 @@
 
 #include <algorithm>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <set>
-#include <map>
 
 namespace hsx::bsh {
+
+struct Energy::Value {
+  std::shared_ptr<const Problem::SupportAtoms> atoms;  // null: `sum` is given
+  std::vector<int> supports;                           // ascending, indices into atoms
+  mutable std::once_flag once;
+  mutable Measure sum;
+};
+
+Energy::Energy(long missing, Measure measure) : missing_samples(missing) {
+  if (measure.is_zero()) return;
+  auto v = std::make_shared<Value>();
+  v->sum = std::move(measure);
+  value_ = std::move(v);
+}
+
+const Measure& Energy::measure() const {
+  static const Measure zero;
+  if (!value_) return zero;
+  if (value_->atoms)
+    std::call_once(value_->once, [v = value_.get()] {
+      for (int g : v->supports) v->sum += v->atoms->measures[g];
+    });
+  return value_->sum;
+}
+
+namespace {
+
+/// Sign of |a| - |b| for two support lists of one problem: the supports in only one of them, enclosed by the
+/// kernel's certified double combination, then summed exactly when that does not decide. nullopt: not separated.
+std::optional<int> support_difference_sign(const Problem::SupportAtoms& atoms, const std::vector<int>& a,
+                                           const std::vector<int>& b, const CompareOptions& options) {
+  std::vector<std::pair<int, long>> diff;
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    if (j == b.size() || (i < a.size() && a[i] < b[j])) {
+      diff.emplace_back(a[i++], 1);
+    } else if (i == a.size() || b[j] < a[i]) {
+      diff.emplace_back(b[j++], -1);
+    } else {
+      ++i;
+      ++j;
+    }
+  }
+  if (diff.empty()) return 0;
+  DoubleCombination bounds;
+  for (const auto& [g, k] : diff) bounds.add(k, DoubleBounds{atoms.enclosures[g].first, atoms.enclosures[g].second});
+  if (const int s = bounds.bounds().certain_sign()) return s;
+  Measure d;
+  for (const auto& [g, k] : diff) {
+    if (k > 0) {
+      d += atoms.measures[g];
+    } else {
+      d -= atoms.measures[g];
+    }
+  }
+  return d.sign(options);
+}
+
+}  // namespace
 
 Order compare(const Energy& a, const Energy& b, const CompareOptions& options) {
   if (a.missing_samples != b.missing_samples)
     return a.missing_samples < b.missing_samples ? Order::Less : Order::Greater;
-  return hsx::compare(a.measure, b.measure, options);
+  if (a.value_ && b.value_ && a.value_->atoms && a.value_->atoms == b.value_->atoms) {
+    const std::optional<int> s = support_difference_sign(*a.value_->atoms, a.value_->supports, b.value_->supports, options);
+    if (!s) return Order::Tie;
+    return *s < 0 ? Order::Less : (*s > 0 ? Order::Greater : Order::Equal);
+  }
+  return hsx::compare(a.measure(), b.measure(), options);
 }
 
 Problem::Problem(const Complex& complex) : complex_(complex) {
   supports_.resize(complex.supports.size());
+  auto atoms = std::make_shared<SupportAtoms>();
   for (std::size_t g = 0; g < complex.supports.size(); ++g) {
     SupportTerm& term = supports_[g];
     term.patches = complex.supports[g];
@@ -35,9 +101,11 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
     if (sampled_a) term.allow_b_inside = false;
     term.measure = first.measure;
     const Interval enclosure = term.measure.enclose(64);
-    support_enclosures_.emplace_back(enclosure.lo_double(), enclosure.hi_double());
+    atoms->measures.push_back(term.measure);
+    atoms->enclosures.emplace_back(enclosure.lo_double(), enclosure.hi_double());
     total_samples_ += term.samples;
   }
+  atoms_ = std::move(atoms);
   support_neighbours_.resize(supports_.size());
   for (const Junction& j : complex.junctions) {
     std::vector<int> groups;
@@ -118,14 +186,16 @@ bool is_orientation_preserving(const Problem& problem, const Labelling& labellin
 Energy energy(const Problem& problem, const Labelling& labelling) {
   Energy e;
   e.missing_samples = problem.total_samples();
-  for (int g : boundary_supports(problem, labelling)) {
-    const SupportTerm& s = problem.supports()[g];
-    e.measure += s.measure;
-    for (int p : s.patches) {
+  auto value = std::make_shared<Energy::Value>();
+  value->atoms = problem.support_atoms();
+  value->supports = boundary_supports(problem, labelling);
+  for (int g : value->supports) {
+    for (int p : problem.supports()[g].patches) {
       const Patch& patch = problem.complex().patches[p];
       if (labelling[patch.inside_cell]) e.missing_samples -= static_cast<long>(patch.samples.size());
     }
   }
+  if (!value->supports.empty()) e.value_ = std::move(value);
   return e;
 }
 

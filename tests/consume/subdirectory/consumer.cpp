@@ -9,6 +9,6 @@ int main(int argc, char** argv) {
   const hsx::LoadedInput in = hsx::load_input(argv[1]);
   const hsx::bsh::ExtractResult shape = hsx::extract_shape(in.complex());
   std::cout << in.complex().cells.size() << " cells; energy " << shape.energy.missing_samples << " missing, "
-            << shape.energy.measure.decimal_string(12) << "\n";
+            << shape.energy.measure().decimal_string(12) << "\n";
   return 0;
 }

@@ -324,6 +324,7 @@ void check_scene(const Expectation& e) {
   const bsh::ExtractResult r = bsh::extract(problem, options);
   CHECK(r.energy.missing_samples == 0);
   CHECK(r.sample_connected);
+  CHECK(r.optimal);  // every label is forced by the samples: the first state is the optimum, proven
   Rational shape_volume;
   for (std::size_t c = 0; c < cx.cells.size(); ++c) {
     const bool expected = !cx.cells[c].outer && e.shape(Sides{scene, cx.cells[c].inside});

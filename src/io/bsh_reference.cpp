@@ -125,8 +125,7 @@ class GridReader {
   int read_id(std::string_view token, std::size_t line, const std::string& section, long long lo,
               std::size_t bound) const {
     long long v = 0;
-    if (!parse_count(token, v) && !(token.size() > 1 && token[0] == '-' && parse_count(token.substr(1), v) &&
-                                    (v = -v, true)))
+    if (!parse_count(token, v))  // from_chars takes a leading '-'
       g_.fail(line, section, "\"" + std::string(token.substr(0, 40)) + "\" is not an integer");
     if (v < lo || v >= static_cast<long long>(bound))
       g_.fail(line, section, std::to_string(v) + " is out of range [" + std::to_string(lo) + ", " +

@@ -20,13 +20,19 @@
 // Comparison (conventions owned here):
 // - An interior point of each of their blocks is found and proven exactly, on their mesh as read: seeds are blocks
 //   whose patch faces form a closed surface (every edge used an even number of times): a point p near a face of
-//   such a block is inside it iff a segment from p to a point outside all their vertices crosses its faces an odd
-//   number of times. From a block A with a proven point a, the neighbour B across a patch P is reached by a point
+//   such a block is enclosed by its faces iff a segment from p to a point outside all their vertices crosses them
+//   an odd number of times; the block is the enclosed side unless the other patches are enclosed too (then it is
+//   the outside, reaching their box; with no other patch, the lower-numbered of the two blocks is the outside, as
+//   their code numbers them). From a block A with a proven point a, the neighbour B across a patch P is reached by a point
 //   pair p+/p- at either side of a face f of P (f's centroid +- a small step along its normal) whose segment meets
 //   no face of the mesh but f, at an interior point: one of p+/p- is in A (decided by the parity of the crossings
 //   of segment a-p with A's faces; both points lie in their convex bounding box, which no segment leaves), the
 //   other in B. Every decision is an exact rational test; a segment through an edge, a vertex or a face's plane
 //   is rejected and another face or step is tried. A block none of whose candidates passes has no point (reported).
+//   Each point is then moved deeper: half way from a face's centroid to the first face of the block met along the
+//   normal (the deepest over the block's largest patches), kept only when the segment from the first point to it
+//   crosses the block's faces an even number of times. Depth matters because our tessellation of a primitive
+//   need not be theirs (docs/bsh-3d.md: their spheres have more rings).
 // - Each point is located in hsx's arrangement (Arrangement3::locate). Their block labels become a labelling of
 //   our cells: a cell is in their solid when the blocks mapped onto it are; cells with none are unmapped, cells
 //   with blocks of both labels are conflicts.

@@ -322,10 +322,12 @@ int run_samples(const SamplesOptions& o) {
   if (!r.reproduced) j["failure"] = r.failure;
   std::string scene_text;
   if (!o.out_path.empty()) {
-    if (!in.scene) throw InputError("--out: needs a scene input");
-    scene_text = write_scene2(bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches,
-                                                 "samples from GENERATE-SAMPLES (" + o.search + ")"))
-                     .dump(2) + "\n";
+    if (!in.scene && !in.scene3) throw InputError("--out: needs a scene input");
+    const std::string description = "samples from GENERATE-SAMPLES (" + o.search + ")";
+    const nlohmann::json scene =
+        in.scene ? write_scene2(bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches, description))
+                 : write_scene3(bsh::scene_with_samples(*in.scene3, *in.arranged3, r.sample_patches, description));
+    scene_text = scene.dump(2) + "\n";
   }
   out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.out_path, scene_text);

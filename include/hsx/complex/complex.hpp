@@ -105,7 +105,8 @@ struct Complex {
 /// Every structural invariant of a complex, checked exactly. Returns human-readable violations (empty: valid):
 /// indices in range, each patch's cells distinct and on the right sides of its halfspace, the two cells of a
 /// patch differ exactly in the halfspaces of its support group, support groups share cells, junction lists and
-/// patch junction lists agree, samples sit on patches of their own halfspace.
+/// patch junction lists agree, junction sheets name listed patches, corners' spokes and wedges are in range,
+/// samples sit on patches of their own halfspace.
 std::vector<std::string> check_complex(const Complex& complex);
 
 }  // namespace hsx

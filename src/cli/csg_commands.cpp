@@ -322,10 +322,12 @@ int run_samples(const SamplesOptions& o) {
   if (!r.reproduced) j["failure"] = r.failure;
   std::string scene_text;
   if (!o.out_path.empty()) {
-    if (!in.scene) throw InputError("--out: needs a scene input");
-    scene_text = write_scene2(bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches,
-                                                 "samples from GENERATE-SAMPLES (" + o.search + ")"))
-                     .dump(2) + "\n";
+    if (!in.scene && !in.scene3) throw InputError("--out: needs a scene input");
+    const std::string description = "samples from GENERATE-SAMPLES (" + o.search + ")";
+    const nlohmann::json scene =
+        in.scene ? write_scene2(bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches, description))
+                 : write_scene3(bsh::scene_with_samples(*in.scene3, *in.arranged3, r.sample_patches, description));
+    scene_text = scene.dump(2) + "\n";
   }
   out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.out_path, scene_text);
@@ -499,14 +501,16 @@ void add_csg_commands(CLI::App& app) {
     auto o = std::make_shared<SamplesOptions>();
     CLI::App* cmd = app.add_subcommand("samples", "GENERATE-SAMPLES (BSH Fig. 12): samples that reproduce a target "
                                                   "shape; counts against the lower and upper bounds");
-    cmd->add_option("SCENE", o->input, "hsx-scene/1 file")->required();
+    cmd->add_option("SCENE", o->input, "hsx-scene/1 file (2D or 3D) or the BSH authors' config.json")->required();
     cmd->add_option("--target", o->target, "the target shape as an hsx-result/1 file");
     cmd->add_option("--csg", o->csg, "or the target as a CSG expression");
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
     cmd->add_option("--exhaustive-patches", o->exhaustive_patches,
                     "compute the true minimum when the boundary has at most this many patches (default 14)")
         ->check(CLI::NonNegativeNumber);
-    cmd->add_option("--out", o->out_path, "write the scene with the generated samples")
+    cmd->add_option("--out", o->out_path,
+                    "write the scene with the generated samples (2D: inside a patch edge; 3D: at the centroid of the "
+                    "patch's largest triangle)")
         ->check(output_path());
     cmd->add_option("--json", o->json_path, "write counts as JSON")
         ->check(output_path());

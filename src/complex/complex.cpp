@@ -109,6 +109,19 @@ std::vector<std::string> check_complex(const Complex& c) {
       if (std::find(ends.begin(), ends.end(), j) == ends.end())
         say("junction " + std::to_string(j) + ": lists patch " + std::to_string(p) + " that does not end there");
     }
+  for (int j = 0; j < static_cast<int>(c.junctions.size()); ++j)
+    for (int p : c.junctions[j].sheets)
+      if (!std::binary_search(c.junctions[j].patches.begin(), c.junctions[j].patches.end(), p))
+        say("junction " + std::to_string(j) + ": a sheet names patch " + std::to_string(p) + " that it does not list");
+  for (int k = 0; k < static_cast<int>(c.corners.size()); ++k) {
+    const Corner& corner = c.corners[k];
+    const int spokes = static_cast<int>(corner.spokes.size());
+    for (int j : corner.spokes)
+      if (j < 0 || j >= static_cast<int>(c.junctions.size())) say("corner " + std::to_string(k) + ": junction out of range");
+    for (const Corner::Wedge& w : corner.wedges)
+      if (w.patch < 0 || w.patch >= n_patches || (w.from < 0) != (w.to < 0) || w.from >= spokes || w.to >= spokes)
+        say("corner " + std::to_string(k) + ": a wedge out of range");
+  }
   for (int s = 0; s < static_cast<int>(c.samples.size()); ++s) {
     const SampleSite& site = c.samples[s];
     if (site.patch < 0 || site.patch >= n_patches) { say("sample " + std::to_string(s) + ": patch out of range"); continue; }

@@ -1,8 +1,7 @@
 // Every kept counterexample (data/counterexamples) must still be detected by `hsx check`'s checkers, and hsx must
 // never claim a wrong optimum on it.
 #include <hsx/algorithms/bsh/checks.hpp>
-#include <hsx/complex/from_arrangement2.hpp>
-#include <hsx/io/scene_json.hpp>
+#include <hsx/io/input.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -18,13 +17,13 @@ TEST_CASE("counterexamples: each is detected, and best-first never claims a wron
     if (entry.path().extension() != ".json") continue;
     ++files;
     INFO(entry.path().filename().string());
-    const Scene2 scene = read_scene_file(entry.path().string());
-    const Arranged2 arranged = arrange(scene);
-    const auto results = bsh::check_all(arranged.complex);
+    const LoadedInput in = load_input(entry.path().string());  // 2D or 3D
+    const Complex& complex = in.complex();
+    const auto results = bsh::check_all(complex);
     const bool detected = std::any_of(results.begin(), results.end(),
                                       [](const bsh::CheckResult& r) { return r.status == bsh::CheckResult::Fail; });
     CHECK(detected);
-    const bsh::Problem problem(arranged.complex);
+    const bsh::Problem problem(complex);
     bsh::ExtractOptions options;
     options.method = bsh::Method::BestFirst;
     const bsh::ExtractResult r = bsh::extract(problem, options);

@@ -20,6 +20,13 @@
 // - Junctions are where patches meet: vertices in 2D, edges in 3D (chains of arrangement edges). Two patches are adjacent iff they share a
 //   junction; a closed patch with no junction (a lone circle) has no neighbours.
 // - Samples sit on patches of their own halfspace.
+// - Local structure for the manifold check (Section 3.1; both empty when not known, e.g. a complex read from JSON):
+//   Junction::sheets lists, once per side, the patch sheets meeting along the junction (3D: one entry per patch
+//   triangle along one edge of the chain, naming the lowest patch of its support group; a patch on both sides of
+//   a junction, around a slit, appears twice). Corners are the points where junctions end or patches touch
+//   (3D: arrangement vertices; 2D: none, a 2D junction is a point and its sheets are its patch ends): each lists
+//   its spokes (one per junction end at the corner: a junction running through it gives two) and its wedges (one
+//   per fan of one patch's triangles around the corner, from spoke to spoke, or a whole disc).
 #pragma once
 
 #include <hsx/kernel/measure.hpp>
@@ -50,6 +57,22 @@ struct Patch {
 struct Junction {
   std::vector<int> patches;       ///< patches that end here, ascending
   int piece = -1;                 ///< geometry piece (2D: arrangement vertex), -1 when not known
+  /// Patch sheets along the junction, one per side (see the conventions; 3D only, empty when not known). Every
+  /// edge of the chain has the same sheets (the builder splits chains where they change).
+  std::vector<int> sheets;
+};
+
+/// A point where junctions end or patches touch (3D: an arrangement vertex; see the conventions).
+struct Corner {
+  /// One fan of a patch's triangles around the corner: between spokes `from` and `to` (indices into `spokes`;
+  /// equal around a slit), or a whole disc around the corner when both are -1.
+  struct Wedge {
+    int patch = -1;               ///< the lowest patch of the fan's support group
+    int from = -1, to = -1;
+  };
+  int piece = -1;                 ///< geometry piece (3D: arrangement vertex)
+  std::vector<int> spokes;        ///< the junction of each spoke
+  std::vector<Wedge> wedges;
 };
 
 struct SampleSite {
@@ -65,6 +88,9 @@ struct Complex {
   std::vector<std::vector<int>> supports;  ///< groups of coincident patches; every patch in exactly one group
   std::vector<Junction> junctions;
   std::vector<SampleSite> samples;
+  /// Corners whose link the junctions' sheets do not settle (3D, see complex/from_arrangement3.hpp; empty in 2D
+  /// and when not known).
+  std::vector<Corner> corners;
 
   int halfspace_count() const { return static_cast<int>(halfspace_names.size()); }
   int outer_cell_count() const;
@@ -79,7 +105,8 @@ struct Complex {
 /// Every structural invariant of a complex, checked exactly. Returns human-readable violations (empty: valid):
 /// indices in range, each patch's cells distinct and on the right sides of its halfspace, the two cells of a
 /// patch differ exactly in the halfspaces of its support group, support groups share cells, junction lists and
-/// patch junction lists agree, samples sit on patches of their own halfspace.
+/// patch junction lists agree, junction sheets name listed patches, corners' spokes and wedges are in range,
+/// samples sit on patches of their own halfspace.
 std::vector<std::string> check_complex(const Complex& complex);
 
 }  // namespace hsx

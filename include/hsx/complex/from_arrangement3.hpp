@@ -21,8 +21,12 @@ struct Arranged3 {
 /// the arrangement's cells, in the same order. Cell::measure is the volume (zero when volumes were not computed),
 /// Patch::measure the exact area (the sum of sqrt(area2) / 2 over its triangles).
 /// Junctions: the edges that bound a patch (every edge touching a patch triangle that is not inside a patch),
-/// chained through vertices where exactly two such edges meet with the same patches; Junction::piece is the
-/// chain's lowest edge id, Junction::patches every patch whose triangles touch the chain.
+/// chained through vertices where exactly two such edges meet with the same sheets; Junction::piece is the
+/// chain's lowest edge id, Junction::patches every patch whose triangles touch the chain, Junction::sheets the
+/// lowest patch of the support group of each patch triangle along one of its edges (sorted).
+/// Corners: every arrangement vertex touching a patch triangle, except those inside a patch (one fan that is a
+/// whole disc, no junction edge) and those along a junction (two junction edges, every fan from one to the
+/// other); spokes in the order of the vertex's edges (by edge id), wedges in order of their first triangle met along those edges.
 Complex complex_from_arrangement(const Scene3& scene, const Arrangement3& arrangement);
 
 /// validate_and_resolve(Scene3&) must have been called on `scene`.

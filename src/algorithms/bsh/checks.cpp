@@ -2,6 +2,7 @@
 #include <hsx/algorithms/bsh/exact.hpp>
 
 #include <hsx/algorithms/bsh/samples.hpp>
+#include "geometry/components.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -150,11 +151,26 @@ CheckResult check_prop41(const Complex& complex, const Labelling& labelling, con
   return r;
 }
 
-CheckResult check_manifold_parity(const Problem& problem, const Labelling& labelling) {
-  CheckResult r{"Sec. 3.1 (orientation-preserving => manifold; junction parity)", CheckResult::Pass, ""};
-  const Complex& c = problem.complex();
+namespace {
+
+/// Flags per support: on b.
+std::vector<char> supports_on(const Problem& problem, const Labelling& labelling) {
   std::vector<char> on_b(problem.support_count(), 0);
   for (int g : boundary_supports(problem, labelling)) on_b[g] = 1;
+  return on_b;
+}
+
+std::string genericity_note(const Problem& problem, int junction) {
+  const auto& list = problem.non_generic_junctions();
+  return std::find(list.begin(), list.end(), junction) != list.end() ? " (a non-generic junction)"
+                                                                     : " (a generic junction)";
+}
+
+/// Section 3.1 in 2D: every junction has an even number of boundary patch ends.
+CheckResult manifold_parity2(const Problem& problem, const Labelling& labelling) {
+  CheckResult r{"Sec. 3.1 (orientation-preserving => manifold; junction parity)", CheckResult::Pass, ""};
+  const Complex& c = problem.complex();
+  const std::vector<char> on_b = supports_on(problem, labelling);
   std::map<int, int> ends;  // junction -> boundary support ends there
   for (int g = 0; g < problem.support_count(); ++g) {
     if (!on_b[g]) continue;
@@ -168,6 +184,83 @@ CheckResult check_manifold_parity(const Problem& problem, const Labelling& label
     }
   r.witness = std::to_string(ends.size()) + " junction(s) on b, all even";
   return r;
+}
+
+/// The link of b at a corner: how many circles, or -1 when a spoke has a number of b-wedge ends other than 0 or 2
+/// (then the link is not a union of circles).
+int link_circles(const Problem& problem, const Corner& corner, const std::vector<char>& on_b) {
+  const Complex& c = problem.complex();
+  std::vector<int> degree(corner.spokes.size(), 0);
+  DisjointSets joined(corner.spokes.size());
+  int discs = 0;
+  for (const Corner::Wedge& w : corner.wedges) {
+    if (!on_b[c.patches[w.patch].support]) continue;
+    if (w.from < 0) {
+      ++discs;
+      continue;
+    }
+    ++degree[static_cast<std::size_t>(w.from)];
+    ++degree[static_cast<std::size_t>(w.to)];
+    joined.union_set(static_cast<std::size_t>(w.from), static_cast<std::size_t>(w.to));
+  }
+  std::vector<char> used(corner.spokes.size(), 0);
+  for (std::size_t s = 0; s < degree.size(); ++s) {
+    if (degree[s] != 0 && degree[s] != 2) return -1;
+    used[s] = degree[s] != 0;
+  }
+  return discs + static_cast<int>(components_of(joined, corner.spokes.size()).members(used).size());
+}
+
+/// Section 3.1 in 3D: b is a 2-manifold iff exactly two of its sheets meet along every junction it touches and its
+/// link at every corner it touches is one circle (complex.hpp: Junction::sheets, Complex::corners).
+CheckResult manifold3(const Problem& problem, const Labelling& labelling) {
+  CheckResult r{"Sec. 3.1 (orientation-preserving => manifold; junction sheets, corner links)",
+                CheckResult::Pass, ""};
+  const Complex& c = problem.complex();
+  const bool known = !c.corners.empty() || std::any_of(c.junctions.begin(), c.junctions.end(),
+                                                       [](const Junction& j) { return !j.sheets.empty(); });
+  if (!known && !c.junctions.empty()) {
+    r.status = CheckResult::Skipped;
+    r.witness = "the complex carries no junction sheets or corners (built elsewhere, e.g. read from JSON)";
+    return r;
+  }
+  const std::vector<char> on_b = supports_on(problem, labelling);
+  int junctions = 0, corners = 0;
+  for (int j = 0; j < static_cast<int>(c.junctions.size()); ++j) {
+    const auto& sheets = c.junctions[static_cast<std::size_t>(j)].sheets;
+    const long k =
+        std::count_if(sheets.begin(), sheets.end(), [&](int p) { return on_b[c.patches[p].support] != 0; });
+    if (k == 0) continue;
+    ++junctions;
+    if (k != 2) {
+      r.status = CheckResult::Fail;
+      r.witness = "junction " + std::to_string(j) + " (arrangement edge " + std::to_string(c.junctions[j].piece) +
+                  "): " + std::to_string(k) + " sheets of b meet along it, so b is not a manifold there" +
+                  genericity_note(problem, j);
+      return r;
+    }
+  }
+  for (const Corner& corner : c.corners) {
+    const int circles = link_circles(problem, corner, on_b);
+    if (circles == 0) continue;
+    ++corners;
+    if (circles != 1) {
+      r.status = CheckResult::Fail;
+      r.witness = "corner at arrangement vertex " + std::to_string(corner.piece) + ": the link of b there is " +
+                  (circles < 0 ? std::string("not a union of circles") : std::to_string(circles) + " circles") +
+                  ", so b pinches at a point";
+      return r;
+    }
+  }
+  r.witness = std::to_string(junctions) + " junction(s) on b with 2 sheets each, " + std::to_string(corners) +
+              " corner(s) with one circle";
+  return r;
+}
+
+}  // namespace
+
+CheckResult check_manifold_parity(const Problem& problem, const Labelling& labelling) {
+  return problem.complex().dimension == 3 ? manifold3(problem, labelling) : manifold_parity2(problem, labelling);
 }
 
 namespace {

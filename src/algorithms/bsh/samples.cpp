@@ -34,7 +34,11 @@ int central_patch(const Complex& c, const std::vector<int>& component, const Com
           break;
         }
     }
-  // Dijkstra from every patch (components are small); edge a-b costs (|a| + |b|) / 2.
+  // Dijkstra from every patch (components are small); edge a-b costs (|a| + |b|) / 2 in 2D, 1 in 3D.
+  const auto cost = [&](int a, int b) {
+    return c.dimension == 3 ? Measure(Rational(1))
+                            : (c.patches[component[a]].measure + c.patches[component[b]].measure) * Rational(1, 2);
+  };
   int best = -1;
   Measure best_radius;
   for (int s = 0; s < n; ++s) {
@@ -48,7 +52,7 @@ int central_patch(const Complex& c, const std::vector<int>& component, const Com
       if (u < 0) break;
       done[u] = 1;
       for (int v : adjacent[u]) {
-        Measure d = *dist[u] + (c.patches[component[u]].measure + c.patches[component[v]].measure) * Rational(1, 2);
+        Measure d = *dist[u] + cost(u, v);
         if (!dist[v] || compare(d, *dist[v], compare_options) == Order::Less) dist[v] = d;
       }
     }

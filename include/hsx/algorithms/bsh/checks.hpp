@@ -29,7 +29,11 @@ CheckResult check_prop51(const Problem& problem, const Labelling& b, const Label
 /// its tie enumeration gives Stopped.
 CheckResult check_prop41(const Complex& complex, const Labelling& labelling, const ExtractOptions& limits = {});
 
-/// Section 3.1 in 2D, combinatorially: every junction has an even number of boundary patch ends.
+/// Section 3.1, combinatorially. 2D: every junction has an even number of boundary patch ends. 3D: exactly two
+/// sheets of b meet along every junction b touches (Junction::sheets: with four, b pinches along an edge), and
+/// b's link at every corner it touches is one circle (Complex::corners: two circles, b pinches at a point).
+/// Sec. 3.1 proves it at generic input, so a failure marks non-generic input (the witness says whether the junction
+/// is generic, Problem::non_generic_junctions); Skipped on a 3D complex without sheets and corners.
 CheckResult check_manifold_parity(const Problem& problem, const Labelling& labelling);
 
 /// The complex with its samples replaced by one sample on each patch of `labelling`'s boundary.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement3.hpp>
 
 #include <string>
 #include <vector>
@@ -17,6 +18,14 @@ namespace hsx::bsh {
 /// Throws std::runtime_error when no rational point can be placed (a segment with irrational ends and no known
 /// supporting line; not produced by Arrangement2::build).
 Scene2 scene_with_samples(const Scene2& scene, const Arranged2& arranged, const std::vector<int>& patches,
+                          const std::string& description);
+
+/// The same in 3D: one `at` sample per listed patch at the centroid of the patch's largest triangle (exact area
+/// comparison, ties to the lowest triangle id): a rational point strictly inside one triangle of the patch, so
+/// never on an arrangement edge, and `hsx extract` places it on the same patch again.
+/// - `scene`, `arranged`: a validated 3D scene and arrange(scene);
+/// - `patches`: patch indices of arranged.complex (std::out_of_range otherwise).
+Scene3 scene_with_samples(const Scene3& scene, const Arranged3& arranged, const std::vector<int>& patches,
                           const std::string& description);
 
 }  // namespace hsx::bsh

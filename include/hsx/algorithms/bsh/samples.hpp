@@ -3,9 +3,14 @@
 // (geometry/planar_points.hpp); here a sample is "a sample on patch p".
 //
 // Initial samples: one per connected component of b ∩ b_i, on the component's central patch: the patch whose
-// farthest patch of the component is nearest, distances measured along the component between patch midpoints
-// (half of each end patch plus the patches in between), compared exactly (certified; ties to the lowest index).
-// This is hsx's exact stand-in for the paper's geodesic centre.
+// farthest patch of the component is nearest (ties to the lowest index). This is hsx's exact stand-in for the
+// paper's geodesic centre. Distances run along the component from patch to patch across shared junctions:
+// - 2D: between patch midpoints (half of each end patch plus the patches in between), compared exactly
+//   (certified);
+// - 3D: the graph distance (one per junction crossed), since an area is no length; on a triangulated patch this
+//   is the patch-level analogue of "the vertex minimising the maximum graph distance along the surface". The
+//   sample point on the chosen patch is the centroid of its largest triangle (sample_scene.hpp): exact, rational
+//   and strictly inside the patch, never on an arrangement edge.
 // Each round: extract with the current samples; stop when it returns the target; otherwise add a sample on the
 // largest sample-free patch of b \ b' (largest measure, ties to the lowest index).
 #pragma once

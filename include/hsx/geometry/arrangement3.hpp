@@ -27,6 +27,8 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace hsx {
@@ -60,8 +62,16 @@ struct PointLocation3 {
   int index = -1;
 };
 
+/// Wall-clock seconds of Arrangement3::build's phases, in the order they run (for `hsx bench --3d --phases`).
+struct Arrangement3Timings {
+  std::vector<std::pair<std::string, double>> phases;  ///< (phase name, seconds); a repeated name adds up
+  /// Adds `seconds` to the phase called `name` (appended when new).
+  void add(const std::string& name, double seconds);
+};
+
 struct Arrangement3Options {
   bool volumes = true;  ///< compute every cell's exact volume
+  Arrangement3Timings* timings = nullptr;  ///< when set, build adds each phase's time to it (not printed anywhere)
   int threads = 0;      ///< worker threads for the per-triangle work; 0: hardware concurrency. The result does not
                         ///< depend on it (same triangles, same order).
 };

@@ -6,13 +6,14 @@
 //  1. input triangles: every surface's triangles, every plane clipped to the box (a convex polygon, fanned), the
 //     box's twelve face triangles (outward);
 //  2. groups: input triangles by exact supporting plane (both orientations share a plane);
-//  3. candidate pairs by CGAL::box_self_intersection_d, exact Triangle_3 x Triangle_3 on Epeck between ORIGINAL
-//     input triangles of different planes; pairs of one surface are checked for self-intersection instead;
+//  3. candidate pairs by CGAL::box_self_intersection_d, exact intersections between ORIGINAL input triangles of
+//     different planes (each triangle cut by the other's plane, interval filtered; the two cuts overlap on the line
+//     where the planes meet); pairs of one surface are checked for self-intersection instead;
 //  4. one constrained triangulation per group (projected along its dominant axis, lifted back exactly), each
 //     output triangle kept once with the input triangles covering it;
 //  5. vertices merged by exact coordinates (hash), edges with their triangles sorted radially (exact);
-//  6. cells: union-find over triangle sides across edges, floating shells joined to the region around them by an
-//     exact ray; sides of every halfspace propagated across triangles (and checked); interior points by a short
+//  6. cells: union-find over triangle sides across edges, floating shells joined to the cell around them by exact
+//     rays from their triangles' centroids; sides of every halfspace propagated across triangles (and checked); interior points by a short
 //     exact segment from a boundary triangle; volumes by signed tetrahedra; samples on triangles.
 #include <hsx/geometry/arrangement3.hpp>
 #include "geometry/components.hpp"
@@ -1259,8 +1260,8 @@ void Arrangement3Timings::add(const std::string& name, double seconds) {
   phases.emplace_back(name, seconds);
 }
 
-/// What locate needs beyond the public data: the triangles' planes and boxes (copies of an Arrangement3 share
-/// it; the triangles never change after build).
+/// What locate needs beyond the public data: the triangles' planes and boxes, built on the first locate (copies of
+/// an Arrangement3 share it; the triangles never change after build).
 struct Arrangement3::Impl {
   mutable std::once_flag built;                  // the index is built on the first locate
   mutable std::unique_ptr<const TriangleIndex> index;

@@ -52,6 +52,7 @@ struct BenchOptions {
   std::vector<int> plane_counts{10, 20, 30, 40, 50};
   long nef_max_triangles = 20000;   ///< Nef is skipped above this many input triangles
   int threads = 0;
+  bool phases = false;              ///< 3D mode: also report the median time of each arrangement phase
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -70,6 +71,7 @@ struct BenchRow {
   std::string input;
   std::string skipped;                  ///< non-empty: why the input was not measured
   std::vector<long> sizes;              ///< per Report::size_names
+  std::string phases;                   ///< --3d --phases: the arrangement's phase medians, one line
   std::vector<StageResult> stages;      ///< per Report::stage_names
   std::vector<std::string> notes;       ///< per Report::note_names
 };
@@ -566,6 +568,21 @@ std::string megabytes(const std::optional<long>& bytes) {
   return bytes ? printf_string("%.0f", static_cast<double>(*bytes) / (1 << 20)) : "-";
 }
 
+/// "NAME phases (median of N runs): phase 1.23 ms, ...": each phase's median over the runs.
+std::string phase_medians(const std::string& name, const std::vector<Arrangement3Timings>& runs) {
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<double>> seconds;
+  for (const Arrangement3Timings& run : runs)
+    for (const auto& [phase, s] : run.phases) {
+      if (seconds.find(phase) == seconds.end()) order.push_back(phase);
+      seconds[phase].push_back(s);
+    }
+  std::string line = name + " phases (median of " + std::to_string(runs.size()) + " runs):";
+  for (std::size_t k = 0; k < order.size(); ++k)
+    line += (k ? ", " : " ") + order[k] + " " + seconds_text(summarize_times(seconds[order[k]]).median);
+  return line;
+}
+
 /// One 3D scene: the exact arrangement and complex (no volumes), then Nef, each timed and its peak memory taken.
 BenchRow bench_scene3(const std::string& name, const Scene3& scene, const BenchOptions& o,
                       const RepeatOptions& repeat) {
@@ -576,7 +593,17 @@ BenchRow bench_scene3(const std::string& name, const Scene3& scene, const BenchO
   options.threads = o.threads;
   std::optional<Arranged3> arranged;
   StageResult arrangement;
-  arrangement.timing = time_repeatedly([&] { arranged = arrange(scene, o.limits, options); }, repeat);
+  std::vector<Arrangement3Timings> phase_runs;
+  arrangement.timing = time_repeatedly(
+      [&] {
+        Arrangement3Timings phases;
+        options.timings = o.phases ? &phases : nullptr;
+        arranged = arrange(scene, o.limits, options);
+        if (o.phases) phase_runs.push_back(std::move(phases));
+      },
+      repeat);
+  options.timings = nullptr;
+  if (o.phases) row.phases = phase_medians(name, phase_runs);
   const auto arrangement_peak = peak_memory_of([&] { arrange(scene, o.limits, options); });
   const long triangles = input_triangles(scene);
   StageResult nef;
@@ -642,6 +669,8 @@ void run_bench3(const BenchOptions& o, OutputFiles& files) {
       "that computation once (kernel/timing.hpp, peak_memory_of)",
       "the BSH authors' floating-point arrangement of figure19_b at h takes about 1.8 s on the reference machine "
       "(issue 12, section 5)"};
+  for (const BenchRow& row : report.rows)
+    if (!row.phases.empty()) report.footer.push_back(row.phases);
   publish(report, o, files);
 }
 
@@ -685,7 +714,9 @@ void add_bench_command(CLI::App& app) {
       cmd->add_option("--nef-max-triangles", o->nef_max_triangles,
                       "--3d: skip Nef above this many input triangles (default 20000; 0: never skip)"),
       cmd->add_option("--threads", o->threads, "--3d: worker threads of the arrangement (default 0: all cores)")
-          ->check(CLI::NonNegativeNumber)};
+          ->check(CLI::NonNegativeNumber),
+      cmd->add_flag("--phases", o->phases,
+                    "--3d: also report the median time of each phase of the arrangement (and of its complex)")};
   add_arrangement_limits(cmd, o->limits);
   cmd->callback([o, dirs, brute_force, time_limit, only_3d] {
     for (CLI::Option* option : only_3d)

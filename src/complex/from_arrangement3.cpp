@@ -2,6 +2,7 @@
 #include "geometry/components.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <stdexcept>
 
 namespace hsx {
@@ -228,7 +229,10 @@ Complex complex_from_arrangement(const Scene3& scene, const Arrangement3& arr) {
 
 Arranged3 arrange(const Scene3& scene, const ArrangementLimits& limits, const Arrangement3Options& options) {
   Arranged3 out{Arrangement3::build(scene, limits, options), {}};
+  const auto start = std::chrono::steady_clock::now();
   out.complex = complex_from_arrangement(scene, out.arrangement);
+  if (options.timings != nullptr)
+    options.timings->add("complex", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   return out;
 }
 

@@ -6,16 +6,22 @@
 //  1. input triangles: every surface's triangles, every plane clipped to the box (a convex polygon, fanned), the
 //     box's twelve face triangles (outward);
 //  2. groups: input triangles by exact supporting plane (both orientations share a plane);
-//  3. candidate pairs by CGAL::box_self_intersection_d, exact Triangle_3 x Triangle_3 on Epeck between ORIGINAL
-//     input triangles of different planes; pairs of one surface are checked for self-intersection instead;
+//  3. candidate pairs by CGAL::box_self_intersection_d, exact intersections between ORIGINAL input triangles of
+//     different planes (each triangle cut by the other's plane, interval filtered; the two cuts overlap on the line
+//     where the planes meet); pairs of one surface are checked for self-intersection instead;
 //  4. one constrained triangulation per group (projected along its dominant axis, lifted back exactly), each
 //     output triangle kept once with the input triangles covering it;
 //  5. vertices merged by exact coordinates (hash), edges with their triangles sorted radially (exact);
-//  6. cells: union-find over triangle sides across edges, floating shells joined to the region around them by an
-//     exact ray; sides of every halfspace propagated across triangles (and checked); interior points by a short
+//  6. cells: union-find over triangle sides across edges, floating shells joined to the cell around them by exact
+//     rays from their triangles' centroids; sides of every halfspace propagated across triangles (and checked); interior points by a short
 //     exact segment from a boundary triangle; volumes by signed tetrahedra; samples on triangles.
 #include <hsx/geometry/arrangement3.hpp>
 #include "geometry/components.hpp"
+
+// Constraints that cross inside one plane are split by CDT_2 at their exact crossing (Epeck): exact, so every
+// triple point is the same rational point in each plane's triangulation. CGAL warns on stderr that
+// Constrained_triangulation_plus_2 would avoid cascading constructions; the result does not depend on it.
+#define CGAL_NO_CDT_2_WARNING
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Constrained_triangulation_2.h>
@@ -25,9 +31,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <mutex>
 #include <stdexcept>
 #include <thread>
 #include <unordered_map>
@@ -75,6 +83,13 @@ struct PointHash {
     return (hash_rational(p.x) * 31u ^ hash_rational(p.y)) * 31u ^ hash_rational(p.z);
   }
 };
+
+/// Interval arithmetic for filters: Interval_nt<false> needs the FPU rounding upward (CGAL::Protect_FPU_rounding).
+using IntervalQ = CGAL::Interval_nt<false>;
+IntervalQ interval(const Rational& q) {
+  const auto iv = CGAL::to_interval(q);
+  return IntervalQ(iv.first, iv.second);
+}
 
 PointQ3 to_q(const P3& p) {
   const auto& e = CGAL::exact(p);
@@ -127,6 +142,22 @@ void parallel_for(int n, int threads, const std::function<void(int, int)>& work)
   for (auto& e : errors)
     if (e) std::rethrow_exception(e);
 }
+
+/// Adds the time since the previous lap to a named phase of `timings` (nothing when it is null).
+class PhaseClock {
+ public:
+  explicit PhaseClock(Arrangement3Timings* timings) : timings_(timings), last_(std::chrono::steady_clock::now()) {}
+  void lap(const char* phase) {
+    if (timings_ == nullptr) return;
+    const auto now = std::chrono::steady_clock::now();
+    timings_->add(phase, std::chrono::duration<double>(now - last_).count());
+    last_ = now;
+  }
+
+ private:
+  Arrangement3Timings* timings_;
+  std::chrono::steady_clock::time_point last_;
+};
 
 std::string halfspace_label(const Scene3& scene, int h) {
   return "halfspaces[" + std::to_string(h) + "] (\"" + scene.halfspaces[static_cast<std::size_t>(h)].name + "\")";
@@ -265,23 +296,104 @@ struct Constraint {
   PointQ3 a, b;  // a == b: an isolated point
 };
 
-/// Epeck triangles of the input, built on first use (one cache per thread: lazy numbers are not shared).
-class TriangleCache {
- public:
-  explicit TriangleCache(const std::vector<InputTriangle>& inputs) : inputs_(inputs), cache_(inputs.size()) {}
-  const K::Triangle_3& operator[](int t) {
-    auto& slot = cache_[static_cast<std::size_t>(t)];
-    if (!slot) {
-      const auto& p = inputs_[static_cast<std::size_t>(t)].p;
-      slot = K::Triangle_3(to_k(p[0]), to_k(p[1]), to_k(p[2]));
-    }
-    return *slot;
-  }
+/// Interval enclosures of the input triangles' corners and of the groups' planes, for the pair filter (evaluate
+/// under CGAL::Protect_FPU_rounding).
+struct PairFilter {
+  std::vector<std::array<std::array<IntervalQ, 3>, 3>> corners;  // per input triangle, corner, axis
+  std::vector<std::array<IntervalQ, 4>> planes;                   // per group: normal x, y, z and offset
 
- private:
-  const std::vector<InputTriangle>& inputs_;
-  std::vector<std::optional<K::Triangle_3>> cache_;
+  PairFilter(const std::vector<InputTriangle>& inputs, const std::vector<Group>& groups) {
+    corners.resize(inputs.size());
+    for (std::size_t t = 0; t < inputs.size(); ++t)
+      for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a) corners[t][static_cast<std::size_t>(k)][static_cast<std::size_t>(a)] = interval(coord(inputs[t].p[static_cast<std::size_t>(k)], a));
+    planes.resize(groups.size());
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      for (int a = 0; a < 3; ++a) planes[g][static_cast<std::size_t>(a)] = interval(coord(groups[g].normal, a));
+      planes[g][3] = interval(groups[g].offset);
+    }
+  }
 };
+
+/// The signs of group g's plane function (normal . x - offset) at triangle t's corners: interval filtered, exact
+/// where the filter cannot tell; `value` receives the exact values it computed (the others are left unset).
+std::array<int, 3> plane_signs(const std::vector<InputTriangle>& inputs, const std::vector<Group>& groups,
+                               const PairFilter& filter, int t, int g, std::array<std::optional<Rational>, 3>* value) {
+  std::array<int, 3> out{};
+  const auto& pl = filter.planes[static_cast<std::size_t>(g)];
+  for (int k = 0; k < 3; ++k) {
+    const auto& c = filter.corners[static_cast<std::size_t>(t)][static_cast<std::size_t>(k)];
+    const IntervalQ f = pl[0] * c[0] + pl[1] * c[1] + pl[2] * c[2] - pl[3];
+    if (f.inf() > 0 || f.sup() < 0) {
+      out[static_cast<std::size_t>(k)] = f.inf() > 0 ? 1 : -1;
+      continue;
+    }
+    const Group& group = groups[static_cast<std::size_t>(g)];
+    Rational v = dot(group.normal, inputs[static_cast<std::size_t>(t)].p[static_cast<std::size_t>(k)]) - group.offset;
+    out[static_cast<std::size_t>(k)] = sign(v);
+    (*value)[static_cast<std::size_t>(k)] = std::move(v);
+  }
+  return out;
+}
+
+/// Where triangle t meets the plane of group g (t not on it): its corners on the plane and the crossings of its
+/// edges, in edge order (one or two distinct points); false when t is strictly on one side.
+bool plane_cut(const std::vector<InputTriangle>& inputs, const std::vector<Group>& groups, const PairFilter& filter,
+               int t, int g, std::vector<PointQ3>* cut) {
+  std::array<std::optional<Rational>, 3> value;
+  const std::array<int, 3> s = plane_signs(inputs, groups, filter, t, g, &value);
+  if (s[0] == s[1] && s[1] == s[2] && s[0] != 0) return false;
+  const auto& p = inputs[static_cast<std::size_t>(t)].p;
+  const Group& group = groups[static_cast<std::size_t>(g)];
+  auto exact = [&](int k) -> const Rational& {
+    auto& v = value[static_cast<std::size_t>(k)];
+    if (!v) v = dot(group.normal, p[static_cast<std::size_t>(k)]) - group.offset;
+    return *v;
+  };
+  for (int k = 0; k < 3; ++k) {
+    const int j = (k + 1) % 3;
+    if (s[static_cast<std::size_t>(k)] == 0) cut->push_back(p[static_cast<std::size_t>(k)]);
+    if (s[static_cast<std::size_t>(k)] * s[static_cast<std::size_t>(j)] < 0) {
+      const Rational& vk = exact(k);
+      const Rational f = vk / (vk - exact(j));
+      cut->push_back(p[static_cast<std::size_t>(k)] + scaled(p[static_cast<std::size_t>(j)] - p[static_cast<std::size_t>(k)], f));
+    }
+  }
+  return true;
+}
+
+/// The axis along which the points of a line (two distinct points of it among `a`, `b`) are ordered.
+int line_axis(const std::vector<PointQ3>& a, const std::vector<PointQ3>& b) {
+  const std::vector<PointQ3>& two = a.size() == 2 ? a : b;
+  for (int axis = 0; axis < 3; ++axis)
+    if (coord(two[0], axis) != coord(two[1], axis)) return axis;
+  throw std::logic_error("arrangement3: a cut of two equal points");
+}
+
+/// The exact intersection of input triangles s and t of different planes: a point or a segment, or nothing. Both
+/// meet the line where their planes cross in a segment (or point); the intersection is the overlap of the two.
+std::optional<Constraint> intersect_triangles(const std::vector<InputTriangle>& inputs,
+                                              const std::vector<Group>& groups, const PairFilter& filter, int s,
+                                              int t) {
+  std::vector<PointQ3> cut_s, cut_t;
+  if (!plane_cut(inputs, groups, filter, t, inputs[static_cast<std::size_t>(s)].group, &cut_t)) return std::nullopt;
+  if (!plane_cut(inputs, groups, filter, s, inputs[static_cast<std::size_t>(t)].group, &cut_s)) return std::nullopt;
+  if (cut_s.size() == 1 && cut_t.size() == 1) {
+    if (cut_s[0] != cut_t[0]) return std::nullopt;
+    return Constraint{cut_s[0], cut_s[0]};
+  }
+  const int axis = line_axis(cut_s, cut_t);
+  auto order = [axis](std::vector<PointQ3>& cut) {
+    if (cut.size() == 2 && coord(cut[1], axis) < coord(cut[0], axis)) std::swap(cut[0], cut[1]);
+  };
+  order(cut_s);
+  order(cut_t);
+  const PointQ3& lo = coord(cut_s.front(), axis) < coord(cut_t.front(), axis) ? cut_t.front() : cut_s.front();
+  const PointQ3& hi = coord(cut_s.back(), axis) < coord(cut_t.back(), axis) ? cut_s.back() : cut_t.back();
+  const int c = cmp(coord(lo, axis), coord(hi, axis));
+  if (c > 0) return std::nullopt;
+  return Constraint{lo, c == 0 ? lo : hi};
+}
 
 int shared_corners(const InputTriangle& a, const InputTriangle& b, std::vector<PointQ3>* shared) {
   for (const auto& p : a.p)
@@ -291,30 +403,15 @@ int shared_corners(const InputTriangle& a, const InputTriangle& b, std::vector<P
 
 /// Two triangles of one surface on different planes: they may meet only in their shared corners (a shared edge or
 /// vertex). Throws InputError naming both otherwise.
-void check_self_pair(const Scene3& scene, const std::vector<InputTriangle>& inputs, TriangleCache& cache, int s,
-                     int t) {
+void check_self_pair(const Scene3& scene, const std::vector<InputTriangle>& inputs, const std::vector<Group>& groups,
+                     const PairFilter& filter, int s, int t) {
   const InputTriangle& a = inputs[static_cast<std::size_t>(s)];
   const InputTriangle& b = inputs[static_cast<std::size_t>(t)];
   std::vector<PointQ3> shared;
   const int n = shared_corners(a, b, &shared);
   if (n >= 2) return;  // a shared edge of non-coplanar triangles: they meet exactly along it
-  bool bad = false;
-  if (n == 0) {
-    bad = CGAL::do_intersect(cache[s], cache[t]);
-  } else {
-    // sharing one corner: fine when the other triangle's far edge is strictly on one side of this one's plane,
-    // otherwise compare the intersection with the corner
-    const K::Plane_3 plane = cache[s].supporting_plane();
-    std::vector<CGAL::Oriented_side> sides;
-    for (const auto& p : b.p)
-      if (p != shared[0]) sides.push_back(plane.oriented_side(to_k(p)));
-    if (sides[0] != CGAL::ON_ORIENTED_BOUNDARY && sides[0] == sides[1]) return;
-    const auto result = CGAL::intersection(cache[s], cache[t]);
-    if (result) {
-      const P3* point = boost::get<P3>(&*result);
-      bad = point == nullptr || to_q(*point) != shared[0];
-    }
-  }
+  const std::optional<Constraint> meet = intersect_triangles(inputs, groups, filter, s, t);
+  const bool bad = meet && (n == 0 || meet->a != meet->b || meet->a != shared[0]);
   if (bad)
     throw InputError(halfspace_label(scene, a.halfspace) + ": the surface intersects itself: its triangles " +
                      std::to_string(a.local) + " and " + std::to_string(b.local) + " meet");
@@ -322,16 +419,15 @@ void check_self_pair(const Scene3& scene, const std::vector<InputTriangle>& inpu
 
 /// Per group, the segments and points other planes' triangles leave on it.
 std::vector<std::vector<Constraint>> intersect_pairs(const Scene3& scene, const std::vector<InputTriangle>& inputs,
-                                                     const std::vector<std::pair<int, int>>& pairs, int groups,
-                                                     int threads) {
+                                                     const std::vector<Group>& groups,
+                                                     const std::vector<std::pair<int, int>>& pairs, int threads) {
+  const PairFilter filter(inputs, groups);
   const int chunk = 512;
   const int chunks = static_cast<int>((pairs.size() + chunk - 1) / chunk);
   std::vector<std::vector<std::pair<int, Constraint>>> found(static_cast<std::size_t>(chunks));
   const int workers = std::max(1, std::min(threads, chunks));
-  std::vector<std::unique_ptr<TriangleCache>> caches(static_cast<std::size_t>(workers));
-  parallel_for(chunks, workers, [&](int c, int worker) {
-    auto& cache = caches[static_cast<std::size_t>(worker)];
-    if (!cache) cache = std::make_unique<TriangleCache>(inputs);
+  parallel_for(chunks, workers, [&](int c, int) {
+    CGAL::Protect_FPU_rounding<true> protect;  // the filter's intervals round upward
     auto& out = found[static_cast<std::size_t>(c)];
     const std::size_t end = std::min(pairs.size(), static_cast<std::size_t>(c + 1) * chunk);
     for (std::size_t k = static_cast<std::size_t>(c) * chunk; k < end; ++k) {
@@ -340,26 +436,17 @@ std::vector<std::vector<Constraint>> intersect_pairs(const Scene3& scene, const 
       const InputTriangle& b = inputs[static_cast<std::size_t>(t)];
       if (a.group == b.group) continue;  // coplanar: triangulated together
       if (a.halfspace == b.halfspace && a.halfspace != kBox && a.local >= 0) {
-        check_self_pair(scene, inputs, *cache, s, t);
+        check_self_pair(scene, inputs, groups, filter, s, t);
         continue;
       }
       if (a.halfspace == b.halfspace) continue;  // a plane's fan or the box: meet along their own edges
-      const auto result = CGAL::intersection((*cache)[s], (*cache)[t]);
-      if (!result) continue;
-      Constraint con;
-      if (const P3* p = boost::get<P3>(&*result)) {
-        con.a = con.b = to_q(*p);
-      } else if (const K::Segment_3* seg = boost::get<K::Segment_3>(&*result)) {
-        con.a = to_q(seg->source());
-        con.b = to_q(seg->target());
-      } else {
-        throw std::logic_error("arrangement3: coplanar intersection between triangles of different planes");
-      }
-      out.emplace_back(a.group, con);
-      out.emplace_back(b.group, con);
+      std::optional<Constraint> con = intersect_triangles(inputs, groups, filter, s, t);
+      if (!con) continue;
+      out.emplace_back(a.group, *con);
+      out.emplace_back(b.group, std::move(*con));
     }
   });
-  std::vector<std::vector<Constraint>> per_group(static_cast<std::size_t>(groups));
+  std::vector<std::vector<Constraint>> per_group(groups.size());
   for (auto& list : found)
     for (auto& [g, con] : list) per_group[static_cast<std::size_t>(g)].push_back(std::move(con));
   return per_group;
@@ -376,7 +463,15 @@ struct Projected {
   Rational u, v;
 };
 Projected project(const PointQ3& p, int axis) { return {coord(p, (axis + 1) % 3), coord(p, (axis + 2) % 3)}; }
+/// Orientation of (a, b, c): interval filtered, exact when the filter cannot tell.
 int orient2(const Projected& a, const Projected& b, const Projected& c) {
+  {
+    CGAL::Protect_FPU_rounding<true> protect;
+    const IntervalQ au = interval(a.u), av = interval(a.v);
+    const IntervalQ det = (interval(b.u) - au) * (interval(c.v) - av) - (interval(b.v) - av) * (interval(c.u) - au);
+    if (det.inf() > 0) return 1;
+    if (det.sup() < 0) return -1;
+  }
   return sign((b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u));
 }
 PointQ3 lift(const Group& g, const Rational& u, const Rational& v) {
@@ -388,9 +483,12 @@ PointQ3 lift(const Group& g, const Rational& u, const Rational& v) {
   return p;
 }
 
-bool strictly_inside(const std::array<Projected, 3>& t, const Projected& q) {
+/// q in the closed triangle t (t not degenerate).
+bool in_closed(const std::array<Projected, 3>& t, const Projected& q) {
   const int o = orient2(t[0], t[1], t[2]);
-  return orient2(t[0], t[1], q) == o && orient2(t[1], t[2], q) == o && orient2(t[2], t[0], q) == o;
+  for (int e = 0; e < 3; ++e)
+    if (orient2(t[static_cast<std::size_t>(e)], t[static_cast<std::size_t>((e + 1) % 3)], q) == -o) return false;
+  return true;
 }
 
 std::vector<LocalTriangle> triangulate_group(const Group& g, const std::vector<InputTriangle>& inputs,
@@ -431,13 +529,22 @@ std::vector<LocalTriangle> triangulate_group(const Group& g, const std::vector<I
     members.push_back({project(p[0], g.axis), project(p[1], g.axis), project(p[2], g.axis)});
     member_same.push_back(static_cast<char>(orient2(members.back()[0], members.back()[1], members.back()[2]) > 0));
   }
+  // A face lies inside a member or outside it (the member's edges are constraints): inside iff its three corners
+  // are in the closed member. A single member covers every face (all constraints lie on it). Per vertex and
+  // member, memoized: -1 unknown, 0 out, 1 in.
+  std::vector<signed char> in_member(uv.size() * members.size(), -1);
+  auto covers = [&](std::size_t m, int vertex) {
+    if (members.size() == 1) return true;
+    signed char& memo = in_member[static_cast<std::size_t>(vertex) * members.size() + m];
+    if (memo < 0) memo = static_cast<signed char>(in_closed(members[m], uv[static_cast<std::size_t>(vertex)]));
+    return memo == 1;
+  };
   std::vector<LocalTriangle> out;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     const int i0 = f->vertex(0)->info(), i1 = f->vertex(1)->info(), i2 = f->vertex(2)->info();
-    const Projected centre{(uv[i0].u + uv[i1].u + uv[i2].u) / 3, (uv[i0].v + uv[i1].v + uv[i2].v) / 3};
     LocalTriangle lt{{lifted[i0], lifted[i1], lifted[i2]}, {}, {}};  // counter-clockwise in (u, v): front = normal
     for (std::size_t m = 0; m < members.size(); ++m)
-      if (strictly_inside(members[m], centre)) {
+      if (covers(m, i0) && covers(m, i1) && covers(m, i2)) {
         lt.covering.push_back(g.members[m]);
         lt.same_side.push_back(member_same[m]);
       }
@@ -514,6 +621,20 @@ Built merge_triangles(const Scene3& scene, const std::vector<InputTriangle>& inp
   return b;
 }
 
+using IntervalVector = std::array<IntervalQ, 3>;
+IntervalVector interval_vector(const PointQ3& p) { return {interval(p.x), interval(p.y), interval(p.z)}; }
+
+/// The sign of det(a, b, c), given interval enclosures of a, b, c: by intervals when they decide it, else exact.
+/// Call with the FPU rounding upward (CGAL::Protect_FPU_rounding).
+int det3_sign(const PointQ3& a, const PointQ3& b, const PointQ3& c, const IntervalVector& ia,
+              const IntervalVector& ib, const IntervalVector& ic) {
+  const IntervalQ det = ia[0] * (ib[1] * ic[2] - ib[2] * ic[1]) + ia[1] * (ib[2] * ic[0] - ib[0] * ic[2]) +
+                        ia[2] * (ib[0] * ic[1] - ib[1] * ic[0]);
+  if (det.inf() > 0) return 1;
+  if (det.sup() < 0) return -1;
+  return sign(det3(a, b, c));
+}
+
 /// Exact radial order of the triangles around edge (a, b): right-handed about the direction a -> b.
 void sort_radially(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles, ArrEdge3* edge) {
   const PointQ3& a = vertices[static_cast<std::size_t>(edge->a)];
@@ -524,23 +645,31 @@ void sort_radially(const std::vector<PointQ3>& vertices, const std::vector<ArrTr
       if (v != edge->a && v != edge->b) return vertices[static_cast<std::size_t>(v)] - a;
     throw std::logic_error("arrangement3: degenerate triangle");
   };
+  CGAL::Protect_FPU_rounding<true> protect;  // for the interval filter of det3_sign
   std::vector<std::pair<int, PointQ3>> items;
-  for (int t : edge->triangles) items.emplace_back(t, third(t));
+  std::vector<IntervalVector> boxes;
+  for (int t : edge->triangles) {
+    items.emplace_back(t, third(t));
+    boxes.push_back(interval_vector(items.back().second));
+  }
+  const IntervalVector dbox = interval_vector(d);
   const PointQ3 ref = items[0].second;
-  auto half = [&](const PointQ3& r) {
-    const int o = sign(det3(d, ref, r));
+  auto half = [&](std::size_t i) {
+    const int o = det3_sign(d, ref, items[i].second, dbox, boxes[0], boxes[i]);
     if (o != 0) return o > 0 ? 0 : 1;
+    const PointQ3& r = items[i].second;
     return sign(dot(ref, r) * dd - dot(ref, d) * dot(r, d)) > 0 ? 0 : 1;
   };
   std::vector<int> halves;
-  for (auto& it : items) halves.push_back(half(it.second));
+  for (std::size_t i = 0; i < items.size(); ++i) halves.push_back(half(i));
   std::vector<int> order(items.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   std::sort(order.begin(), order.end(), [&](int i, int j) {
     if (halves[static_cast<std::size_t>(i)] != halves[static_cast<std::size_t>(j)])
       return halves[static_cast<std::size_t>(i)] < halves[static_cast<std::size_t>(j)];
     if (i == j) return false;
-    const int s = sign(det3(d, items[static_cast<std::size_t>(i)].second, items[static_cast<std::size_t>(j)].second));
+    const std::size_t a = static_cast<std::size_t>(i), b = static_cast<std::size_t>(j);
+    const int s = det3_sign(d, items[a].second, items[b].second, dbox, boxes[a], boxes[b]);
     if (s == 0) throw std::logic_error("arrangement3: two triangles on one half-plane around an edge");
     return s > 0;
   });
@@ -590,11 +719,14 @@ struct RayHit {
   bool clean = false;  // found, and the hit is inside the triangle's interior
 };
 
-using IntervalQ = CGAL::Interval_nt<false>;
-IntervalQ interval(const Rational& q) {
-  const auto iv = CGAL::to_interval(q);
-  return IntervalQ(iv.first, iv.second);
-}
+
+/// A triangle a ray meets at origin + at * dir.
+struct RayCrossing {
+  Rational at;
+  int triangle = -1;
+  bool interior = false;  // the hit is inside the triangle's interior
+  bool front = false;     // the origin is on the triangle's front side
+};
 
 /// Where a point lies on a triangle: -1 not on it, 0 interior, 1 + k on edge k (v_k, v_k+1), 4 + k at vertex k.
 struct OnTriangle {
@@ -650,44 +782,48 @@ class TriangleIndex {
     return in_plane(soup, t, q);
   }
 
-  /// First triangle met by origin + s * dir, s > 0, among those `skip` leaves; not clean when that hit is on an
-  /// edge or vertex, when two triangles are met at once, or when the ray runs inside a triangle's plane.
-  RayHit first_hit(const TriangleSoup& soup, const PointQ3& origin, const PointQ3& dir,
-                   const std::function<bool(int)>& skip) const {
+  /// Every triangle met by origin + s * dir with s > 0, sorted by s (ties in triangle order); nullopt when the ray
+  /// runs inside a triangle's plane (try another direction).
+  std::optional<std::vector<RayCrossing>> all_hits(const TriangleSoup& soup, const PointQ3& origin,
+                                                   const PointQ3& dir) const {
     CGAL::Protect_FPU_rounding<true> protect;
     IntervalQ o[3], d[3];
     for (int a = 0; a < 3; ++a) {
       o[a] = interval(coord(origin, a));
       d[a] = interval(coord(dir, a));
     }
-    RayHit best;
-    Rational best_s;
-    bool tie = false;
+    std::vector<RayCrossing> hits;
     for (int t = 0; t < static_cast<int>(planes_.size()); ++t) {
       const Plane& pl = planes_[static_cast<std::size_t>(t)];
-      if (!may_hit(pl, o, d, dir) || skip(t)) continue;
+      if (!may_hit(pl, o, d, dir)) continue;
       const Rational off = pl.d - dot(pl.n, origin);  // n.(origin + s dir) = d  <=>  s * n.dir = off
       const Rational nd = dot(pl.n, dir);
       if (nd == 0) {
-        if (off == 0) return {};  // the ray runs in this triangle's plane: try another direction
+        if (off == 0) return std::nullopt;
         continue;
       }
-      const Rational s = off / nd;
-      if (s <= 0 || (best.triangle >= 0 && s > best_s)) continue;
-      const OnTriangle where = in_plane(soup, t, origin + scaled(dir, s));
+      Rational at = off / nd;
+      if (at <= 0) continue;
+      const OnTriangle where = in_plane(soup, t, origin + scaled(dir, at));
       if (where.where < 0) continue;
-      if (best.triangle >= 0 && s == best_s) {
-        tie = true;
-        continue;
-      }
-      best.triangle = t;
-      best_s = s;
-      best.clean = where.where == 0;
-      best.front = sign(off) < 0;  // origin - hit = -s dir: on the front iff n.dir < 0 iff off < 0
-      tie = false;
+      // origin - hit = -at dir: on the front iff n.dir < 0 iff off < 0
+      hits.push_back({std::move(at), t, where.where == 0, sign(off) < 0});
     }
-    if (tie) best.clean = false;
-    return best;
+    std::sort(hits.begin(), hits.end(), [](const RayCrossing& x, const RayCrossing& y) {
+      const int c = cmp(x.at, y.at);
+      return c != 0 ? c < 0 : x.triangle < y.triangle;
+    });
+    return hits;
+  }
+
+  /// First triangle met by origin + s * dir, s > 0; not clean when that hit is on an edge or vertex, when two
+  /// triangles are met at once, or when the ray runs inside a triangle's plane.
+  RayHit first_hit(const TriangleSoup& soup, const PointQ3& origin, const PointQ3& dir) const {
+    const auto hits = all_hits(soup, origin, dir);
+    if (!hits || hits->empty()) return {};
+    const RayCrossing& h = hits->front();
+    const bool tie = hits->size() > 1 && (*hits)[1].at == h.at;
+    return {h.triangle, h.front, h.interior && !tie};
   }
 
  private:
@@ -748,23 +884,35 @@ struct CellBuild {
   int cells = 0;
 };
 
-/// Signed volumes (x6) of each class of sides, relative to `origin`: positive for bounded regions.
-std::vector<Rational> class_volumes(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles,
-                                    const Components& classes, const PointQ3& origin) {
-  std::vector<Rational> vol(static_cast<std::size_t>(classes.count));
-  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
-    const auto& v = triangles[static_cast<std::size_t>(t)].vertices;
-    const Rational d = det3(vertices[static_cast<std::size_t>(v[0])] - origin, vertices[static_cast<std::size_t>(v[1])] - origin,
-                            vertices[static_cast<std::size_t>(v[2])] - origin);
-    vol[static_cast<std::size_t>(classes.of[static_cast<std::size_t>(side_id(t, false))])] += d;  // region behind
-    vol[static_cast<std::size_t>(classes.of[static_cast<std::size_t>(side_id(t, true))])] -= d;
-  }
-  return vol;
+/// The pair of sides a ray from a floating shell joins: the side facing away from the ray's origin at its last
+/// crossing of the shell (or of the origin's own triangle when it crosses none), and the side facing the origin at
+/// the next crossing, of another shell. The open segment between them meets no triangle and lies outside the shell
+/// (beyond its last crossing), so both sides bound one cell: the one around the shell. Nullopt when either
+/// crossing is not clean (on an edge or vertex, or two triangles at once): try another ray.
+std::optional<std::pair<int, int>> shell_join(const std::vector<RayCrossing>& hits, const Components& shell, int k,
+                                              int origin_side) {
+  int last = -1;  // the last crossing of shell k
+  for (int i = 0; i < static_cast<int>(hits.size()); ++i)
+    if (shell.of[static_cast<std::size_t>(hits[static_cast<std::size_t>(i)].triangle)] == k) last = i;
+  auto clean = [&hits](int i) {
+    const RayCrossing& h = hits[static_cast<std::size_t>(i)];
+    const bool tie = (i > 0 && hits[static_cast<std::size_t>(i - 1)].at == h.at) ||
+                     (i + 1 < static_cast<int>(hits.size()) && hits[static_cast<std::size_t>(i + 1)].at == h.at);
+    return h.interior && !tie;
+  };
+  const int next = last + 1;
+  if (next >= static_cast<int>(hits.size()) || (last >= 0 && !clean(last)) || !clean(next)) return std::nullopt;
+  const int away = last < 0 ? origin_side
+                            : side_id(hits[static_cast<std::size_t>(last)].triangle, !hits[static_cast<std::size_t>(last)].front);
+  const RayCrossing& h = hits[static_cast<std::size_t>(next)];
+  return std::make_pair(away, side_id(h.triangle, h.front));
 }
 
-/// Joins every floating shell complex's exterior with the region around it (found by an exact ray).
+/// Joins every floating shell (a set of triangles connected across edges, none on the box) with the cell around
+/// it, found by exact rays from the centroids of its triangles (see shell_join). A shell touching another one or
+/// the box only at a vertex is floating too, and is nested the same way.
 void nest_shells(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles,
-                 const std::vector<ArrEdge3>& edges, const PointQ3& origin, DisjointSets& sides) {
+                 const std::vector<ArrEdge3>& edges, DisjointSets& sides) {
   const int n = static_cast<int>(triangles.size());
   DisjointSets shells(static_cast<std::size_t>(n));
   for (const ArrEdge3& e : edges)
@@ -774,35 +922,32 @@ void nest_shells(const std::vector<PointQ3>& vertices, const std::vector<ArrTria
   for (int t = 0; t < n; ++t)
     if (triangles[static_cast<std::size_t>(t)].on_box) grounded[static_cast<std::size_t>(shell.of[static_cast<std::size_t>(t)])] = 1;
   if (std::all_of(grounded.begin(), grounded.end(), [](char g) { return g != 0; })) return;
-  const Components classes = components_of(sides, static_cast<std::size_t>(2 * n));
-  const std::vector<Rational> vol = class_volumes(vertices, triangles, classes, origin);
   const auto members = shell.members();
   const TriangleSoup soup{vertices, triangles};
   const TriangleIndex index(soup);
   std::vector<std::pair<int, int>> joins;
   for (int k = 0; k < shell.count; ++k) {
     if (grounded[static_cast<std::size_t>(k)]) continue;
-    int exterior = -1, top = -1;  // a side class with negative volume; the vertex of largest x
-    for (int t : members[static_cast<std::size_t>(k)]) {
-      for (bool front : {true, false}) {
-        const int c = classes.of[static_cast<std::size_t>(side_id(t, front))];
-        if (vol[static_cast<std::size_t>(c)] < 0) exterior = side_id(t, front);
-      }
-      for (int v : triangles[static_cast<std::size_t>(t)].vertices)
-        if (top < 0 || vertices[static_cast<std::size_t>(v)].x > vertices[static_cast<std::size_t>(top)].x) top = v;
+    const auto& own = members[static_cast<std::size_t>(k)];
+    std::optional<std::pair<int, int>> join;
+    for (int attempt = 0; attempt < 64 && !join; ++attempt) {
+      // the centroid of one of the shell's triangles: strictly inside the domain (no floating triangle is on the box)
+      const int t = own[static_cast<std::size_t>(attempt / 8) * 7919 % own.size()];
+      const std::array<PointQ3, 3> p = soup.corners(t);
+      const PointQ3 origin = scaled(p[0] + p[1] + p[2], Rational(1, 3));
+      const PointQ3 dir = ray_direction(attempt % 8);
+      const auto hits = index.all_hits(soup, origin, dir);
+      const int facing = sign(dot(normal_of(p), dir));  // the ray leaves t on its front iff facing > 0
+      if (!hits || facing == 0) continue;
+      join = shell_join(*hits, shell, k, side_id(t, facing > 0));
     }
-    if (exterior < 0) throw std::logic_error("arrangement3: a floating shell without an exterior");
-    RayHit hit;
-    for (int attempt = 0; attempt < 64 && !hit.clean; ++attempt)
-      hit = index.first_hit(soup, vertices[static_cast<std::size_t>(top)], ray_direction(attempt),
-                            [&](int t) { return shell.of[static_cast<std::size_t>(t)] == k; });
-    if (!hit.clean) throw std::logic_error("arrangement3: no clean ray out of a floating shell");
-    joins.emplace_back(exterior, side_id(hit.triangle, hit.front));
+    if (!join) throw std::logic_error("arrangement3: no clean ray out of a floating shell");
+    joins.push_back(*join);
   }
   for (const auto& j : joins) sides.union_set(j.first, j.second);
 }
 
-CellBuild find_cells(const Built& b, const std::vector<ArrEdge3>& edges, const Box3& box) {
+CellBuild find_cells(const Built& b, const std::vector<ArrEdge3>& edges) {
   const int n = static_cast<int>(b.triangles.size());
   DisjointSets sides(static_cast<std::size_t>(2 * n));
   for (const ArrEdge3& e : edges) {
@@ -822,7 +967,7 @@ CellBuild find_cells(const Built& b, const std::vector<ArrEdge3>& edges, const B
     if (outside < 0) outside = s;
     sides.union_set(outside, s);
   }
-  nest_shells(b.vertices, b.triangles, edges, box.min, sides);
+  nest_shells(b.vertices, b.triangles, edges, sides);
   const Components classes = components_of(sides, static_cast<std::size_t>(2 * n));
   const int outside_class = classes.of[static_cast<std::size_t>(outside)];
   CellBuild cb;
@@ -911,6 +1056,55 @@ std::vector<std::vector<char>> cell_sides(const Scene3& scene, const std::vector
   return inside;
 }
 
+/// The least parameter lambda in (0, 1] at which s + lambda * dir (ending at e = s + dir; dd = dir . dir) meets
+/// the closed triangle p, or nullopt when it meets it nowhere there. A segment inside the triangle's plane is
+/// handed to CGAL's exact Segment_3 x Triangle_3.
+std::optional<Rational> segment_meets(const std::array<PointQ3, 3>& p, const PointQ3& s, const PointQ3& dir,
+                                      const PointQ3& e, const Rational& dd) {
+  {  // interval filter: both ends strictly on one side of the triangle's plane
+    CGAL::Protect_FPU_rounding<true> protect;
+    const IntervalVector a = interval_vector(p[0]), b = interval_vector(p[1]), c = interval_vector(p[2]);
+    const IntervalVector is = interval_vector(s), ie = interval_vector(e);
+    IntervalVector u, w, fs_v, fe_v;
+    for (std::size_t k = 0; k < 3; ++k) {
+      u[k] = b[k] - a[k];
+      w[k] = c[k] - a[k];
+      fs_v[k] = is[k] - a[k];
+      fe_v[k] = ie[k] - a[k];
+    }
+    const IntervalQ n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    const IntervalQ fs = n[0] * fs_v[0] + n[1] * fs_v[1] + n[2] * fs_v[2];
+    const IntervalQ fe = n[0] * fe_v[0] + n[1] * fe_v[1] + n[2] * fe_v[2];
+    if ((fs.inf() > 0 && fe.inf() > 0) || (fs.sup() < 0 && fe.sup() < 0)) return std::nullopt;
+  }
+  const PointQ3 n = normal_of(p);
+  const Rational fs = dot(n, s - p[0]), fe = dot(n, e - p[0]);
+  if (sign(fs) == 0 && sign(fe) == 0) {
+    const auto result = CGAL::intersection(K::Segment_3(to_k(s), to_k(e)), K::Triangle_3(to_k(p[0]), to_k(p[1]), to_k(p[2])));
+    if (!result) return std::nullopt;
+    std::optional<Rational> least;
+    auto consider = [&](const P3& q) {
+      const Rational at = dot(to_q(q) - s, dir) / dd;
+      if (at > 0 && (!least || at < *least)) least = at;
+    };
+    if (const P3* q = boost::get<P3>(&*result)) consider(*q);
+    if (const K::Segment_3* g = boost::get<K::Segment_3>(&*result)) {
+      consider(g->source());
+      consider(g->target());
+    }
+    return least;
+  }
+  if (sign(fs) * sign(fe) > 0) return std::nullopt;
+  const Rational at = fs / (fs - fe);
+  const PointQ3 q = s + scaled(dir, at);
+  int axis = 0;
+  for (int a = 1; a < 3; ++a)
+    if (abs(coord(n, a)) > abs(coord(n, axis))) axis = a;
+  const std::array<Projected, 3> tp = {project(p[0], axis), project(p[1], axis), project(p[2], axis)};
+  if (!in_closed(tp, project(q, axis))) return std::nullopt;
+  return at;
+}
+
 /// An exact point strictly inside each cell: from the centroid of the cell's largest boundary triangle, along
 /// its normal into the cell, half way to the first triangle met (or to the end of a short probe segment).
 std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles,
@@ -963,25 +1157,14 @@ std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const
     const PointQ3& s = start[static_cast<std::size_t>(c)];
     const PointQ3 dir = end[static_cast<std::size_t>(c)] - s;
     const Rational dd = dot(dir, dir);
-    const K::Segment_3 seg(to_k(s), to_k(end[static_cast<std::size_t>(c)]));
     Rational t_min(1);
     for (int t : cand) {
       if (t == best[static_cast<std::size_t>(c)]) continue;
       const auto& v = triangles[static_cast<std::size_t>(t)].vertices;
-      const K::Triangle_3 tri(to_k(vertices[static_cast<std::size_t>(v[0])]), to_k(vertices[static_cast<std::size_t>(v[1])]),
-                              to_k(vertices[static_cast<std::size_t>(v[2])]));
-      const auto result = CGAL::intersection(seg, tri);
-      if (!result) continue;
-      std::vector<PointQ3> hits;
-      if (const P3* p = boost::get<P3>(&*result)) hits.push_back(to_q(*p));
-      if (const K::Segment_3* g = boost::get<K::Segment_3>(&*result)) {
-        hits.push_back(to_q(g->source()));
-        hits.push_back(to_q(g->target()));
-      }
-      for (const PointQ3& q : hits) {
-        const Rational at = dot(q - s, dir) / dd;
-        if (at > 0 && at < t_min) t_min = at;
-      }
+      const std::array<PointQ3, 3> p = {vertices[static_cast<std::size_t>(v[0])], vertices[static_cast<std::size_t>(v[1])],
+                                        vertices[static_cast<std::size_t>(v[2])]};
+      if (const std::optional<Rational> at = segment_meets(p, s, dir, end[static_cast<std::size_t>(c)], dd))
+        if (*at > 0 && *at < t_min) t_min = *at;
     }
     out[static_cast<std::size_t>(c)] = s + scaled(dir, t_min / 2);
   }
@@ -1006,15 +1189,33 @@ std::vector<int> place_samples(const Scene3& scene, const std::vector<PointQ3>& 
     const ArrTriangle3& t = triangles[static_cast<std::size_t>(e.triangles[1])];
     return !s.on_box && !t.on_box && s.halfspaces == t.halfspaces;
   };
+  std::vector<std::array<std::pair<double, double>, 3>> box(vertices.size());  // per vertex: interval per axis
+  if (!scene.samples.empty())
+    for (std::size_t v = 0; v < vertices.size(); ++v)
+      for (int a = 0; a < 3; ++a) box[v][static_cast<std::size_t>(a)] = CGAL::to_interval(coord(vertices[v], a));
+  auto may_hold = [&](const std::array<int, 3>& v, const std::array<std::pair<double, double>, 3>& q) {
+    for (std::size_t a = 0; a < 3; ++a) {
+      double lo = box[static_cast<std::size_t>(v[0])][a].first, hi = box[static_cast<std::size_t>(v[0])][a].second;
+      for (int k = 1; k < 3; ++k) {
+        lo = std::min(lo, box[static_cast<std::size_t>(v[static_cast<std::size_t>(k)])][a].first);
+        hi = std::max(hi, box[static_cast<std::size_t>(v[static_cast<std::size_t>(k)])][a].second);
+      }
+      if (q[a].second < lo || q[a].first > hi) return false;
+    }
+    return true;
+  };
   std::vector<int> out;
   for (std::size_t k = 0; k < scene.samples.size(); ++k) {
     const Sample3& sample = scene.samples[k];
     const PointQ3& q = sample.location;
     const std::string label = "samples[" + std::to_string(k) + "] (of " + halfspace_label(scene, sample.halfspace) + ")";
+    const std::array<std::pair<double, double>, 3> q_box = {CGAL::to_interval(q.x), CGAL::to_interval(q.y),
+                                                            CGAL::to_interval(q.z)};
     int found = -1;
     bool ok = true;
     for (int t : by_halfspace.at(static_cast<std::size_t>(sample.halfspace))) {
       const auto& v = triangles[static_cast<std::size_t>(t)].vertices;
+      if (!may_hold(v, q_box)) continue;
       const std::array<PointQ3, 3> p = {vertices[static_cast<std::size_t>(v[0])], vertices[static_cast<std::size_t>(v[1])],
                                         vertices[static_cast<std::size_t>(v[2])]};
       const PointQ3 n = normal_of(p);
@@ -1050,39 +1251,59 @@ std::vector<int> place_samples(const Scene3& scene, const std::vector<PointQ3>& 
 
 }  // namespace
 
-/// What locate needs beyond the public data: the triangles' planes and boxes (copies of an Arrangement3 share
-/// it; the triangles never change after build).
+void Arrangement3Timings::add(const std::string& name, double seconds) {
+  for (auto& [phase, total] : phases)
+    if (phase == name) {
+      total += seconds;
+      return;
+    }
+  phases.emplace_back(name, seconds);
+}
+
+/// What locate needs beyond the public data: the triangles' planes and boxes, built on the first locate (copies of
+/// an Arrangement3 share it; the triangles never change after build).
 struct Arrangement3::Impl {
-  TriangleIndex index;
+  mutable std::once_flag built;                  // the index is built on the first locate
+  mutable std::unique_ptr<const TriangleIndex> index;
 };
 
 Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& limits,
                                  const Arrangement3Options& options) {
   const int threads = worker_count(options.threads);
+  PhaseClock clock(options.timings);
   std::vector<InputTriangle> inputs = input_triangles(scene);
   const std::vector<Group> groups = group_by_plane(inputs);
+  clock.lap("input triangles and planes");
   const std::vector<std::pair<int, int>> pairs = candidate_pairs(inputs);
+  clock.lap("candidate pairs");
   const std::vector<std::vector<Constraint>> constraints =
-      intersect_pairs(scene, inputs, pairs, static_cast<int>(groups.size()), threads);
+      intersect_pairs(scene, inputs, groups, pairs, threads);
+  clock.lap("pair intersections");
   std::vector<std::vector<LocalTriangle>> local(groups.size());
   parallel_for(static_cast<int>(groups.size()), threads, [&](int g, int) {
     local[static_cast<std::size_t>(g)] =
         triangulate_group(groups[static_cast<std::size_t>(g)], inputs, constraints[static_cast<std::size_t>(g)]);
   });
+  clock.lap("triangulations");
   Built b = merge_triangles(scene, inputs, local, limits);
   local.clear();
+  clock.lap("vertex merge");
   Arrangement3 arr;
   arr.domain_ = scene.domain;
   arr.halfspace_count_ = static_cast<int>(scene.halfspaces.size());
   arr.edges_ = build_edges(b.vertices, b.triangles);
-  const CellBuild cb = find_cells(b, arr.edges_, scene.domain);
+  clock.lap("edges and radial order");
+  const CellBuild cb = find_cells(b, arr.edges_);
   check_cell_limits(cb.cells, arr.halfspace_count_, limits);
+  clock.lap("cells and shells");
   for (int t = 0; t < static_cast<int>(b.triangles.size()); ++t) {
     b.triangles[static_cast<std::size_t>(t)].front_cell = cb.cell_of_side[static_cast<std::size_t>(side_id(t, true))];
     b.triangles[static_cast<std::size_t>(t)].back_cell = cb.cell_of_side[static_cast<std::size_t>(side_id(t, false))];
   }
   const auto inside = cell_sides(scene, b.triangles, cb.cells);
+  clock.lap("sides");
   const auto witness = interior_points(b.vertices, b.triangles, cb.cells);
+  clock.lap("interior points");
   arr.cells_.resize(static_cast<std::size_t>(cb.cells));
   for (int c = 0; c < cb.cells; ++c) {
     arr.cells_[static_cast<std::size_t>(c)].inside = inside[static_cast<std::size_t>(c)];
@@ -1110,17 +1331,20 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
         throw std::logic_error("arrangement3: a cell's side of a plane disagrees with its witness");
     }
   }
+  clock.lap("volumes and witness checks");
   arr.sample_triangles_ = place_samples(scene, b.vertices, b.triangles, arr.edges_);
+  clock.lap("samples");
   arr.vertices_ = std::move(b.vertices);
   arr.triangles_ = std::move(b.triangles);
-  arr.impl_ = std::make_shared<const Impl>(Impl{TriangleIndex(TriangleSoup{arr.vertices_, arr.triangles_})});
+  arr.impl_ = std::make_shared<const Impl>();
   return arr;
 }
 
 PointLocation3 Arrangement3::locate(const PointQ3& p) const {
   if (!domain_.contains(p)) return {PointLocation3::Outside, -1};
-  const TriangleIndex& index = impl_->index;
   const TriangleSoup soup{vertices_, triangles_};
+  std::call_once(impl_->built, [&] { impl_->index = std::make_unique<const TriangleIndex>(soup); });
+  const TriangleIndex& index = *impl_->index;
   for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) {
     const OnTriangle where = index.on(soup, t, p);
     if (where.where < 0) continue;
@@ -1136,7 +1360,7 @@ PointLocation3 Arrangement3::locate(const PointQ3& p) const {
     return {PointLocation3::Edge, static_cast<int>(it - edges_.begin())};
   }
   for (int attempt = 0; attempt < 64; ++attempt) {
-    const RayHit hit = index.first_hit(soup, p, ray_direction(attempt), [](int) { return false; });
+    const RayHit hit = index.first_hit(soup, p, ray_direction(attempt));
     if (!hit.clean) continue;
     const ArrTriangle3& t = triangles_[static_cast<std::size_t>(hit.triangle)];
     return {PointLocation3::Cell, hit.front ? t.front_cell : t.back_cell};

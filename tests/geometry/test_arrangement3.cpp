@@ -64,7 +64,9 @@ void check_random_points(const Scene3& scene, const Arrangement3& arr, int count
   std::mt19937 engine(static_cast<unsigned>(*rc::gen::inRange(0, 1 << 30)));
   for (int k = 0; k < count; ++k) {
     auto r = [&engine](const Rational& lo, const Rational& hi) -> Rational {
-      return lo + (hi - lo) * Rational(std::uniform_int_distribution<int>(1, 999)(engine), 1000);
+      Rational f(std::uniform_int_distribution<int>(1, 999)(engine), 1000);
+      f.canonicalize();  // mpq_class(n, d) is not canonical, and exact equality needs canonical operands
+      return lo + (hi - lo) * f;
     };
     const PointQ3 p = {r(b.min.x, b.max.x), r(b.min.y, b.max.y), r(b.min.z, b.max.z)};
     const PointLocation3 loc = arr.locate(p);

@@ -15,9 +15,11 @@
 //   boundary triangles is on the box. `inside[c][i]` is cell c's side of halfspace i (complement applied).
 // - Edges: every segment where refined triangles meet, with its triangles sorted radially (exact orientation
 //   determinants; ArrEdge3 says which way round). Edges are ordered by (a, b).
-// - Floating shells (a surface no other boundary or the box reaches) are joined to the region around them by an
-//   exact ray from their vertex of largest x (hits at the ray's origin ignored). Known gap: two shells that touch
-//   only at a vertex are not joined there (each is nested by its own ray).
+// - Floating shells (triangles connected across edges, none on the box: a surface no other boundary crosses, also
+//   when it touches another shell or the box only at a vertex) are joined to the cell around them by an exact ray
+//   from the centroid of one of their triangles: the open segment from the ray's last crossing of the shell to its
+//   next crossing of another one lies in that cell. Rays that cross either of these two at an edge or vertex, or
+//   two triangles at once, or run inside a triangle's plane are replaced by others.
 // - Cell ids: in order of the lowest triangle side (2 * triangle + (front ? 0 : 1)) bounding them.
 #pragma once
 
@@ -27,6 +29,8 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace hsx {
@@ -60,8 +64,16 @@ struct PointLocation3 {
   int index = -1;
 };
 
+/// Wall-clock seconds of Arrangement3::build's phases, in the order they run (for `hsx bench --3d --phases`).
+struct Arrangement3Timings {
+  std::vector<std::pair<std::string, double>> phases;  ///< (phase name, seconds); a repeated name adds up
+  /// Adds `seconds` to the phase called `name` (appended when new).
+  void add(const std::string& name, double seconds);
+};
+
 struct Arrangement3Options {
   bool volumes = true;  ///< compute every cell's exact volume
+  Arrangement3Timings* timings = nullptr;  ///< when set, build adds each phase's time to it (not printed anywhere)
   int threads = 0;      ///< worker threads for the per-triangle work; 0: hardware concurrency. The result does not
                         ///< depend on it (same triangles, same order).
 };
@@ -85,7 +97,8 @@ class Arrangement3 {
   const std::vector<int>& sample_triangles() const { return sample_triangles_; }
 
   /// Exact point location of a rational point: the cell, triangle (interior), edge or vertex holding it, Outside
-  /// beyond the domain box. Exact ray shooting over every triangle (interval boxes skip most): O(triangles).
+  /// beyond the domain box. Exact ray shooting over every triangle (interval boxes skip most): O(triangles); the
+  /// triangles' planes are computed on the first call.
   PointLocation3 locate(const PointQ3& p) const;
 
  private:

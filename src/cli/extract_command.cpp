@@ -188,7 +188,8 @@ MeshTexts mesh_texts(const LoadedInput& in, const bsh::Labelling& labelling, con
   return t;
 }
 
-void run_extract(const ExtractCommandOptions& o) {
+/// The method the options name, after checking every option's value (InputError naming the option).
+bsh::Method checked_method(const ExtractCommandOptions& o) {
   const auto method = bsh::method_from_string(o.method);
   if (!method) throw InputError("--method: unknown method \"" + o.method + "\" (graphcut, beam, best-first, brute-force, exact)");
   if (o.beam_width < 1) throw InputError("--beam-width: must be at least 1");
@@ -202,6 +203,11 @@ void run_extract(const ExtractCommandOptions& o) {
     throw InputError("--states-svg: only the beam and best-first searches go through states (--method beam or "
                      "best-first)");
   if (o.obj_path == "-") throw InputError("--obj: needs a file (its .mtl is written beside it), not '-'");
+  return *method;
+}
+
+void run_extract(const ExtractCommandOptions& o) {
+  const bsh::Method method = checked_method(o);
   const std::string mtl_path = o.obj_path.empty() ? "" : mtl_path_for(o.obj_path);
   OutputFiles out;  // checked before computing, written all or none at the end
   out.expect(o.json_path, "--json");
@@ -223,7 +229,7 @@ void run_extract(const ExtractCommandOptions& o) {
         throw InputError(std::string(option) + ": the boundary mesh needs a 3D scene (or a BSH config.json)");
 
   bsh::ExtractOptions options;
-  options.method = *method;
+  options.method = method;
   options.beam_width = o.beam_width;
   options.max_states = o.max_states;
   options.max_graph_cuts = o.max_graph_cuts;

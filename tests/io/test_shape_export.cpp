@@ -7,6 +7,7 @@
 #include <hsx/complex/from_arrangement3.hpp>
 #include <hsx/geometry/mesh3.hpp>
 #include <hsx/io/mesh_export.hpp>
+#include <hsx/io/result_json.hpp>
 #include <hsx/io/svg.hpp>
 #include <hsx/io/svg3.hpp>
 
@@ -390,4 +391,16 @@ TEST_CASE("svg_grid nests pictures in rows and columns", "[io][svg]") {
   CHECK(count(grid, "class=\"face\"") == 3 * count(one, "class=\"face\""));
   CHECK_THROWS_AS(svg_grid({"<g/>"}, 1), std::invalid_argument);
   CHECK_THROWS_AS(svg_grid({one}, 0), std::invalid_argument);
+}
+
+TEST_CASE("closed_form_terms counts the terms of a Measure's closed form", "[io][result]") {
+  CHECK(closed_form_terms("") == 0);
+  CHECK(closed_form_terms("-1/2") == 1);
+  CHECK(closed_form_terms("1 - sqrt(2)") == 2);
+  CHECK(closed_form_terms("4/3*pi + 1/2 + 3*sqrt(2) + sqrt(5 + 2*sqrt(6))") == 4);
+  Measure m = Rational(1, 3);
+  const int primes[] = {2, 3, 5, 7, 11, 13, 17};
+  for (int p : primes) m += Measure::sqrt_of(Rational(p)) * Rational(-p, 7);
+  REQUIRE(m.exact_string());
+  CHECK(closed_form_terms(*m.exact_string()) == 8);
 }

@@ -140,25 +140,34 @@ std::string shape_picture(const LoadedInput& in, const bsh::Labelling& labelling
   return arrangement_svg(*in.scene, in.arranged->arrangement, in.complex(), svg);
 }
 
-/// The search's states along the path to the result (ExtractResult::steps), one picture each, in a grid: each
-/// state's boundary is the graph cut without its removed supports, computed again here.
+/// The boundary of state k on the search's path: the beam of width 1 expands exactly the states of its path, in
+/// order (each expansion keeps one child, the next state), so with ExtractOptions::record_states they are
+/// r.expanded; otherwise the graph cut without the state's removed supports, computed again.
+bsh::Labelling state_labelling(const bsh::Problem& problem, const bsh::ExtractResult& r, int beam_width,
+                               std::size_t k) {
+  if (r.method == bsh::Method::Beam && beam_width == 1 && r.expanded.size() == r.steps.size()) return r.expanded[k];
+  bsh::CutConstraints constraints;
+  constraints.removed.assign(problem.support_count(), 0);
+  for (int g : r.steps[k]) constraints.removed[static_cast<std::size_t>(g)] = 1;
+  return bsh::graph_cut(problem, constraints).labelling;
+}
+
+/// The search's states along the path to the result (ExtractResult::steps), one picture each, in a grid.
 std::string states_picture(const LoadedInput& in, const bsh::Problem& problem, const bsh::ExtractResult& r,
-                           bool labels) {
+                           int beam_width, bool labels) {
   const Complex& c = in.complex();
   std::vector<std::string> pictures;
   for (std::size_t k = 0; k < r.steps.size(); ++k) {
-    bsh::CutConstraints constraints;
-    constraints.removed.assign(problem.support_count(), 0);
-    for (int g : r.steps[k]) constraints.removed[static_cast<std::size_t>(g)] = 1;
-    const bsh::CutResult cut = bsh::graph_cut(problem, constraints);
+    const bsh::Labelling labelling = state_labelling(problem, r, beam_width, k);
+    const bsh::Energy energy = bsh::energy(problem, labelling);
     std::string title = "state " + std::to_string(k) + (r.steps[k].empty() ? ":" : ": removed");
     const std::vector<char> removed = patch_flags(c, r.steps[k]);
     for (std::size_t p = 0; p < removed.size(); ++p)
       if (removed[p]) title += " p" + std::to_string(p);
     if (r.steps[k].empty()) title += " graph cut";
-    title += " | " + std::to_string(cut.energy.missing_samples) + " missing, " + (c.dimension == 3 ? "area " : "length ") +
-             cut.energy.measure.decimal_string(7);
-    pictures.push_back(shape_picture(in, cut.labelling, removed, title, labels, true));
+    title += " | " + std::to_string(energy.missing_samples) + " missing, " + (c.dimension == 3 ? "area " : "length ") +
+             energy.measure.decimal_string(7);
+    pictures.push_back(shape_picture(in, labelling, removed, title, labels, true));
   }
   if (pictures.empty())  // stopped before a sample-connected state, or replaced by the oracle's optimum
     pictures.push_back(shape_picture(in, r.labelling, {}, "the result (" +
@@ -238,6 +247,7 @@ void run_extract(const ExtractCommandOptions& o) {
   options.time_limit = o.time_limit;
   options.max_ties = o.max_ties;
   options.compare.max_bits = o.precision_bits;
+  options.record_states = !o.states_svg_path.empty();
   if (!o.quiet)
     options.progress = [](const bsh::SearchProgress& p) {
       std::cerr << "\r[hsx] " << (p.lower_bound ? "nodes " : "states expanded ") << p.states_expanded << ", queue "
@@ -264,7 +274,7 @@ void run_extract(const ExtractCommandOptions& o) {
                              o.input + " - " + bsh::to_string(result.method) + (result.optimal ? " (optimal)" : ""),
                              o.labels, false);
   }
-  if (!o.states_svg_path.empty()) states_text = states_picture(in, problem, result, o.labels);
+  if (!o.states_svg_path.empty()) states_text = states_picture(in, problem, result, o.beam_width, o.labels);
   MeshTexts mesh = in.scene3 ? mesh_texts(in, result.labelling, o, mtl_path) : MeshTexts{};
   out.put(o.json_path, json_text);
   out.put(o.svg_path, svg_text);

@@ -39,18 +39,19 @@ struct ExtractCommandOptions {
   bool quiet = false;
 };
 
-/// Closed forms with more terms than this are left to the JSON; the summary gives their number of terms.
-constexpr std::size_t kSummaryTerms = 6;
+/// Closed forms with more terms or characters than these are left to the JSON; the summary gives their size.
+constexpr std::size_t kSummaryTerms = 6, kSummaryCharacters = 160;
 
-/// "DECIMAL = CLOSED FORM", or "DECIMAL (closed form: N terms, in --json)" when it is long.
+/// "DECIMAL = CLOSED FORM", or "DECIMAL (closed form: N terms, C characters, in --json)" when it is long.
 std::string measure_text(const Measure& m) {
   std::string s = m.decimal_string(30);
   if (auto exact = m.exact_string()) {
     const std::size_t terms = closed_form_terms(*exact);
-    if (terms <= kSummaryTerms)
+    if (terms <= kSummaryTerms && exact->size() <= kSummaryCharacters)
       s += " = " + *exact;
     else
-      s += " (closed form: " + std::to_string(terms) + " terms, in --json)";
+      s += " (closed form: " + std::to_string(terms) + (terms == 1 ? " term, " : " terms, ") +
+           std::to_string(exact->size()) + " characters, in --json)";
   }
   return s;
 }
@@ -340,7 +341,7 @@ void add_extract_command(CLI::App& app) {
                 "--obj and --off coordinates as exact rationals (\"-7/3\"; hsx reads them, most viewers do not)");
   cmd->add_option("--json", o->json_path,
                   "write the hsx-result/1 document ('-' for stdout); it holds every measure's exact closed form, "
-                  "which the summary gives only when it has at most 6 terms (else their number)")
+                  "which the summary gives only when it is short (at most 6 terms and 160 characters; else its size)")
       ->check(output_path());
   cmd->add_flag("--no-timing", o->no_timing, "leave seconds out of the JSON (byte-reproducible output)");
   cmd->add_flag("-q,--quiet", o->quiet, "no summary, no progress");

@@ -1,10 +1,15 @@
 // hsx extract INPUT --method graphcut|beam|best-first|brute-force|exact: the BSH shape (paper, Sections 3 and 5).
 #include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/algorithms/bsh/graph_cut.hpp>
 #include "cli/commands.hpp"
 #include <hsx/io/input.hpp>
 #include <hsx/io/files.hpp>
+#include <hsx/io/mesh_export.hpp>
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/svg.hpp>
+#include <hsx/io/svg3.hpp>
+
+#include <filesystem>
 
 #include <iostream>
 #include <memory>
@@ -25,18 +30,35 @@ struct ExtractCommandOptions {
   double time_limit = 0;
   int precision_bits = 2048;
   int max_ties = 16;
-  std::string svg_path, json_path;
+  std::string svg_path, json_path, states_svg_path;
+  std::string obj_path, ply_path, off_path;  ///< 3D: the shape's boundary mesh
+  bool exact_coordinates = false;
   bool show_removed = false;
   bool labels = false;
   bool no_timing = false;
   bool quiet = false;
 };
 
-std::string energy_text(const bsh::Energy& e) {
-  std::string s = std::to_string(e.missing_samples) + " missing sample" + (e.missing_samples == 1 ? "" : "s") +
-                  ", boundary measure " + e.measure().decimal_string(30);
-  if (auto exact = e.measure().exact_string()) s += " = " + *exact;
+/// Closed forms with more terms or characters than these are left to the JSON; the summary gives their size.
+constexpr std::size_t kSummaryTerms = 6, kSummaryCharacters = 160;
+
+/// "DECIMAL = CLOSED FORM", or "DECIMAL (closed form: N terms, C characters, in --json)" when it is long.
+std::string measure_text(const Measure& m) {
+  std::string s = m.decimal_string(30);
+  if (auto exact = m.exact_string()) {
+    const std::size_t terms = closed_form_terms(*exact);
+    if (terms <= kSummaryTerms && exact->size() <= kSummaryCharacters)
+      s += " = " + *exact;
+    else
+      s += " (closed form: " + std::to_string(terms) + (terms == 1 ? " term, " : " terms, ") +
+           std::to_string(exact->size()) + " characters, in --json)";
+  }
   return s;
+}
+
+std::string energy_text(const bsh::Energy& e, int dimension) {
+  return std::to_string(e.missing_samples) + " missing sample" + (e.missing_samples == 1 ? "" : "s") +
+         (dimension == 3 ? ", boundary area " : ", boundary length ") + measure_text(e.measure());
 }
 
 /// A lower bound or gap: "(missing samples, measure)".
@@ -54,10 +76,9 @@ std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bs
   out << "  optimal " << (r.optimal ? "yes (proven)" : "not proven");
   if (!r.stopped_by.empty()) out << "  stopped by " << r.stopped_by;
   if (!r.optimality_note.empty()) out << " (" << r.optimality_note << ")";
-  out << "\nenergy " << energy_text(r.energy) << "\n";
+  out << "\nenergy " << energy_text(r.energy, in.complex().dimension) << "\n";
   const Measure area = bsh::inside_measure(in.complex(), r.labelling);
-  out << (in.complex().dimension == 3 ? "volume " : "area ") << area.decimal_string(30);
-  if (auto exact = area.exact_string()) out << " = " << *exact;
+  out << (in.complex().dimension == 3 ? "volume " : "area ") << measure_text(area);
   out << "\nsample-connected " << (r.sample_connected ? "yes" : "no") << "  ties ";
   if (!r.ties.checked)
     out << "not checked by this method";
@@ -70,8 +91,8 @@ std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bs
   const auto boundary = bsh::boundary_supports(problem, r.labelling);
   out << "\nboundary " << boundary.size() << " patch" << (boundary.size() == 1 ? "" : "es") << ":";
   for (int g : boundary) {
-    const Patch& p = in.complex().patches[problem.supports()[g].patches.front()];
-    out << " " << in.complex().halfspace_names[p.halfspace] << "#" << problem.supports()[g].patches.front();
+    const int patch = oriented_patch(in.complex(), g, r.labelling);
+    out << " " << in.complex().halfspace_names[in.complex().patches[patch].halfspace] << "#" << patch;
   }
   out << "\nstats " << r.stats.graph_cuts << " graph cuts (" << r.stats.uncertified_cuts << " uncertified), "
       << r.stats.states_expanded << " states expanded, " << r.stats.states_created << " created";
@@ -85,7 +106,100 @@ std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bs
   return out.str();
 }
 
-void run_extract(const ExtractCommandOptions& o) {
+/// Per patch, 1 for the patches of the supports in `supports` (support ids).
+std::vector<char> patch_flags(const Complex& c, const std::vector<int>& supports) {
+  std::vector<char> flags(c.patches.size(), 0);
+  for (int g : supports)
+    for (int p : c.supports[static_cast<std::size_t>(g)]) flags[static_cast<std::size_t>(p)] = 1;
+  return flags;
+}
+
+/// A picture of the shape `labelling` (2D: the arrangement with the shape filled; 3D: its boundary in four views,
+/// or in the isometric view alone when `small`), `highlight` (per patch, may be empty) marked as removed.
+std::string shape_picture(const LoadedInput& in, const bsh::Labelling& labelling, const std::vector<char>& highlight,
+                          const std::string& title, bool labels, bool small) {
+  if (in.scene3) {
+    Svg3Options svg;
+    svg.title = title;
+    svg.cell_fill = labelling;
+    svg.show_cell_ids = svg.show_patch_ids = labels;
+    svg.highlight_patches = highlight;
+    svg.highlight_legend = "removed patches";
+    if (small) {
+      svg.width = 560;
+      svg.views = {default_svg_views3().back()};
+    }
+    return arrangement_svg3(*in.scene3, *in.arranged3, svg);
+  }
+  SvgOptions svg;
+  svg.title = title;
+  svg.cell_fill = labelling;
+  svg.show_cell_ids = svg.show_patch_ids = labels;
+  svg.highlight_legend = "removed patches";
+  svg.highlight_patches = highlight;
+  if (small) svg.width = 480;
+  return arrangement_svg(*in.scene, in.arranged->arrangement, in.complex(), svg);
+}
+
+/// The boundary of state k on the search's path: the beam of width 1 expands exactly the states of its path, in
+/// order (each expansion keeps one child, the next state), so with ExtractOptions::record_states they are
+/// r.expanded; otherwise the graph cut without the state's removed supports, computed again.
+bsh::Labelling state_labelling(const bsh::Problem& problem, const bsh::ExtractResult& r, int beam_width,
+                               std::size_t k) {
+  if (r.method == bsh::Method::Beam && beam_width == 1 && r.expanded.size() == r.steps.size()) return r.expanded[k];
+  bsh::CutConstraints constraints;
+  constraints.removed.assign(problem.support_count(), 0);
+  for (int g : r.steps[k]) constraints.removed[static_cast<std::size_t>(g)] = 1;
+  return bsh::graph_cut(problem, constraints).labelling;
+}
+
+/// The search's states along the path to the result (ExtractResult::steps), one picture each, in a grid.
+std::string states_picture(const LoadedInput& in, const bsh::Problem& problem, const bsh::ExtractResult& r,
+                           int beam_width, bool labels) {
+  const Complex& c = in.complex();
+  std::vector<std::string> pictures;
+  for (std::size_t k = 0; k < r.steps.size(); ++k) {
+    const bsh::Labelling labelling = state_labelling(problem, r, beam_width, k);
+    const bsh::Energy energy = bsh::energy(problem, labelling);
+    std::string title = "state " + std::to_string(k) + (r.steps[k].empty() ? ":" : ": removed");
+    const std::vector<char> removed = patch_flags(c, r.steps[k]);
+    for (std::size_t p = 0; p < removed.size(); ++p)
+      if (removed[p]) title += " p" + std::to_string(p);
+    if (r.steps[k].empty()) title += " graph cut";
+    title += " | " + std::to_string(energy.missing_samples) + " missing, " + (c.dimension == 3 ? "area " : "length ") +
+             energy.measure().decimal_string(7);
+    pictures.push_back(shape_picture(in, labelling, removed, title, labels, true));
+  }
+  if (pictures.empty())  // stopped before a sample-connected state, or replaced by the oracle's optimum
+    pictures.push_back(shape_picture(in, r.labelling, {}, "the result (" +
+                                         std::string(r.stopped_by.empty() ? r.optimality_note : "stopped by " + r.stopped_by) +
+                                         "): no path of states", labels, true));
+  return svg_grid(pictures, 3);
+}
+
+/// The shape's boundary mesh outputs (3D), by path; empty texts for outputs not asked for.
+struct MeshTexts {
+  std::string obj, mtl, ply, off;
+};
+
+MeshTexts mesh_texts(const LoadedInput& in, const bsh::Labelling& labelling, const ExtractCommandOptions& o,
+                     const std::string& mtl_path) {
+  MeshTexts t;
+  MeshExportOptions options;
+  options.exact = o.exact_coordinates;
+  if (!o.obj_path.empty()) {
+    ObjText obj = shape_obj(*in.scene3, *in.arranged3, labelling,
+                            std::filesystem::path(mtl_path).filename().string(), options);
+    t.obj = std::move(obj.obj);
+    t.mtl = std::move(obj.mtl);
+  }
+  if (!o.ply_path.empty()) t.ply = shape_ply(*in.scene3, *in.arranged3, labelling);
+  if (!o.off_path.empty()) t.off = shape_off(*in.scene3, *in.arranged3, labelling, options);
+  return t;
+}
+
+/// The method the options name, after checking every option's value (InputError naming the option).
+bsh::Method checked_method(const ExtractCommandOptions& o) {
   const auto method = bsh::method_from_string(o.method);
   if (!method) throw InputError("--method: unknown method \"" + o.method + "\" (graphcut, beam, best-first, brute-force, exact)");
   if (o.beam_width < 1) throw InputError("--beam-width: must be at least 1");
@@ -95,15 +209,37 @@ void run_extract(const ExtractCommandOptions& o) {
   if (o.max_nodes < 0) throw InputError("--max-nodes: must be >= 0");
   if (o.time_limit < 0) throw InputError("--time-limit: must be >= 0");
   if (o.precision_bits < 64) throw InputError("--precision: at least 64 bits");
+  if (!o.states_svg_path.empty() && *method != bsh::Method::Beam && *method != bsh::Method::BestFirst)
+    throw InputError("--states-svg: only the beam and best-first searches go through states (--method beam or "
+                     "best-first)");
+  if (o.obj_path == "-") throw InputError("--obj: needs a file (its .mtl is written beside it), not '-'");
+  return *method;
+}
+
+void run_extract(const ExtractCommandOptions& o) {
+  const bsh::Method method = checked_method(o);
+  const std::string mtl_path = o.obj_path.empty() ? "" : mtl_path_for(o.obj_path);
   OutputFiles out;  // checked before computing, written all or none at the end
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
+  out.expect(o.states_svg_path, "--states-svg");
+  out.expect(o.obj_path, "--obj");
+  out.expect(mtl_path, "--obj (its .mtl)");
+  out.expect(o.ply_path, "--ply");
+  out.expect(o.off_path, "--off");
   const LoadedInput in = load_input(o.input, o.arrangement);
-  if (!o.svg_path.empty() && !in.scene)
-    throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
+  if (!in.scene && !in.scene3)
+    for (const auto& [path, option] : {std::pair{o.svg_path, "--svg"}, {o.states_svg_path, "--states-svg"}})
+      if (!path.empty())
+        throw InputError(std::string(option) +
+                         ": pictures need a scene (an hsx-complex/1 document carries no drawing)");
+  if (!in.scene3)
+    for (const auto& [path, option] : {std::pair{o.obj_path, "--obj"}, {o.ply_path, "--ply"}, {o.off_path, "--off"}})
+      if (!path.empty())
+        throw InputError(std::string(option) + ": the boundary mesh needs a 3D scene (or a BSH config.json)");
 
   bsh::ExtractOptions options;
-  options.method = *method;
+  options.method = method;
   options.beam_width = o.beam_width;
   options.max_states = o.max_states;
   options.max_graph_cuts = o.max_graph_cuts;
@@ -112,6 +248,7 @@ void run_extract(const ExtractCommandOptions& o) {
   options.time_limit = o.time_limit;
   options.max_ties = o.max_ties;
   options.compare.max_bits = o.precision_bits;
+  options.record_states = !o.states_svg_path.empty();
   if (!o.quiet)
     options.progress = [](const bsh::SearchProgress& p) {
       std::cerr << "\r[hsx] " << (p.lower_bound ? "nodes " : "states expanded ") << p.states_expanded << ", queue "
@@ -126,22 +263,27 @@ void run_extract(const ExtractCommandOptions& o) {
   const bsh::ExtractResult result = bsh::extract(problem, options);
   if (options.progress && result.stats.seconds > 0.5) std::cerr << "\n";
 
-  std::string json_text, svg_text;
+  std::string json_text, svg_text, states_text;
   if (!o.json_path.empty()) json_text = result_to_json(problem, result, in.pieces(), !o.no_timing).dump(2) + "\n";
   if (!o.svg_path.empty()) {
-    SvgOptions svg;
-    svg.title = o.input + " - " + bsh::to_string(result.method) + (result.optimal ? " (optimal)" : "");
-    svg.cell_fill = result.labelling;
-    svg.show_cell_ids = svg.show_patch_ids = o.labels;
+    std::vector<char> highlight;
     if (o.show_removed) {
-      svg.highlight_legend = "removed patches";
-      svg.highlight_patches.assign(in.complex().patches.size(), 0);
-      for (int p : patches_of_supports(in.complex(), result.removed)) svg.highlight_patches[p] = 1;
+      highlight.assign(in.complex().patches.size(), 0);
+      for (int p : patches_of_supports(in.complex(), result.removed)) highlight[p] = 1;
     }
-    svg_text = arrangement_svg(*in.scene, in.arranged->arrangement, in.complex(), svg);
+    svg_text = shape_picture(in, result.labelling, highlight,
+                             o.input + " - " + bsh::to_string(result.method) + (result.optimal ? " (optimal)" : ""),
+                             o.labels, false);
   }
+  if (!o.states_svg_path.empty()) states_text = states_picture(in, problem, result, o.beam_width, o.labels);
+  MeshTexts mesh = in.scene3 ? mesh_texts(in, result.labelling, o, mtl_path) : MeshTexts{};
   out.put(o.json_path, json_text);
   out.put(o.svg_path, svg_text);
+  out.put(o.states_svg_path, states_text);
+  out.put(o.obj_path, std::move(mesh.obj));
+  out.put(mtl_path, std::move(mesh.mtl));
+  out.put(o.ply_path, std::move(mesh.ply));
+  out.put(o.off_path, std::move(mesh.off));
   out.commit();
   if (!o.quiet && o.json_path != "-") std::cout << summary(in, problem, result, o);
 }
@@ -152,7 +294,9 @@ void add_extract_command(CLI::App& app) {
   auto o = std::make_shared<ExtractCommandOptions>();
   CLI::App* cmd = app.add_subcommand("extract", "Extract the BSH shape (orientation-preserving, sample-connected, "
                                                 "least energy) of a scene or a complex");
-  cmd->add_option("INPUT", o->input, "hsx-scene/1 or hsx-complex/1 JSON file")->required();
+  cmd->add_option("INPUT", o->input,
+                  "hsx-scene/1 (2D or 3D) or hsx-complex/1 JSON file, or a BSH authors' config.json")
+      ->required();
   cmd->add_option("--method", o->method, "graphcut | beam | best-first | brute-force | exact (default beam)");
   cmd->add_option("--beam-width", o->beam_width, "K for the beam search (default 1, as in the paper)");
   cmd->add_option("--max-states", o->max_states, "stop after expanding N states (0: no limit; deterministic)");
@@ -170,11 +314,35 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons (default 2048)");
   cmd->add_option("--max-ties", o->max_ties, "stop enumerating optimal boundaries after N (default 16)")
       ->check(CLI::Range(1, 1 << 30));
-  cmd->add_option("--svg", o->svg_path, "write a picture of the shape: its boundary bold, missing samples ringed red")
+  cmd->add_option("--svg", o->svg_path,
+                  "write a picture of the shape, missing samples ringed red: 2D its boundary bold; 3D its boundary "
+                  "patches in four orthographic views (io/svg3.hpp)")
       ->check(output_path());
   cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
   cmd->add_flag("--show-removed", o->show_removed, "highlight the removed patches in the picture (paper Fig. 10)");
-  cmd->add_option("--json", o->json_path, "write the hsx-result/1 document ('-' for stdout)")->check(output_path());
+  cmd->add_option("--states-svg", o->states_svg_path,
+                  "beam and best-first: write the states along the search's path to the result as one picture, a "
+                  "panel per state (its boundary, its removed patches highlighted, its energy; 3D: the isometric "
+                  "view), as in the paper's Fig. 10; each state's graph cut is computed again for it")
+      ->check(output_path());
+  cmd->add_option("--obj", o->obj_path,
+                  "3D: write the shape's boundary as an OBJ mesh (outward, one group per patch, a material per "
+                  "halfspace in the .mtl written beside it; io/mesh_export.hpp)")
+      ->check(output_path());
+  cmd->add_option("--ply", o->ply_path,
+                  "3D: write the shape's boundary as an ASCII PLY mesh (outward; per face patch, halfspace, outside "
+                  "and inside cell, colour)")
+      ->check(output_path());
+  cmd->add_option("--off", o->off_path,
+                  "3D: write the shape's boundary as an OFF mesh (outward; face colours by halfspace, patch face "
+                  "ranges in '# patch' comment lines)")
+      ->check(output_path());
+  cmd->add_flag("--exact-coordinates", o->exact_coordinates,
+                "--obj and --off coordinates as exact rationals (\"-7/3\"; hsx reads them, most viewers do not)");
+  cmd->add_option("--json", o->json_path,
+                  "write the hsx-result/1 document ('-' for stdout); it holds every measure's exact closed form, "
+                  "which the summary gives only when it is short (at most 6 terms and 160 characters; else its size)")
+      ->check(output_path());
   cmd->add_flag("--no-timing", o->no_timing, "leave seconds out of the JSON (byte-reproducible output)");
   cmd->add_flag("-q,--quiet", o->quiet, "no summary, no progress");
   add_arrangement_limits(cmd, o->arrangement);

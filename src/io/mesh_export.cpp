@@ -95,12 +95,13 @@ std::vector<ExportedFace> exported_faces(const Arranged3& a) {
   return faces;
 }
 
-std::string arrangement_ply(const Scene3& scene, const Arranged3& a) {
-  check_fit(scene, a);
-  const std::vector<ExportedFace> faces = exported_faces(a);
+namespace {
+
+std::string ply_text(const Scene3& scene, const Arranged3& a, const std::vector<ExportedFace>& faces,
+                     const std::string& what) {
   std::vector<int> used;
   const std::vector<int> id = renumber(a.arrangement, faces, &used);
-  std::string s = "ply\nformat ascii 1.0\ncomment hsx arrangement: the refined surfaces, one face per triangle\n";
+  std::string s = "ply\nformat ascii 1.0\ncomment hsx " + what + "\n";
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i)
     s += "comment halfspace " + std::to_string(i) + " " + comment_text(scene.halfspaces[i].name) + "\n";
   s += "element vertex " + std::to_string(used.size()) +
@@ -121,19 +122,16 @@ std::string arrangement_ply(const Scene3& scene, const Arranged3& a) {
   return s;
 }
 
-ObjText arrangement_obj(const Scene3& scene, const Arranged3& a, const std::string& mtl_name,
-                        const MeshExportOptions& options) {
-  check_fit(scene, a);
+ObjText obj_text(const Scene3& scene, const Arranged3& a, std::vector<ExportedFace> faces,
+                 const std::string& mtl_name, const MeshExportOptions& options, const std::string& what) {
   if (mtl_name.empty() || mtl_name.find_first_of("\r\n") != std::string::npos)
-    throw std::invalid_argument("arrangement_obj: bad material library name");
-  std::vector<ExportedFace> faces = exported_faces(a);
+    throw std::invalid_argument("OBJ export: bad material library name");
   std::vector<int> used;
   const std::vector<int> id = renumber(a.arrangement, faces, &used);
   std::stable_sort(faces.begin(), faces.end(),
                    [](const ExportedFace& x, const ExportedFace& y) { return x.patch < y.patch; });
   ObjText out;
-  out.obj =
-      "# hsx arrangement: the refined surfaces, " + std::to_string(faces.size()) + " triangles, one group per patch\n";
+  out.obj = "# hsx " + what + ", " + std::to_string(faces.size()) + " triangles, one group per patch\n";
   out.obj += "mtllib " + mtl_name + "\n";
   for (int v : used)
     out.obj += "v " + coordinates(a.arrangement.vertices()[static_cast<std::size_t>(v)], options.exact) + "\n";
@@ -147,7 +145,7 @@ ObjText arrangement_obj(const Scene3& scene, const Arranged3& a, const std::stri
     out.obj += "f " + std::to_string(id[f.vertices[0]] + 1) + " " + std::to_string(id[f.vertices[1]] + 1) + " " +
                std::to_string(id[f.vertices[2]] + 1) + "\n";
   }
-  out.mtl = "# hsx arrangement: one material per halfspace\n";
+  out.mtl = "# hsx " + what + ": one material per halfspace\n";
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
     const auto c = rgb(static_cast<int>(i));
     char kd[64];
@@ -155,6 +153,110 @@ ObjText arrangement_obj(const Scene3& scene, const Arranged3& a, const std::stri
     out.mtl += "# " + comment_text(scene.halfspaces[i].name) + "\nnewmtl halfspace_" + std::to_string(i) + "\n" + kd;
   }
   return out;
+}
+
+/// "# patch <k> halfspace <i> faces <first> <count>" for each run of faces of one patch (faces in patch order).
+std::string patch_ranges(const std::vector<ExportedFace>& faces) {
+  std::string s;
+  for (std::size_t first = 0; first < faces.size();) {
+    std::size_t end = first;
+    while (end < faces.size() && faces[end].patch == faces[first].patch) ++end;
+    s += "# patch " + std::to_string(faces[first].patch) + " halfspace " + std::to_string(faces[first].halfspace) +
+         " faces " + std::to_string(first) + " " + std::to_string(end - first) + "\n";
+    first = end;
+  }
+  return s;
+}
+
+const char* const kArrangementWhat = "arrangement: the refined surfaces, one face per triangle";
+const char* const kShapeWhat = "shape boundary: outward (normals out of the shape), one face per triangle";
+
+}  // namespace
+
+std::vector<ExportedFace> shape_faces(const Arranged3& a, const std::vector<char>& labelling) {
+  const Complex& c = a.complex;
+  if (labelling.size() != c.cells.size())
+    throw std::invalid_argument("shape_faces: the labelling has " + std::to_string(labelling.size()) +
+                                " entries for " + std::to_string(c.cells.size()) + " cells");
+  for (std::size_t k = 0; k < c.cells.size(); ++k)
+    if (c.cells[k].outer && labelling[k])
+      throw std::invalid_argument("shape_faces: outer cell " + std::to_string(k) + " is labelled inside");
+  auto inside = [&](int cell) { return cell >= 0 && labelling[static_cast<std::size_t>(cell)] != 0; };
+  const auto& triangles = a.arrangement.triangles();
+  std::vector<ExportedFace> faces;
+  for (const std::vector<int>& group : c.supports) {
+    if (group.empty()) continue;
+    const Patch& first = c.patches.at(static_cast<std::size_t>(group.front()));
+    if (inside(first.inside_cell) == inside(first.outside_cell)) continue;  // not on the boundary
+    int patch = group.front();
+    for (int p : group)
+      if (inside(c.patches[static_cast<std::size_t>(p)].inside_cell)) {
+        patch = p;
+        break;
+      }
+    for (int t : c.patches[static_cast<std::size_t>(patch)].pieces) {
+      const ArrTriangle3& tri = triangles.at(static_cast<std::size_t>(t));
+      ExportedFace f;
+      f.triangle = t;
+      f.patch = patch;
+      f.halfspace = c.patches[static_cast<std::size_t>(patch)].halfspace;
+      f.vertices = tri.vertices;
+      f.front_cell = tri.front_cell;
+      f.back_cell = tri.back_cell;
+      if (inside(f.front_cell)) {  // turn the normal out of the shape
+        std::swap(f.vertices[1], f.vertices[2]);
+        std::swap(f.front_cell, f.back_cell);
+      }
+      faces.push_back(f);
+    }
+  }
+  std::sort(faces.begin(), faces.end(), [](const ExportedFace& x, const ExportedFace& y) {
+    return x.patch != y.patch ? x.patch < y.patch : x.triangle < y.triangle;
+  });
+  return faces;
+}
+
+std::string arrangement_ply(const Scene3& scene, const Arranged3& a) {
+  check_fit(scene, a);
+  return ply_text(scene, a, exported_faces(a), kArrangementWhat);
+}
+
+ObjText arrangement_obj(const Scene3& scene, const Arranged3& a, const std::string& mtl_name,
+                        const MeshExportOptions& options) {
+  check_fit(scene, a);
+  return obj_text(scene, a, exported_faces(a), mtl_name, options, kArrangementWhat);
+}
+
+std::string shape_ply(const Scene3& scene, const Arranged3& a, const std::vector<char>& labelling) {
+  check_fit(scene, a);
+  return ply_text(scene, a, shape_faces(a, labelling), kShapeWhat);
+}
+
+ObjText shape_obj(const Scene3& scene, const Arranged3& a, const std::vector<char>& labelling,
+                  const std::string& mtl_name, const MeshExportOptions& options) {
+  check_fit(scene, a);
+  return obj_text(scene, a, shape_faces(a, labelling), mtl_name, options, kShapeWhat);
+}
+
+std::string shape_off(const Scene3& scene, const Arranged3& a, const std::vector<char>& labelling,
+                      const MeshExportOptions& options) {
+  check_fit(scene, a);
+  const std::vector<ExportedFace> faces = shape_faces(a, labelling);
+  std::vector<int> used;
+  const std::vector<int> id = renumber(a.arrangement, faces, &used);
+  std::string s = "OFF\n# hsx " + std::string(kShapeWhat) + "; face colours by halfspace\n";
+  for (std::size_t i = 0; i < scene.halfspaces.size(); ++i)
+    s += "# halfspace " + std::to_string(i) + " " + comment_text(scene.halfspaces[i].name) + "\n";
+  s += patch_ranges(faces);
+  s += std::to_string(used.size()) + " " + std::to_string(faces.size()) + " 0\n";
+  for (int v : used) s += coordinates(a.arrangement.vertices()[static_cast<std::size_t>(v)], options.exact) + "\n";
+  for (const ExportedFace& f : faces) {
+    const auto c = rgb(f.halfspace);
+    s += "3 " + std::to_string(id[f.vertices[0]]) + " " + std::to_string(id[f.vertices[1]]) + " " +
+         std::to_string(id[f.vertices[2]]) + " " + std::to_string(c[0]) + " " + std::to_string(c[1]) + " " +
+         std::to_string(c[2]) + "\n";
+  }
+  return s;
 }
 
 std::string mtl_path_for(const std::string& obj_path) {

@@ -74,6 +74,29 @@ std::vector<char> read_result_labelling(const nlohmann::json& doc, const Complex
   return labelling;
 }
 
+int oriented_patch(const Complex& complex, int support, const std::vector<char>& labelling) {
+  const std::vector<int>& group = complex.supports.at(static_cast<std::size_t>(support));
+  for (int p : group) {
+    const int inside = complex.patches[p].inside_cell;
+    if (inside >= 0 && static_cast<std::size_t>(inside) < labelling.size() && labelling[inside]) return p;
+  }
+  return group.front();
+}
+
+std::size_t closed_form_terms(const std::string& text) {
+  if (text.empty()) return 0;
+  std::size_t terms = 1;
+  int depth = 0;
+  for (std::size_t k = 0; k < text.size(); ++k) {
+    if (text[k] == '(') ++depth;
+    if (text[k] == ')') --depth;
+    if (depth == 0 && k > 0 && k + 2 < text.size() && text[k] == ' ' && (text[k + 1] == '+' || text[k + 1] == '-') &&
+        text[k + 2] == ' ')
+      ++terms;
+  }
+  return terms;
+}
+
 namespace {
 
 nlohmann::json boundary_json(const bsh::Problem& problem, const bsh::Labelling& labelling,
@@ -82,15 +105,21 @@ nlohmann::json boundary_json(const bsh::Problem& problem, const bsh::Labelling& 
   nlohmann::json out = nlohmann::json::array();
   for (int g : bsh::boundary_supports(problem, labelling)) {
     const bsh::SupportTerm& s = problem.supports()[g];
-    const Patch& patch = c.patches[s.patches.front()];
+    const int oriented = oriented_patch(c, g, labelling);
+    const Patch& patch = c.patches[oriented];
     nlohmann::json item;
-    item["patch"] = s.patches.front();
+    item["patch"] = oriented;
     item["halfspace"] = c.halfspace_names[patch.halfspace];
     nlohmann::json coincident = nlohmann::json::array();
-    for (std::size_t k = 1; k < s.patches.size(); ++k)
-      coincident.push_back(c.halfspace_names[c.patches[s.patches[k]].halfspace]);
+    for (int p : s.patches)
+      if (p != oriented) coincident.push_back(c.halfspace_names[c.patches[p].halfspace]);
     item["coincident"] = coincident;
     item["measure"] = measure_to_json(s.measure);
+    if (c.dimension == 3) {
+      item["inside_cell"] = labelling[patch.inside_cell] ? patch.inside_cell : patch.outside_cell;
+      item["outside_cell"] = labelling[patch.inside_cell] ? patch.outside_cell : patch.inside_cell;
+      item["triangles"] = patch.pieces.size();
+    }
     if (geometry.known() && !patch.pieces.empty()) {
       nlohmann::json pieces = nlohmann::json::array();
       for (int e : patch.pieces) {
@@ -138,6 +167,11 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
   if (!r.optimality_note.empty()) j["optimality_note"] = r.optimality_note;
   j["energy"] = {{"missing_samples", r.energy.missing_samples}, {"measure", measure_to_json(r.energy.measure())}};
   j[c.dimension == 3 ? "volume" : "area"] = measure_to_json(bsh::inside_measure(c, r.labelling));
+  if (c.dimension == 3) {
+    j["boundary_area"] = j["energy"]["measure"];
+    if (j["boundary_area"]["exact"].is_string())
+      j["boundary_area"]["terms"] = closed_form_terms(j["boundary_area"]["exact"].get<std::string>());
+  }
   j["sample_connected"] = r.sample_connected;
   j["ties"] = {{"count", r.ties.count},
                {"checked", r.ties.checked},

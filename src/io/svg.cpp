@@ -595,6 +595,83 @@ std::string arrangement_svg(const Scene2& scene, const Arrangement2& arr, const 
 
 const char* svg_palette_colour(int index) { return colour_of(index); }
 
+std::vector<char> svg_missing_samples(const Complex& complex, const std::vector<char>& fill) {
+  return missing_samples(complex, fill);
+}
+
+namespace {
+
+/// The root <svg> element of a picture: where its tag starts and ends, and its size.
+struct SvgRoot {
+  std::size_t open = 0, close = 0;  // text[open..close) is the root's start tag, '<' to '>' included
+  double width = 0, height = 0;
+};
+
+double attribute_px(const std::string& tag, const std::string& name) {
+  const std::string key = " " + name + "=\"";
+  const std::size_t at = tag.find(key);
+  if (at == std::string::npos) throw std::invalid_argument("svg_grid: the root <svg> has no " + name);
+  std::size_t used = 0;
+  const double v = std::stod(tag.substr(at + key.size()), &used);
+  if (!(v >= 0) || !std::isfinite(v)) throw std::invalid_argument("svg_grid: bad " + name);
+  return v;
+}
+
+SvgRoot svg_root(const std::string& text) {
+  SvgRoot root;
+  std::size_t start = 0;
+  if (text.rfind("<?xml", 0) == 0) {
+    start = text.find("?>");
+    if (start == std::string::npos) throw std::invalid_argument("svg_grid: an unterminated XML declaration");
+    start = text.find_first_not_of(" \t\r\n", start + 2);
+  }
+  if (start == std::string::npos || text.compare(start, 5, "<svg ") != 0)
+    throw std::invalid_argument("svg_grid: a picture does not start with its root <svg>");
+  root.open = start;
+  root.close = text.find('>', start);
+  if (root.close == std::string::npos) throw std::invalid_argument("svg_grid: an unterminated <svg> tag");
+  ++root.close;
+  const std::string tag = text.substr(root.open, root.close - root.open);
+  root.width = attribute_px(tag, "width");
+  root.height = attribute_px(tag, "height");
+  return root;
+}
+
+}  // namespace
+
+std::string svg_grid(const std::vector<std::string>& pictures, int columns) {
+  if (columns < 1) throw std::invalid_argument("svg_grid: columns must be at least 1");
+  std::vector<SvgRoot> roots;
+  for (const std::string& p : pictures) roots.push_back(svg_root(p));
+  const double gap = 8;
+  std::vector<double> column_width(static_cast<std::size_t>(columns), 0);
+  std::vector<double> row_height((pictures.size() + columns - 1) / columns, 0);
+  for (std::size_t k = 0; k < roots.size(); ++k) {
+    column_width[k % columns] = std::max(column_width[k % columns], roots[k].width);
+    row_height[k / columns] = std::max(row_height[k / columns], roots[k].height);
+  }
+  std::vector<double> left(static_cast<std::size_t>(columns), gap), top(row_height.size(), gap);
+  for (std::size_t c = 1; c < left.size(); ++c) left[c] = left[c - 1] + column_width[c - 1] + gap;
+  for (std::size_t r = 1; r < top.size(); ++r) top[r] = top[r - 1] + row_height[r - 1] + gap;
+  const double width = left.back() + column_width.back() + gap;
+  const double height = top.empty() ? 2 * gap : top.back() + row_height.back() + gap;
+  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  s += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + num(width) + "\" height=\"" + num(height) +
+       "\" viewBox=\"0 0 " + num(width) + " " + num(height) + "\">\n";
+  s += "<rect x=\"0\" y=\"0\" width=\"" + num(width) + "\" height=\"" + num(height) + "\" fill=\"#ffffff\"/>\n";
+  for (std::size_t k = 0; k < pictures.size(); ++k) {
+    const std::string& p = pictures[k];
+    const SvgRoot& r = roots[k];
+    s += "<svg x=\"" + num(left[k % columns]) + "\" y=\"" + num(top[k / columns]) + "\"" +
+         p.substr(r.open + 4, r.close - r.open - 4) + "\n";
+    std::string body = p.substr(r.close);
+    while (!body.empty() && (body.back() == '\n' || body.back() == ' ')) body.pop_back();
+    s += body.front() == '\n' ? body.substr(1) : body;
+    s += "\n";
+  }
+  return s + "</svg>\n";
+}
+
 std::string svg_number(double value) { return num(value); }
 
 std::string svg_escape(const std::string& text) { return escape(text); }

@@ -1,6 +1,7 @@
 // SVG pictures of 3D arrangements: see svg3.hpp.
 #include <hsx/io/svg3.hpp>
 
+#include <hsx/io/mesh_export.hpp>
 #include <hsx/io/svg.hpp>
 
 #include <algorithm>
@@ -113,6 +114,10 @@ void check_fit(const Scene3& scene, const Arranged3& a, const Svg3Options& o) {
     throw std::invalid_argument("arrangement_svg3: the arrangement was not built from this scene");
   if (o.width < 200) throw std::invalid_argument("arrangement_svg3: width below 200 px");
   if (!(o.opacity > 0 && o.opacity <= 1)) throw std::invalid_argument("arrangement_svg3: opacity not in (0, 1]");
+  if (!o.cell_fill.empty() && o.cell_fill.size() != a.complex.cells.size())
+    throw std::invalid_argument("arrangement_svg3: cell_fill needs one entry per cell");
+  if (!o.highlight_patches.empty() && o.highlight_patches.size() != a.complex.patches.size())
+    throw std::invalid_argument("arrangement_svg3: highlight_patches needs one entry per patch");
   for (const SvgView3& v : o.views) {
     const PointQ3& d = v.direction;
     const PointQ3& u = v.up;
@@ -123,30 +128,67 @@ void check_fit(const Scene3& scene, const Arranged3& a, const Svg3Options& o) {
   }
 }
 
-std::string faces_svg(const Arrangement3& arr, const SvgView3& view, const Projection& p, double opacity) {
+/// A triangle to paint: its arrangement id, the halfspace whose colour it takes (-1: grey), and its class.
+struct Paint {
+  int triangle = -1;
+  int halfspace = -1;
+  bool highlight = false;
+  int patch = -1;  // shapes: the face's patch (data-patch), -1: not written
+};
+
+/// What a picture paints (see the conventions): every triangle, or a shape's boundary, then highlighted patches.
+std::vector<Paint> paints_of(const Arranged3& a, const Svg3Options& o) {
+  std::vector<Paint> paints;
+  const auto& triangles = a.arrangement.triangles();
+  if (o.cell_fill.empty()) {
+    for (std::size_t k = 0; k < triangles.size(); ++k)
+      paints.push_back({static_cast<int>(k), triangles[k].halfspaces.empty() ? -1 : triangles[k].halfspaces.front(),
+                        false, -1});
+  } else {
+    for (const ExportedFace& f : shape_faces(a, o.cell_fill)) paints.push_back({f.triangle, f.halfspace, false, f.patch});
+  }
+  for (std::size_t p = 0; p < o.highlight_patches.size(); ++p)
+    if (o.highlight_patches[p])
+      for (int t : a.complex.patches[p].pieces)
+        paints.push_back({t, a.complex.patches[p].halfspace, true, static_cast<int>(p)});
+  return paints;
+}
+
+const char* const kHighlightColour = "#ffc400";
+
+/// The paints with `highlight` set as given, back to front, in one "view" group (none for highlights when there
+/// are none).
+std::string faces_svg(const Arrangement3& arr, const std::vector<Paint>& paints, bool highlight,
+                      const SvgView3& view, const Projection& p, double opacity) {
+  if (highlight && std::none_of(paints.begin(), paints.end(), [](const Paint& x) { return x.highlight; })) return "";
   struct Face {
     double depth;
-    int index;
+    std::size_t paint;
   };
   std::vector<Face> faces;
   const auto& triangles = arr.triangles();
-  for (std::size_t k = 0; k < triangles.size(); ++k) {
-    if (!seen(arr, triangles[k], view.direction)) continue;
+  for (std::size_t k = 0; k < paints.size(); ++k) {
+    const ArrTriangle3& t = triangles.at(static_cast<std::size_t>(paints[k].triangle));
+    if (paints[k].highlight != highlight || !seen(arr, t, view.direction)) continue;
     Vec c;
-    for (int v : triangles[k].vertices) c = c + to_vec(arr.vertices()[v]);
-    faces.push_back({dot((1.0 / 3) * c, p.depth), static_cast<int>(k)});
+    for (int v : t.vertices) c = c + to_vec(arr.vertices()[v]);
+    faces.push_back({dot((1.0 / 3) * c, p.depth), k});
   }
-  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
-    return a.depth != b.depth ? a.depth > b.depth : a.index < b.index;  // farthest first
+  std::sort(faces.begin(), faces.end(), [&](const Face& a, const Face& b) {
+    if (a.depth != b.depth) return a.depth > b.depth;  // farthest first
+    return paints[a.paint].triangle < paints[b.paint].triangle;
   });
   std::string s = "<g class=\"view\" data-view=\"" + svg_escape(view.name) + "\" fill-opacity=\"" +
                   svg_number(opacity) + "\" stroke-width=\"0.4\" stroke-linejoin=\"round\">\n";
   for (const Face& f : faces) {
-    const ArrTriangle3& t = triangles[static_cast<std::size_t>(f.index)];
+    const Paint& paint = paints[f.paint];
+    const ArrTriangle3& t = triangles[static_cast<std::size_t>(paint.triangle)];
     const Vec n = unit(to_vec(exact_normal(arr, t)));
     const double light = 0.35 + 0.65 * std::fabs(dot(n, p.light));
-    const Rgb base = parse_colour(svg_palette_colour(t.halfspaces.empty() ? -1 : t.halfspaces.front()));
-    s += "<polygon class=\"face\" data-triangle=\"" + std::to_string(f.index) + "\" points=\"";
+    const Rgb base = parse_colour(paint.highlight ? kHighlightColour : svg_palette_colour(paint.halfspace));
+    s += std::string("<polygon class=\"") + (paint.highlight ? "highlight" : "face") + "\" data-triangle=\"" +
+         std::to_string(paint.triangle) + "\"" +
+         (paint.patch >= 0 ? " data-patch=\"" + std::to_string(paint.patch) + "\"" : std::string()) + " points=\"";
     for (int k = 0; k < 3; ++k) s += (k ? " " : "") + p.xy(to_vec(arr.vertices()[t.vertices[k]]));
     s += "\" fill=\"" + colour_text(base, light) + "\" stroke=\"" + colour_text(base, 0.75 * light) + "\"/>\n";
   }
@@ -164,12 +206,16 @@ std::string domain_svg(const Box3& box, const Projection& p) {
   return s + "</g>\n";
 }
 
-std::string samples_svg(const Scene3& scene, const Projection& p) {
+std::string samples_svg(const Scene3& scene, const Projection& p, const std::vector<char>& missing) {
   std::string s = "<g stroke=\"#000000\" stroke-width=\"0.8\">\n";
   for (std::size_t k = 0; k < scene.samples.size(); ++k) {
     const Vec q = to_vec(scene.samples[k].location);
-    s += "<circle class=\"sample\" data-id=\"" + std::to_string(k) + "\" cx=\"" + svg_number(p.X(q)) + "\" cy=\"" +
-         svg_number(p.Y(q)) + "\" r=\"4\" fill=\"" + svg_palette_colour(scene.samples[k].halfspace) + "\"/>\n";
+    const std::string at = "\" cx=\"" + svg_number(p.X(q)) + "\" cy=\"" + svg_number(p.Y(q)) + "\"";
+    s += "<circle class=\"sample\" data-id=\"" + std::to_string(k) + at + " r=\"4\" fill=\"" +
+         svg_palette_colour(scene.samples[k].halfspace) + "\"/>\n";
+    if (k < missing.size() && missing[k])
+      s += "<circle class=\"missing\" data-id=\"" + std::to_string(k) + at +
+           " r=\"8\" fill=\"none\" stroke=\"#e63946\" stroke-width=\"2\"/>\n";
   }
   return s + "</g>\n";
 }
@@ -215,8 +261,48 @@ std::string legend_text(const Halfspace3& h) {
   return h.name + " (" + to_string(h.kind) + (h.complement ? ", complement" : "") + ")";
 }
 
-/// The legend of halfspaces in as many equal columns as fit; its height goes to *height.
-std::string legend_svg(const Scene3& scene, double left, double top, double room, double font_size, double* height) {
+/// A line of the legend under the halfspaces: a swatch (an amber square or a red ring) and its text.
+struct Mark {
+  enum Swatch { Ring, Highlight, Faces } swatch = Faces;
+  std::string text;
+};
+
+std::vector<Mark> marks_of(const Arranged3& a, const Svg3Options& o, const std::vector<char>& missing) {
+  std::vector<Mark> marks;
+  if (!o.cell_fill.empty()) {
+    const long n = static_cast<long>(std::count(missing.begin(), missing.end(), 1));
+    marks.push_back({Mark::Faces, "the shape's boundary: " + std::to_string(shape_faces(a, o.cell_fill).size()) +
+                                      " triangles, in their halfspaces' colours"});
+    marks.push_back({Mark::Ring, "missing sample, not on the boundary (" + std::to_string(n) + " here)"});
+  }
+  if (std::find(o.highlight_patches.begin(), o.highlight_patches.end(), 1) != o.highlight_patches.end())
+    marks.push_back({Mark::Highlight, o.highlight_legend + " (drawn over the rest)"});
+  return marks;
+}
+
+std::string marks_svg(const std::vector<Mark>& marks, double left, double top, double font_size, double* height) {
+  const double swatch = 18, gap = 6, line = 1.5 * font_size;
+  std::string s;
+  for (std::size_t k = 0; k < marks.size(); ++k) {
+    const double y = top + static_cast<double>(k) * line;
+    if (marks[k].swatch == Mark::Ring)
+      s += "<circle cx=\"" + svg_number(left + swatch / 2) + "\" cy=\"" + svg_number(y + 0.45 * font_size) +
+           "\" r=\"" + svg_number(0.45 * font_size) + "\" fill=\"none\" stroke=\"#e63946\" stroke-width=\"2\"/>\n";
+    else
+      s += "<rect x=\"" + svg_number(left) + "\" y=\"" + svg_number(y) + "\" width=\"" + svg_number(swatch) +
+           "\" height=\"" + svg_number(0.9 * font_size) + "\" fill=\"" +
+           (marks[k].swatch == Mark::Highlight ? kHighlightColour : "#9a9a9a") + "\"/>\n";
+    s += "<text x=\"" + svg_number(left + swatch + gap) + "\" y=\"" + svg_number(y + 0.8 * font_size) +
+         "\" fill=\"#222222\">" + svg_escape(marks[k].text) + "</text>\n";
+  }
+  *height = static_cast<double>(marks.size()) * line;
+  return s;
+}
+
+/// The legend of halfspaces in as many equal columns as fit, then the marks one per line; its height goes to
+/// *height.
+std::string legend_svg(const Scene3& scene, const std::vector<Mark>& marks, double left, double top, double room,
+                       double font_size, double* height) {
   const double swatch = 18, gap = 6, column_gap = 18, line = 1.5 * font_size;
   double widest = 0;
   for (const Halfspace3& h : scene.halfspaces) widest = std::max(widest, svg_text_width(legend_text(h), font_size));
@@ -232,7 +318,9 @@ std::string legend_svg(const Scene3& scene, double left, double top, double room
     s += "<text x=\"" + svg_number(x + swatch + gap) + "\" y=\"" + svg_number(y + 0.8 * font_size) +
          "\" fill=\"#222222\">" + svg_escape(legend_text(scene.halfspaces[static_cast<std::size_t>(i)])) + "</text>\n";
   }
-  *height = rows * line;
+  double marks_height = 0;
+  s += marks_svg(marks, left, top + rows * line, font_size, &marks_height);
+  *height = rows * line + marks_height;
   return s + "</g>\n";
 }
 
@@ -258,8 +346,12 @@ std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, con
   const double width = options.width, margin = 16;
   const Fonts fonts(width);
   const double title_height = options.title.empty() ? 0 : 2 * fonts.caption;
-  const double panel = (width - 2 * margin) / 2, caption = 1.6 * fonts.caption, pad = 12;
-  const int rows = static_cast<int>((views.size() + 1) / 2);
+  const std::size_t columns = views.size() == 1 ? 1 : 2;
+  const double panel = (width - 2 * margin) / static_cast<double>(columns), caption = 1.6 * fonts.caption, pad = 12;
+  const int rows = static_cast<int>((views.size() + columns - 1) / columns);
+  const std::vector<Paint> paints = paints_of(arranged, options);
+  const std::vector<char> missing =
+      options.cell_fill.empty() ? std::vector<char>{} : svg_missing_samples(arranged.complex, options.cell_fill);
   const Box3& box = arranged.arrangement.domain();
   std::vector<Projection> projections;
   double scale = INFINITY;
@@ -274,8 +366,8 @@ std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, con
   std::string body;
   for (std::size_t k = 0; k < views.size(); ++k) {
     Projection& p = projections[k];
-    const double left = margin + static_cast<double>(k % 2) * panel;
-    const double top = margin + title_height + static_cast<double>(k / 2) * panel;
+    const double left = margin + static_cast<double>(k % columns) * panel;
+    const double top = margin + title_height + static_cast<double>(k / columns) * panel;
     p.scale = scale;
     p.mid = mid;
     p.centre_x = left + panel / 2;
@@ -283,14 +375,16 @@ std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, con
     body += "<text class=\"caption\" x=\"" + svg_number(left + panel / 2) + "\" y=\"" +
             svg_number(top + fonts.caption) + "\" text-anchor=\"middle\" font-size=\"" + svg_number(fonts.caption) +
             "\">" + svg_escape(views[k].name) + "</text>\n";
-    body += faces_svg(arranged.arrangement, views[k], p, options.opacity);
+    body += faces_svg(arranged.arrangement, paints, false, views[k], p, options.opacity);
+    body += faces_svg(arranged.arrangement, paints, true, views[k], p, options.opacity);
     body += domain_svg(box, p);
-    body += samples_svg(scene, p);
+    body += samples_svg(scene, p, missing);
     body += labels_svg(arranged, patch_points, p, options, fonts.label);
   }
   double legend_height = 0;
   const double legend_top = margin + title_height + rows * panel + 8;
-  body += legend_svg(scene, margin, legend_top, width - 2 * margin, fonts.legend, &legend_height);
+  body += legend_svg(scene, marks_of(arranged, options, missing), margin, legend_top, width - 2 * margin,
+                     fonts.legend, &legend_height);
   const double height = legend_top + legend_height + margin;
   std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + svg_number(width) + "\" height=\"" + svg_number(height) +

@@ -1,5 +1,6 @@
-// The refined surfaces of a 3D arrangement as meshes for MeshLab, ParaView or Blender: ASCII PLY with per-face
-// properties, and OBJ with a material library and one group per patch.
+// The refined surfaces of a 3D arrangement, and the boundary of a shape (a labelling of its cells), as meshes for
+// MeshLab, ParaView or Blender: ASCII PLY with per-face properties, OBJ with a material library and one group per
+// patch, and (shapes) OFF with per-face colours.
 //
 // Conventions (owned here):
 // - Exported faces: every arrangement triangle that is not on the domain box, once, in ascending triangle order,
@@ -15,6 +16,18 @@
 //   points to), red, green, blue (uchar). Comments name the halfspaces.
 // - OBJ: "mtllib NAME" then the vertices, then per patch in ascending order "g patch_<k>", "usemtl halfspace_<i>"
 //   and its faces; the .mtl defines "halfspace_<i>" with its colour (Kd) for every halfspace.
+// - A shape's boundary (shape_faces): every arrangement triangle whose two cells are labelled differently (one
+//   inside the shape, the other outside it or beyond the domain), once, turned outward: its normal
+//   (v1-v0)x(v2-v0) points out of the shape, so seen from outside its vertices run counter-clockwise and the
+//   inside cell is behind it (back_cell; front_cell is the outside cell). Its patch is the patch of its support
+//   group (complex/complex.hpp) whose inside cell is the shape's (the one "on b" with its halfspace's orientation,
+//   algorithms/bsh/problem.hpp), the group's first patch when none is; its halfspace is that patch's. Faces are
+//   ordered by patch, then by triangle. The mesh is closed: every edge is used as often in one direction as in
+//   the other (once each where the boundary is a manifold), so sum det(v0, v1, v2) / 6 is the shape's volume.
+// - OFF (shapes): "OFF", comment lines "# hsx shape boundary: ...", one "# halfspace <i> <name>" per halfspace and
+//   one "# patch <k> halfspace <i> faces <first> <count>" per patch (faces <first> to <first>+<count>-1, 0-based,
+//   carry patch k: faces come in patch order), then "nv nf 0", the vertices, and faces "3 a b c r g b" with the
+//   halfspace's colour (0-255). Coordinates as in OBJ (decimals, or exact rationals with `exact`).
 // - Output is deterministic.
 #pragma once
 
@@ -38,8 +51,13 @@ struct ExportedFace {
 /// The faces the exports write, in their order (see the conventions). `arranged` must come from `scene`.
 std::vector<ExportedFace> exported_faces(const Arranged3& arranged);
 
+/// The boundary of the shape whose inside cells are those with labelling[c] = 1, outward, in the exports' order
+/// (see the conventions). Throws std::invalid_argument when `labelling` does not have one entry per cell or labels
+/// an outer cell inside (outer cells are always outside, algorithms/bsh/problem.hpp).
+std::vector<ExportedFace> shape_faces(const Arranged3& arranged, const std::vector<char>& labelling);
+
 struct MeshExportOptions {
-  bool exact = false;  ///< OBJ coordinates as exact rationals instead of decimals
+  bool exact = false;  ///< OBJ and OFF coordinates as exact rationals instead of decimals
 };
 
 /// The PLY text. Throws std::invalid_argument when `arranged` does not fit `scene`.
@@ -54,6 +72,14 @@ struct ObjText {
 /// break.
 ObjText arrangement_obj(const Scene3& scene, const Arranged3& arranged, const std::string& mtl_name,
                         const MeshExportOptions& options = {});
+
+/// A shape's boundary (shape_faces) as PLY, OBJ (with its .mtl) and OFF. `scene`, `arranged`, `mtl_name` as for
+/// the arrangement's; `labelling` per cell, 1 inside. Throws std::invalid_argument as those do and as shape_faces.
+std::string shape_ply(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& labelling);
+ObjText shape_obj(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& labelling,
+                  const std::string& mtl_name, const MeshExportOptions& options = {});
+std::string shape_off(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& labelling,
+                      const MeshExportOptions& options = {});
 
 /// The .mtl file that goes with an OBJ written to `obj_path`: the same path with extension ".mtl".
 std::string mtl_path_for(const std::string& obj_path);

@@ -1,13 +1,19 @@
 // The `hsx-result/1` document: a shape (a labelled complex) and how it was found. Fields as
 // shared/spec/scene-format.md requires, plus what a reader needs to check it:
 //   {"format": "hsx-result/1", "complex_id", "method", "optimal", "stopped_by"?,
-//    "energy": {"missing_samples", "measure": M}, "area": M, "sample_connected",
+//    "energy": {"missing_samples", "measure": M}, "area": M (2D) | "volume": M (3D: exact rational),
+//    "boundary_area": M + {"terms"} (3D only: energy.measure again, the boundary's exact area, with the number of
+//      terms of its closed form), "sample_connected",
 //    "ties": {"count", "checked", "certified", "capped", "stopped_by"?},  stopped_by ("max-ties", "time-limit",
 //      "max-states", "max-graph-cuts") says why a capped enumeration stopped; the top-level "stopped_by" names
 //      a limit that stopped the search for the optimum itself (then "optimal" is false)
-//    "boundary": [{"patch", "halfspace", "coincident": [names], "pieces": [{"from": P, "to": P,
-//                  "shape": "segment"|"arc", ("center", "radius", "ccw")}]}],   pieces run with the shape on
-//                  their left; pieces are omitted when the complex has no geometry
+//    "boundary": [{"patch", "halfspace", "coincident": [names], "measure": M, "pieces": [{"from": P, "to": P,
+//                  "shape": "segment"|"arc", ("center", "radius", "ccw")}]}],   one item per support group on the
+//                  boundary; "patch" is its patch with the boundary's orientation (oriented_patch below), the
+//                  other halfspaces of the group are "coincident"; 2D pieces run with the shape on their left and
+//                  are omitted when the complex has no geometry; 3D items have "inside_cell" and "outside_cell"
+//                  (the shape's side and the other) and "triangles" (the patch's arrangement triangles: the
+//                  boundary mesh is extract's --obj/--ply/--off, io/mesh_export.hpp)
 //    "inside_cells": [ids], "removed_patches": [ids], "steps": [[patch ids]...] (beam), "tied": [[cell ids]...],
 //    "stats": {"graph_cuts", "uncertified_cuts", "states_expanded", "states_created", "max_queue",
 //              "labellings_enumerated", "seconds",
@@ -15,7 +21,8 @@
 //                "certified_bounds", "lower_bound", "gap", "max_gap"}}}   bounds and gaps as
 //                {"missing_samples", "measure" (a double: the bound rounded down; gaps incumbent's upper enclosure
 //                minus the bound)}
-// M = {"decimal", "exact"}; P = [x, y] exact strings.
+// M = {"decimal", "certified": false (only when the digits are not pinned down), "exact" (null: no closed form)};
+// P = [x, y] exact strings.
 // "complex_id" is the identity of the input the cell ids refer to (complex_identity below); a reader refuses a
 // result whose identity is not that of its own input.
 #pragma once
@@ -60,6 +67,14 @@ std::string complex_identity(const Complex& complex);
 /// when the document is not a result, was computed from another input (its complex_id differs from
 /// complex_identity(complex), or it has none), or names a cell the complex does not have.
 std::vector<char> read_result_labelling(const nlohmann::json& document, const Complex& complex);
+
+/// The patch of support group `support` that lies on the boundary of `labelling` with its halfspace's
+/// orientation (its inside cell labelled 1: algorithms/bsh/problem.hpp); the group's first patch when none does.
+int oriented_patch(const Complex& complex, int support, const std::vector<char>& labelling);
+
+/// The number of terms of a Measure's closed form (Measure::exact_string): the " + " and " - " outside
+/// parentheses, plus one; 0 for an empty text.
+std::size_t closed_form_terms(const std::string& text);
 
 /// Patches of the supports flagged in `supports` (per support), ascending.
 std::vector<int> patches_of_supports(const Complex& complex, const std::vector<char>& supports);

@@ -64,6 +64,14 @@ struct SvgView {
 const char* svg_palette_colour(int index);
 /// A coordinate as printed in pictures: 4 decimals, never "-0.0000".
 std::string svg_number(double value);
+/// Per sample of `complex`: 1 when it is missing from the shape whose cells are filled in `fill` (per cell, 1 =
+/// inside): unless its patch's inside cell is filled and its outside cell is not (see the conventions above).
+std::vector<char> svg_missing_samples(const Complex& complex, const std::vector<char>& fill);
+/// Complete pictures (SVG documents as the functions here and in io/svg3.hpp write them: an optional XML
+/// declaration, then one root <svg> with width and height in px) laid out in a grid of `columns` (>= 1) columns,
+/// row by row, as one document: each picture is nested as an <svg> element at its own size, rows as tall as their
+/// tallest picture, 8 px apart, on white. Throws std::invalid_argument when a picture has no such root.
+std::string svg_grid(const std::vector<std::string>& pictures, int columns);
 /// XML text escaping.
 std::string svg_escape(const std::string& text);
 /// An upper estimate, in px, of the width of `text` (UTF-8) drawn at `font_size` px in the pictures' sans-serif

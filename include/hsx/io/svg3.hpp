@@ -4,8 +4,8 @@
 // Conventions (owned here):
 // - A view looks along `direction` (from the viewer into the scene) with `up` pointing up on screen; screen right
 //   is direction x up. The default views (z is up): "front" looks along +y, "side" along -x, "top" along -z (y up on
-//   screen), "isometric" along (-1, 1, -1). Views are laid out two per row, each fitted to the domain box's
-//   outline with one scale for all views.
+//   screen), "isometric" along (-1, 1, -1). Views are laid out two per row (a single view takes the whole width),
+//   each fitted to the domain box's outline with one scale for all views.
 // - What is drawn, per view: every arrangement triangle that is not on the domain box and not seen edge-on (its
 //   exact normal (v1-v0)x(v2-v0) is not orthogonal to `direction`, decided exactly): one "face" polygon each, in
 //   a "view" group. Nothing else is a polygon. Faces are painted back to front by the depth of their centroid
@@ -13,10 +13,19 @@
 //   light factor 0.35 + 0.65 |n . l| (n the unit normal, l a fixed light direction leaning from the viewer to the
 //   upper left), with `opacity`, so that hidden parts show through. Coordinates and shading are doubles (a
 //   picture, not a proof); the choice of triangles is exact.
+// - A shape (`cell_fill` set, one entry per cell, 1 inside): instead of every triangle, only the shape's boundary
+//   is drawn: the triangles of io/mesh_export.hpp's shape_faces, each a "face" polygon in the colour of its
+//   patch's halfspace (the one whose orientation it has). Missing samples (a sample is missing unless its patch's
+//   inside cell is filled and its outside cell is not, as in io/svg.hpp) get a red "missing" ring.
+// - `highlight_patches` (per patch, 1 = highlighted; e.g. the patches a search removed): every triangle of such a
+//   patch is also a "highlight" polygon, amber, painted after all the faces (back to front among themselves, in a
+//   second "view" group per view, present when some patch is highlighted) so that they show even inside the shape; the legend says what they are
+//   (`highlight_legend`).
 // - Drawn on top of the faces, in this order: the domain box's twelve edges ("domain" lines), the samples ("sample"
 //   circles in their halfspace's colour, visible through everything), and on request the labels: "c<k>" at cell
 //   k's interior point ("cell-id"), "p<k>" at the centroid of patch k's largest triangle ("patch-id"), the ids of
-//   the complex (hsx arrange's text and hsx-complex/1). Under the views, a legend of the halfspaces ("legend").
+//   the complex (hsx arrange's text and hsx-complex/1). Under the views, a legend of the halfspaces and, for a
+//   shape, of the marks ("legend").
 // - Output is deterministic: fixed drawing order, numbers with 4 decimals (io/svg.hpp's svg_number).
 #pragma once
 
@@ -43,11 +52,15 @@ struct Svg3Options {
   double opacity = 0.85;           ///< fill opacity of the faces, in (0, 1]
   bool show_cell_ids = false;      ///< label every cell "c<k>"
   bool show_patch_ids = false;     ///< label every patch "p<k>"
+  std::vector<char> cell_fill;     ///< optional, per cell: 1 = inside a shape; set: draw the shape (see above)
+  std::vector<char> highlight_patches;                   ///< optional, per patch: 1 = highlighted
+  std::string highlight_legend = "highlighted patches";  ///< what the highlight means, for the legend
   std::string title;
 };
 
 /// The picture. `arranged` must have been built from `scene` (same halfspaces and samples). Throws
-/// std::invalid_argument when they do not fit together or the options break the bounds above.
+/// std::invalid_argument when they do not fit together, the options break the bounds above, or `cell_fill` (when
+/// set) or `highlight_patches` (when set) does not have one entry per cell or patch.
 std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options = {});
 
 /// How many "face" polygons view `view` of arrangement_svg3 draws: the triangles not on the box and not seen

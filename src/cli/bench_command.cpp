@@ -46,6 +46,7 @@ struct BenchOptions {
   bool cuts = false;                ///< graph-cut mode: the certified cut against double baselines
   std::vector<int> cut_halfspaces{10, 50, 100, 200};  ///< graph-cut mode: random scenes of these sizes
   int cut_scenes = 1;               ///< graph-cut mode: scenes per size
+  std::vector<std::string> cut_inputs;  ///< graph-cut mode: also these inputs (scenes, config.json, complexes)
   bool three_d = false;             ///< 3D mode: Arrangement3 beside Nef
   std::string bsh_config = "../shared/data/bsh-examples/figure19_b/config.json";
   std::vector<int> h_divisors{1, 2, 4};
@@ -426,6 +427,22 @@ double double_cut(const bsh::Problem& problem, bool bk) {
                                       boost::make_iterator_property_map(pred.begin(), index));
 }
 
+/// The certified cut (warm-started and from the zero flow) and the two double max flows of one problem, timed.
+void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& repeat, BenchRow& row) {
+  row.sizes = {problem.cell_count(), patches};
+  bsh::CutResult cut, cold_cut;
+  bsh::CutConstraints cold;
+  cold.warm_start = false;
+  StageResult certified, zero_flow, bk, ek;
+  certified.timing = time_repeatedly([&] { cut = bsh::graph_cut(problem, {}); }, repeat);
+  zero_flow.timing = time_repeatedly([&] { cold_cut = bsh::graph_cut(problem, cold); }, repeat);
+  bk.timing = time_repeatedly([&] { double_cut(problem, true); }, repeat);
+  ek.timing = time_repeatedly([&] { double_cut(problem, false); }, repeat);
+  row.stages = {certified, zero_flow, bk, ek};
+  const auto verdict = [](const bsh::CutResult& r) { return r.certified ? "yes" : "no: " + r.certificate_note; };
+  row.notes = {verdict(cut), verdict(cold_cut), cut.labelling == cold_cut.labelling ? "yes" : "NO"};
+}
+
 /// Random scene `index` of `halfspaces` halfspaces (seed 1, up to 3 samples per halfspace): its cut, timed.
 BenchRow bench_cut(int halfspaces, int index, const BenchOptions& o, const RepeatOptions& repeat) {
   RandomSceneSettings settings;
@@ -442,25 +459,25 @@ BenchRow bench_cut(int halfspaces, int index, const BenchOptions& o, const Repea
     return row;
   }
   const bsh::Problem problem(arranged.complex);
-  row.sizes = {problem.cell_count(), static_cast<long>(arranged.complex.patches.size())};
-  bsh::CutResult cut, cold_cut;
-  bsh::CutConstraints cold;
-  cold.warm_start = false;
-  StageResult certified, zero_flow, bk, ek;
-  certified.timing = time_repeatedly([&] { cut = bsh::graph_cut(problem, {}); }, repeat);
-  zero_flow.timing = time_repeatedly([&] { cold_cut = bsh::graph_cut(problem, cold); }, repeat);
-  bk.timing = time_repeatedly([&] { double_cut(problem, true); }, repeat);
-  ek.timing = time_repeatedly([&] { double_cut(problem, false); }, repeat);
-  row.stages = {certified, zero_flow, bk, ek};
-  const auto verdict = [](const bsh::CutResult& r) { return r.certified ? "yes" : "no: " + r.certificate_note; };
-  row.notes = {verdict(cut), verdict(cold_cut), cut.labelling == cold_cut.labelling ? "yes" : "NO"};
+  time_cuts(problem, static_cast<long>(arranged.complex.patches.size()), repeat, row);
+  return row;
+}
+
+/// A given input (2D or 3D scene, the BSH authors' config.json, hsx-complex/1): its cut, timed.
+BenchRow bench_cut_input(const std::string& path, const BenchOptions& o, const RepeatOptions& repeat) {
+  BenchRow row;
+  row.input = path;
+  const LoadedInput in = load_input(path, o.limits);  // bad input: exit 2, as everywhere
+  const bsh::Problem problem(in.complex());
+  time_cuts(problem, static_cast<long>(in.complex().patches.size()), repeat, row);
   return row;
 }
 
 /// Graph-cut mode: the certified cut (warm-started, and from the zero flow: CutConstraints::warm_start) and the two
 /// double max flows on random scenes, as ratios to Boykov-Kolmogorov; notes: both certified, the same cut.
 void run_cut_bench(const BenchOptions& o, OutputFiles& files) {
-  if (o.cut_scenes < 1) throw InputError("--cut-scenes: must be at least 1");
+  if (o.cut_scenes < 0 || (o.cut_scenes == 0 && o.cut_inputs.empty()))
+    throw InputError("--cut-scenes: must be at least 1 (0 only with --cut-inputs)");
   for (int h : o.cut_halfspaces)
     if (h < 1) throw InputError("--cut-halfspaces: every size must be at least 1");
   Report report;
@@ -474,8 +491,12 @@ void run_cut_bench(const BenchOptions& o, OutputFiles& files) {
   report.repeat = repeat_options(o);
   for (int h : o.cut_halfspaces)
     for (int k = 0; k < o.cut_scenes; ++k) report.rows.push_back(bench_cut(h, k, o, report.repeat));
-  report.footer = {std::to_string(report.rows.size()) +
-                   " random scenes (seed 1, up to 3 samples per halfspace); ratios to the double Boykov-Kolmogorov "
+  const std::size_t random_rows = report.rows.size();
+  for (const std::string& path : o.cut_inputs) report.rows.push_back(bench_cut_input(path, o, report.repeat));
+  report.footer = {std::to_string(random_rows) + " random scenes (seed 1, up to 3 samples per halfspace)" +
+                   (o.cut_inputs.empty() ? std::string() : " and " + std::to_string(o.cut_inputs.size()) +
+                                                               " given input(s)") +
+                   "; ratios to the double Boykov-Kolmogorov "
                    "max flow on the same graph, each built from the problem inside the timing"};
   publish(report, o, files);
 }
@@ -699,7 +720,11 @@ void add_bench_command(CLI::App& app) {
                "time the certified graph cut beside double Boykov-Kolmogorov and Edmonds-Karp max flows on random "
                "scenes instead");
   cmd->add_option("--cut-halfspaces", o->cut_halfspaces, "--cuts: the scenes' sizes (default 10 50 100 200)");
-  cmd->add_option("--cut-scenes", o->cut_scenes, "--cuts: random scenes per size (default 1)");
+  cmd->add_option("--cut-scenes", o->cut_scenes, "--cuts: random scenes per size (default 1; 0 with --cut-inputs)");
+  cmd->add_option("--cut-inputs", o->cut_inputs,
+                  "--cuts: also time the cut of these inputs (2D or 3D scenes, the BSH authors' config.json, "
+                  "hsx-complex/1), after the random scenes (--cut-scenes 0: only these)")
+      ->check(CLI::ExistingFile);
   cmd->add_flag("--3d", o->three_d,
                "time the exact 3D arrangement beside CGAL's Nef polyhedra on the BSH authors' figure19_b (at h, h/2, "
                "h/4) and on random planes, instead of the BSH methods");
@@ -729,6 +754,7 @@ void add_bench_command(CLI::App& app) {
     files.expect(o->json_path, "--json");
     if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) > 1)
       throw InputError("bench: --cuts, --3d and --meshes exclude each other");
+    if (!o->cuts && !o->cut_inputs.empty()) throw InputError("bench: --cut-inputs needs --cuts");
     if (o->cuts)
       run_cut_bench(*o, files);
     else if (o->three_d)

@@ -323,7 +323,8 @@ void add_extract_command(CLI::App& app) {
   cmd->add_option("--states-svg", o->states_svg_path,
                   "beam and best-first: write the states along the search's path to the result as one picture, a "
                   "panel per state (its boundary, its removed patches highlighted, its energy; 3D: the isometric "
-                  "view), as in the paper's Fig. 10; each state's graph cut is computed again for it")
+                  "view), as in the paper's Fig. 10; K = 1 beam draws the states it recorded, other searches compute "
+                  "each state's graph cut again")
       ->check(output_path());
   cmd->add_option("--obj", o->obj_path,
                   "3D: write the shape's boundary as an OBJ mesh (outward, one group per patch, a material per "

@@ -315,6 +315,28 @@ if ((rc == 2)) && grep -q -- "--planes needs --3d" "$TMP/stderr.txt"; then pass;
 "$HSX" bench --3d "$TMP/bench" >/dev/null 2>"$TMP/stderr.txt"
 rc=$?
 if ((rc == 2)) && grep -q -- "does not apply to --3d" "$TMP/stderr.txt"; then pass; else fail "bench --3d DIRS: exit $rc"; fi
+# ---- bench --cuts --cut-inputs: the certified cut of given 2D and 3D inputs beside the double max flows ----
+if "$HSX" bench --cuts --cut-scenes 0 --cut-inputs "$ROOT/data/scenes/lens.json" "$ROOT/data/scenes3d/primitives.json" \
+  --repetitions 2 --min-time 0 --json "$TMP/bench-cuts.json" >/dev/null 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = d["rows"]
+assert d["mode"] == "cuts" and [r["input"].split("/")[-1] for r in rows] == ["lens.json", "primitives.json"], rows
+for r in rows:
+    assert [s["stage"] for s in r["stages"]] == ["certified cut", "zero-flow cut", "double BK", "double EK"], r
+    assert r["certified"] == "yes" and r["same cut"] == "yes" and r["cells"] > 1, r
+' "$TMP/bench-cuts.json"; then
+  pass
+else
+  fail "bench --cuts --cut-inputs: $(head -c 300 "$TMP/stderr.txt")"
+fi
+"$HSX" bench --cut-inputs "$ROOT/data/scenes/lens.json" >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--cut-inputs needs --cuts" "$TMP/stderr.txt"; then pass; else fail "bench --cut-inputs without --cuts: exit $rc"; fi
+"$HSX" bench --cuts --cut-scenes 0 >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--cut-scenes" "$TMP/stderr.txt"; then pass; else fail "bench --cuts --cut-scenes 0 alone: exit $rc"; fi
 # ---- arrange/extract --labels: cell and patch ids in the picture ----
 if "$HSX" arrange "$ROOT/data/scenes/lens.json" --svg "$TMP/labels.svg" --labels -q &&
   grep -q 'class="cell-id"' "$TMP/labels.svg" && grep -q 'class="patch-id"' "$TMP/labels.svg"; then

@@ -21,6 +21,13 @@ inline PointQ3 cross(const PointQ3& a, const PointQ3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
+/// A sample of `halfspace` given exactly at `p` (Sample3::given), as a scene file's "at".
+inline Sample3 at_sample(int halfspace, const PointQ3& p) {
+  Sample3 s;
+  s.halfspace = halfspace;
+  s.given = p;
+  return s;
+}
 inline Halfspace3 plane(const std::string& name, PointQ3 normal, Rational offset, bool complement = false) {
   Halfspace3 h;
   h.name = name;

@@ -28,13 +28,6 @@ using namespace hsx::test3;
 
 namespace {
 
-Sample3 at_sample(int halfspace, const PointQ3& p) {
-  Sample3 s;
-  s.halfspace = halfspace;
-  s.given = p;
-  return s;
-}
-
 /// Two boxes sharing a face, a plane through both, an octahedron touching nothing, a complemented tetrahedron:
 /// cells on both sides of shared faces, a floating shell, coincident-free but with a plane crossing two meshes.
 const Scene3& scene() {

@@ -24,13 +24,6 @@ using namespace hsx::test3;
 
 namespace {
 
-Sample3 at_sample(int halfspace, const PointQ3& p) {
-  Sample3 s;
-  s.halfspace = halfspace;
-  s.given = p;
-  return s;
-}
-
 /// Two boxes sharing a face, a plane cutting both (seen edge-on from the front and the side), an octahedron
 /// above them, a complemented tetrahedron; a sample on the octahedron and one on the plane.
 Scene3 picture_scene() {

@@ -137,6 +137,7 @@ class Result:
     area: Measure
     sample_connected: bool
     boundary_patches: List[int]
+    def boundary_mesh(self, exact: bool = False) -> Tuple[Any, Any, Any, Any]: ...
     removed_patches: List[int]
     steps: List[List[int]]
     ties: Ties

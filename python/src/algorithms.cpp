@@ -8,6 +8,11 @@
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/scene_json.hpp>
 #include <hsx/io/svg.hpp>
+#include <hsx/io/mesh_export.hpp>
+
+#include <pybind11/numpy.h>
+
+#include <map>
 
 namespace hsxpy {
 namespace {
@@ -99,6 +104,52 @@ std::vector<int> boundary_patches(const ResultHandle& h) {
   std::vector<char> on(c.supports.size(), 0);
   for (int g : bsh::boundary_supports(problem, h.r().labelling)) on[g] = 1;
   return hsx::patches_of_supports(c, on);
+}
+
+// The shape's boundary (io/mesh_export.hpp's shape_faces: outward, closed), vertices renumbered from 0 in ascending
+// arrangement order: (vertices (n,3) float64, or an (n,3) list of exact strings with `exact`; faces (m,3) int64;
+// patch (m,) int64; halfspace (m,) int64).
+py::tuple boundary_mesh(const ResultHandle& h, bool exact) {
+  const hsx::LoadedInput& in = *h.input;
+  if (!in.arranged3) throw hsx::InputError("boundary_mesh: needs a result of a 3D scene");
+  const std::vector<hsx::ExportedFace> faces = hsx::shape_faces(*in.arranged3, h.r().labelling);
+  std::map<int, int> index;
+  for (const auto& f : faces)
+    for (int v : f.vertices) index.emplace(v, 0);
+  int next = 0;
+  for (auto& [v, k] : index) k = next++;
+  const auto& points = in.arranged3->arrangement.vertices();
+  const auto n = static_cast<py::ssize_t>(index.size()), m = static_cast<py::ssize_t>(faces.size());
+  py::object vertices;
+  if (exact) {
+    py::list rows;
+    for (const auto& [v, k] : index) {
+      const hsx::PointQ3& p = points[v];
+      rows.append(py::make_tuple(p.x.get_str(), p.y.get_str(), p.z.get_str()));
+    }
+    vertices = rows;
+  } else {
+    py::array_t<double> a({n, py::ssize_t{3}});
+    auto w = a.mutable_unchecked<2>();
+    for (const auto& [v, k] : index) {
+      const hsx::PointQ3& p = points[v];
+      w(k, 0) = p.x.get_d();
+      w(k, 1) = p.y.get_d();
+      w(k, 2) = p.z.get_d();
+    }
+    vertices = a;
+  }
+  py::array_t<std::int64_t> tri({m, py::ssize_t{3}}), patch(m), halfspace(m);
+  auto t = tri.mutable_unchecked<2>();
+  auto pa = patch.mutable_unchecked<1>();
+  auto ha = halfspace.mutable_unchecked<1>();
+  for (py::ssize_t i = 0; i < m; ++i) {
+    const auto& f = faces[static_cast<std::size_t>(i)];
+    for (int j = 0; j < 3; ++j) t(i, j) = index.at(f.vertices[static_cast<std::size_t>(j)]);
+    pa(i) = f.patch;
+    ha(i) = f.halfspace;
+  }
+  return py::make_tuple(vertices, tri, patch, halfspace);
 }
 
 std::vector<std::vector<int>> step_patches(const ResultHandle& h) {
@@ -200,6 +251,11 @@ void bind_result(py::module_& m) {
       })
       .def_property_readonly("sample_connected", [](const ResultHandle& h) { return h.r().sample_connected; })
       .def_property_readonly("boundary_patches", &boundary_patches, "Patches on the shape's boundary, ascending")
+      .def("boundary_mesh", &boundary_mesh, py::arg("exact") = false,
+           "3D: the shape's boundary as a closed, outward triangle mesh (io/mesh_export.hpp's shape_faces): "
+           "(vertices, faces, patch, halfspace); vertices a float64 (n, 3) array, or with exact=True a list of "
+           "(x, y, z) exact rational strings; faces an int64 (m, 3) array of vertex rows, normal (v1-v0)x(v2-v0) "
+           "outward; patch and halfspace per face. Raises InputError for a 2D result")
       .def_property_readonly("removed_patches",
                              [](const ResultHandle& h) {
                                return hsx::patches_of_supports(h.input->complex(), h.r().removed);

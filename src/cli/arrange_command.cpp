@@ -1,4 +1,4 @@
-// hsx arrange INPUT [--svg FILE [--labels]] [--json FILE] [--ply FILE] [--obj FILE]: the exact arrangement of a 2D
+// hsx arrange INPUT [--svg FILE [--labels]] [--json FILE] [--ply FILE] [--obj FILE] [--export FORMAT FILE]: the exact arrangement of a 2D
 // or 3D scene and its complex, or an hsx-complex/1 document read and checked.
 #include "cli/commands.hpp"
 #include <hsx/complex/from_arrangement2.hpp>
@@ -6,6 +6,7 @@
 #include <hsx/io/files.hpp>
 #include <hsx/hsx.hpp>
 #include <hsx/io/input.hpp>
+#include <hsx/io/labelling.hpp>
 #include <hsx/io/mesh_export.hpp>
 #include <hsx/io/svg.hpp>
 #include <hsx/io/svg3.hpp>
@@ -24,6 +25,8 @@ struct ArrangeOptions {
   std::string svg_path;
   std::string json_path;
   std::string ply_path, obj_path;  ///< 3D only
+  std::vector<std::string> export_spec;  ///< --export FORMAT FILE (empty: none)
+  std::int64_t weight_scale = kDefaultGraphcutWeightScale;
   bool labels = false;
   bool quiet = false;
   ArrangementLimits limits;
@@ -136,6 +139,15 @@ std::string picture(const LoadedInput& in, const ArrangeOptions& options) {
 
 void run_arrange(const ArrangeOptions& options) {
   OutputFiles out;  // checked before computing, written all or none at the end
+  const std::string export_path = options.export_spec.empty() ? "" : options.export_spec.at(1);
+  if (!options.export_spec.empty()) {
+    if (options.export_spec.at(0) != kBshGraphcutFormat)
+      throw InputError("--export: unknown format \"" + options.export_spec.at(0) + "\" (known: " +
+                       kBshGraphcutFormat + ")");
+    if (export_path.empty()) throw InputError("--export: an empty path");
+    if (options.weight_scale < 1) throw InputError("--weight-scale: must be at least 1");
+  }
+  out.expect(export_path, "--export");
   if (options.obj_path == "-") throw InputError("--obj: needs a file (its .mtl is written beside it), not '-'");
   const std::string mtl_path = options.obj_path.empty() ? "" : mtl_path_for(options.obj_path);
   out.expect(options.json_path, "--json");
@@ -149,17 +161,20 @@ void run_arrange(const ArrangeOptions& options) {
   std::string json_text, svg_text, ply_text;
   ObjText obj;
   if (!options.json_path.empty()) json_text = complex_json_text(in);
+  std::string export_text;
+  if (!export_path.empty()) export_text = bsh_graphcut_to_json(in.complex(), options.weight_scale).dump(1) + "\n";
   if (!options.svg_path.empty()) svg_text = picture(in, options);
   if (!options.ply_path.empty()) ply_text = arrangement_ply(*in.scene3, *in.arranged3);
   if (!options.obj_path.empty())
     obj = arrangement_obj(*in.scene3, *in.arranged3, std::filesystem::path(mtl_path).filename().string());
   out.put(options.json_path, std::move(json_text));
+  out.put(export_path, std::move(export_text));
   out.put(options.svg_path, std::move(svg_text));
   out.put(options.ply_path, std::move(ply_text));
   out.put(options.obj_path, std::move(obj.obj));
   out.put(mtl_path, std::move(obj.mtl));
   out.commit();
-  if (!options.quiet && options.json_path != "-") std::cout << summary_text(in);
+  if (!options.quiet && options.json_path != "-" && export_path != "-") std::cout << summary_text(in);
 }
 
 }  // namespace
@@ -187,6 +202,16 @@ void add_arrange_command(CLI::App& app) {
   cmd->add_flag("--labels", options->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the text");
   cmd->add_option("--json", options->json_path, "write the complex as hsx-complex/1 JSON ('-' for stdout)")
       ->check(output_path());
+  cmd->add_option("--export", options->export_spec,
+                  "FORMAT FILE: write the complex for another program ('-' for stdout). bsh-graphcut: the BSH "
+                  "authors' graph_cut input {num_cells, patches: [{adj_cell_0 (outside), adj_cell_1 (inside), "
+                  "weight, implicit_id, num_samples, adj_patches}]}, weights the patch measures times "
+                  "--weight-scale rounded to integers, plus outer_cells and exact measures (io/labelling.hpp); "
+                  "grade its answer with hsx grade INPUT LABELS")
+      ->expected(2)
+      ->type_name("FORMAT FILE");
+  cmd->add_option("--weight-scale", options->weight_scale,
+                  "bsh-graphcut: integer weight = round(measure x this), at least 1 (default 1000000)");
   cmd->add_flag("-q,--quiet", options->quiet, "do not print the summary");
   add_arrangement_limits(cmd, options->limits);
   cmd->callback([options] { run_arrange(*options); });

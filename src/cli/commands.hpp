@@ -2,6 +2,7 @@
 // exceptions: InputError -> exit 2 (bad input), anything else -> exit 1 (internal error).
 #pragma once
 
+#include <hsx/algorithms/bsh/problem.hpp>
 #include <hsx/geometry/arrangement2.hpp>
 
 #include <CLI/CLI.hpp>
@@ -61,6 +62,12 @@ inline void add_arrangement_limits(CLI::App* cmd, ArrangementLimits& limits) {
       ->check(CLI::NonNegativeNumber);
 }
 
+/// A measure for a summary: "DECIMAL = CLOSED FORM", or the decimal and the closed form's size when it is long
+/// (the JSON has it). Defined in extract_command.cpp.
+std::string measure_text(const Measure& m);
+/// An energy for a summary: "N missing samples, boundary length|area M" (measure_text).
+std::string energy_text(const bsh::Energy& e, int dimension);
+
 void add_arrange_command(CLI::App& app);
 void add_extract_command(CLI::App& app);
 void add_check_command(CLI::App& app);
@@ -69,5 +76,6 @@ void add_csg_commands(CLI::App& app);
 void add_nhtree_command(CLI::App& app);
 void add_nhsurvey_command(CLI::App& app);
 void add_reference_command(CLI::App& app);
+void add_grade_command(CLI::App& app);
 
 }  // namespace hsx::cli

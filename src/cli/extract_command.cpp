@@ -16,28 +16,6 @@
 #include <sstream>
 
 namespace hsx::cli {
-namespace {
-
-struct ExtractCommandOptions {
-  ArrangementLimits arrangement;  ///< --max-cells, --max-side-table
-  std::string input;
-  std::string method = "beam";
-  int beam_width = 1;
-  long max_states = 0;
-  long max_graph_cuts = 0;
-  long max_labellings = bsh::ExtractOptions().brute_force_limit;
-  long max_nodes = 0;
-  double time_limit = 0;
-  int precision_bits = 2048;
-  int max_ties = 16;
-  std::string svg_path, json_path, states_svg_path;
-  std::string obj_path, ply_path, off_path;  ///< 3D: the shape's boundary mesh
-  bool exact_coordinates = false;
-  bool show_removed = false;
-  bool labels = false;
-  bool no_timing = false;
-  bool quiet = false;
-};
 
 /// Closed forms with more terms or characters than these are left to the JSON; the summary gives their size.
 constexpr std::size_t kSummaryTerms = 6, kSummaryCharacters = 160;
@@ -60,6 +38,29 @@ std::string energy_text(const bsh::Energy& e, int dimension) {
   return std::to_string(e.missing_samples) + " missing sample" + (e.missing_samples == 1 ? "" : "s") +
          (dimension == 3 ? ", boundary area " : ", boundary length ") + measure_text(e.measure());
 }
+
+namespace {
+
+struct ExtractCommandOptions {
+  ArrangementLimits arrangement;  ///< --max-cells, --max-side-table
+  std::string input;
+  std::string method = "beam";
+  int beam_width = 1;
+  long max_states = 0;
+  long max_graph_cuts = 0;
+  long max_labellings = bsh::ExtractOptions().brute_force_limit;
+  long max_nodes = 0;
+  double time_limit = 0;
+  int precision_bits = 2048;
+  int max_ties = 16;
+  std::string svg_path, json_path, states_svg_path;
+  std::string obj_path, ply_path, off_path;  ///< 3D: the shape's boundary mesh
+  bool exact_coordinates = false;
+  bool show_removed = false;
+  bool labels = false;
+  bool no_timing = false;
+  bool quiet = false;
+};
 
 /// A lower bound or gap: "(missing samples, measure)".
 std::string bound_text(const bsh::EnergyBound& b) {

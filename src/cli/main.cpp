@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   hsx::cli::add_arrange_command(app);
   hsx::cli::add_extract_command(app);
   hsx::cli::add_check_command(app);
+  hsx::cli::add_grade_command(app);
   hsx::cli::add_csg_commands(app);
   hsx::cli::add_nhtree_command(app);
   hsx::cli::add_nhsurvey_command(app);

@@ -1,0 +1,118 @@
+// Labellings from elsewhere (io/labelling.hpp): the four formats read back what was written, errors name the source
+// and the field, and the BSH graph-cut export keeps the authors' conventions (adj_cell_0 outside, adj_cell_1
+// inside, integer weights, samples and neighbours per patch).
+#include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/io/input.hpp>
+#include <hsx/io/labelling.hpp>
+#include <hsx/io/result_json.hpp>
+
+#include <catch2/catch.hpp>
+#include <rapidcheck/catch.h>
+
+#include <cmath>
+#include <string>
+
+using namespace hsx;
+
+namespace {
+
+std::string scene_path(const std::string& name) { return std::string(HSX_SOURCE_DIR) + "/data/scenes/" + name; }
+
+std::string plain(const std::vector<char>& cells, const char* separator) {
+  std::string s;
+  for (std::size_t k = 0; k < cells.size(); ++k) s += (k ? separator : "") + std::string(cells[k] ? "1" : "0");
+  return s;
+}
+
+std::string message_of(const std::string& text, const Complex& complex) {
+  try {
+    read_labelling_text(text, "theirs.json", complex);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("labelling: every format reads back the labelling written", "[labelling]") {
+  const LoadedInput in = load_input(scene_path("star.json"));
+  const Complex& c = in.complex();
+  rc::prop("four formats, one labelling", [&] {
+    std::vector<char> cells(c.cells.size());
+    for (auto& v : cells) v = *rc::gen::element<char>(0, 1);
+    const auto plain_read = read_labelling_text(plain(cells, " ") + "\n", "", c);
+    RC_ASSERT(plain_read.cells == cells);
+    RC_ASSERT(plain_read.format == LabellingFormat::PlainList);
+    RC_ASSERT(read_labelling_text(plain(cells, ",\n"), "", c).cells == cells);
+    nlohmann::json bools = nlohmann::json::array(), ints = nlohmann::json::array();
+    for (char v : cells) {
+      bools.push_back(v != 0);
+      ints.push_back(static_cast<int>(v));
+    }
+    const auto labels = read_labelling_text(nlohmann::json{{"labels", bools}}.dump(), "", c);
+    RC_ASSERT(labels.cells == cells);
+    RC_ASSERT(labels.format == LabellingFormat::GraphcutLabels);
+    const auto list = read_labelling_text(ints.dump(), "", c);
+    RC_ASSERT(list.cells == cells);
+    RC_ASSERT(list.format == LabellingFormat::JsonList);
+  });
+  // An hsx-result/1 of this input reads as its inside cells.
+  const bsh::Problem problem(c);
+  bsh::ExtractOptions options;
+  options.method = bsh::Method::BestFirst;
+  const auto result = bsh::extract(problem, options);
+  const auto read = read_labelling_text(result_to_json(problem, result, in.pieces(), false).dump(), "", c);
+  CHECK(read.format == LabellingFormat::Result);
+  CHECK(read.cells == result.labelling);
+}
+
+TEST_CASE("labelling: bad labellings are InputErrors naming the source and the place", "[labelling]") {
+  const LoadedInput in = load_input(scene_path("star.json"));
+  const Complex& c = in.complex();
+  CHECK_THAT(message_of("0 1", c), Catch::Contains("theirs.json: 2 labels for " + std::to_string(c.cells.size())));
+  CHECK_THAT(message_of("0\n1\nx", c), Catch::Contains("theirs.json: line 3: label 2 is \"x\", not 0 or 1"));
+  CHECK_THAT(message_of("", c), Catch::Contains("theirs.json: empty"));
+  nlohmann::json bad = nlohmann::json::array();
+  for (std::size_t k = 0; k < c.cells.size(); ++k) bad.push_back(k == 1 ? nlohmann::json(2) : nlohmann::json(false));
+  CHECK_THAT(message_of(nlohmann::json{{"labels", bad}}.dump(), c),
+             Catch::Contains("theirs.json: labels[1]: expected true, false, 0 or 1, got 2"));
+  CHECK_THAT(message_of("{\"labels\": [true]}", c), Catch::Contains("1 labels for"));
+  CHECK_THAT(message_of("{\"cells\": []}", c), Catch::Contains("expected an hsx-result/1 document"));
+  CHECK_THAT(message_of("[1, ", c), Catch::Contains("theirs.json: line 1"));
+  // A result of another scene names its complex_id.
+  const LoadedInput other = load_input(scene_path("lens.json"));
+  const bsh::Problem problem(other.complex());
+  const auto result = bsh::extract(problem, {});
+  CHECK_THAT(message_of(result_to_json(problem, result, other.pieces(), false).dump(), c),
+             Catch::Contains("complex_id"));
+}
+
+TEST_CASE("labelling: the BSH graph-cut export keeps the authors' conventions", "[labelling]") {
+  for (const char* name : {"star.json", "coincident.json", "tangencies.json"}) {
+    const LoadedInput in = load_input(scene_path(name));
+    const Complex& c = in.complex();
+    const nlohmann::json g = bsh_graphcut_to_json(c, 1000);
+    REQUIRE(g.at("num_cells") == c.cells.size());
+    REQUIRE(g.at("patches").size() == c.patches.size());
+    CHECK(g.at("complex_id") == complex_identity(c));
+    const auto neighbours = c.patch_neighbours();
+    for (std::size_t p = 0; p < c.patches.size(); ++p) {
+      const auto& e = g.at("patches")[p];
+      CHECK(e.at("adj_cell_0") == c.patches[p].outside_cell);
+      CHECK(e.at("adj_cell_1") == c.patches[p].inside_cell);
+      CHECK(e.at("implicit_id") == c.patches[p].halfspace);
+      CHECK(e.at("num_samples") == c.patches[p].samples.size());
+      CHECK(e.at("adj_patches").get<std::vector<int>>() == neighbours[p]);
+      REQUIRE(e.at("weight").is_number_integer());
+      const double expected = std::max(1.0, std::round(c.patches[p].measure.to_double() * 1000));
+      CHECK(e.at("weight").get<double>() == expected);
+    }
+    std::size_t outer = 0;
+    for (const auto& cell : c.cells) outer += cell.outer;
+    CHECK(g.at("outer_cells").size() == outer);
+  }
+  const LoadedInput in = load_input(scene_path("star.json"));
+  CHECK_THROWS_AS(bsh_graphcut_to_json(in.complex(), 0), InputError);
+  CHECK_THROWS_WITH(bsh_graphcut_to_json(in.complex(), std::int64_t(1) << 62), Catch::Contains("exceeds 2^53"));
+}

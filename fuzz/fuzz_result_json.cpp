@@ -4,6 +4,8 @@
 // anything else is a finding. Checked on every accepted solid: describability agrees with BHC, and a BHC tree
 // evaluates to the solid on every cell.
 // Documents are read both as they are and, without a complex_id, with the right one filled in (see below).
+// The same bytes go through read_labelling_text (io/labelling.hpp: every format `hsx grade` accepts) too: a
+// labelling it accepts has one label per cell, and its grade never finds a valid labelling below the optimum.
 #include "fuzz_support.hpp"
 
 #include <hsx/algorithms/csg/bhc.hpp>
@@ -11,6 +13,7 @@
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/hsx.hpp>
 #include <hsx/io/exact_json.hpp>
+#include <hsx/io/labelling.hpp>
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/scene_json.hpp>
 
@@ -41,6 +44,14 @@ const hsx::Arranged2& arranged() {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > 16384) return -1;
   const hsx::Complex& complex = arranged().complex;
+  try {
+    const hsx::ReadLabelling read = hsx::read_labelling_text(std::string(hsx::fuzz::as_text(data, size)), "fuzz", complex);
+    if (read.cells.size() != complex.cells.size()) hsx::fuzz::finding(kTarget, "read_labelling: wrong size");
+    const hsx::bsh::Grade g = hsx::grade_labelling(complex, read.cells);
+    if (g.orientation_preserving && g.sample_connected && g.versus_optimum == hsx::Order::Less)
+      hsx::fuzz::finding(kTarget, "grade: a valid labelling below the proven optimum");
+  } catch (const hsx::InputError&) {
+  }
   std::vector<char> solid;
   try {
     nlohmann::json document = hsx::parse_exact_json(hsx::fuzz::as_text(data, size));

@@ -13,9 +13,10 @@ namespace {
 /// 2^53: beyond it not every integer is a double.
 constexpr double kLargestExactWeight = 9007199254740992.0;
 
+constexpr const char* kLabelOrder = "one per cell, in the order of the input's hsx-complex/1 cells: `hsx arrange INPUT --json`";
+
 std::string count_mismatch(std::size_t got, std::size_t cells) {
-  return std::to_string(got) + " labels for " + std::to_string(cells) +
-         " cells (one per cell, in the order of the input's hsx-complex/1 cells: `hsx arrange INPUT --json`)";
+  return std::to_string(got) + " labels for " + std::to_string(cells) + " cells (" + kLabelOrder + ")";
 }
 
 /// One JSON label: true/false or the integers 0/1.
@@ -36,6 +37,23 @@ std::vector<char> json_labels(const nlohmann::json& list, const std::string& fie
   return cells;
 }
 
+/// At most 40 characters of `token`, bytes outside printable ASCII as \xNN.
+std::string printable(const std::string& token) {
+  static const char* hex = "0123456789abcdef";
+  std::string out;
+  for (std::size_t k = 0; k < token.size() && k < 40; ++k) {
+    const auto c = static_cast<unsigned char>(token[k]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      out += "\\x";
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return token.size() > 40 ? out + "..." : out;
+}
+
 /// 0/1 tokens separated by white space or commas; errors name the line.
 std::vector<char> plain_labels(const std::string& text, const Complex& complex) {
   std::vector<char> cells;
@@ -53,11 +71,11 @@ std::vector<char> plain_labels(const std::string& text, const Complex& complex) 
     const std::string token = text.substr(k, end - k);
     if (token != "0" && token != "1")
       throw InputError("line " + std::to_string(line) + ": label " + std::to_string(cells.size()) + " is \"" +
-                       (token.size() > 40 ? token.substr(0, 40) + "..." : token) + "\", not 0 or 1");
+                       printable(token) + "\", not 0 or 1");
     cells.push_back(token == "1" ? 1 : 0);
     if (cells.size() > complex.cells.size())
-      throw InputError("line " + std::to_string(line) + ": " + count_mismatch(cells.size(), complex.cells.size()) +
-                       " at least");
+      throw InputError("line " + std::to_string(line) + ": more than " + std::to_string(complex.cells.size()) +
+                       " labels for " + std::to_string(complex.cells.size()) + " cells (" + kLabelOrder + ")");
     k = end;
   }
   if (cells.size() != complex.cells.size()) throw InputError(count_mismatch(cells.size(), complex.cells.size()));

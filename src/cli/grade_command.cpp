@@ -1,7 +1,9 @@
-// hsx grade INPUT THEIR_RESULT: another program's BSH labelling graded exactly (algorithms/bsh/grade.hpp): is it
-// orientation-preserving and sample-connected, of which energy, optimal, and if not, by how much and where.
+// hsx grade INPUT THEIR_RESULT | --run CMD: another program's BSH labelling graded exactly (algorithms/bsh/grade.hpp):
+// is it orientation-preserving and sample-connected, of which energy, optimal, and if not, by how much and where.
+// With --run the program is run here on the input (io/external_solver.hpp) and its answer graded.
 #include <hsx/algorithms/bsh/grade.hpp>
 #include "cli/commands.hpp"
+#include <hsx/io/external_solver.hpp>
 #include <hsx/io/files.hpp>
 #include <hsx/io/input.hpp>
 #include <hsx/io/json_values.hpp>
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <memory>
 #include <sstream>
 
@@ -27,6 +30,9 @@ struct GradeCommandOptions {
   int precision_bits = 2048;
   std::string json_path;
   bool quiet = false;
+  std::string run_command, run_input = "bsh-graphcut";  ///< --run, --run-input
+  double run_time_limit = 0;                            ///< --run-time-limit
+  std::int64_t weight_scale = kDefaultGraphcutWeightScale;
 };
 
 /// Exit statuses: 0 optimal (proven), 3 not (invalid, or proven worse than the optimum), 4 undecided (the reference
@@ -116,7 +122,7 @@ nlohmann::json grade_json(const GradeCommandOptions& o, const Complex& c, Labell
   if (!g.optimum.stopped_by.empty()) optimum["stopped_by"] = g.optimum.stopped_by;
   return {{"format", "hsx-grade/1"},
           {"input", o.input},
-          {"graded", o.theirs},
+          {"graded", o.theirs.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.theirs)},
           {"graded_format", to_string(format)},
           {"complex_id", complex_identity(c)},
           {"verdict", verdict(g)},
@@ -131,6 +137,13 @@ nlohmann::json grade_json(const GradeCommandOptions& o, const Complex& c, Labell
           {"boundary_difference", {{"theirs_only", d.theirs_only}, {"optimum_only", d.optimum_only}}}};
 }
 
+nlohmann::json run_json(const GradeCommandOptions& o, const ExternalRun& r) {
+  nlohmann::json j = {{"command", o.run_command}, {"input", o.run_input}, {"ran", r.ran}, {"timed_out", r.timed_out},
+                      {"exit_status", r.exit_status}, {"seconds", r.seconds}, {"output_tail", r.output_tail}};
+  if (!r.problem.empty()) j["problem"] = r.problem;
+  return j;
+}
+
 std::string patch_list(const Complex& c, const std::vector<int>& patches) {
   std::string s;
   for (int p : patches) s += " " + c.halfspace_names[c.patches[p].halfspace] + "#" + std::to_string(p);
@@ -140,7 +153,7 @@ std::string patch_list(const Complex& c, const std::vector<int>& patches) {
 std::string summary(const GradeCommandOptions& o, const Complex& c, LabellingFormat format, const bsh::Grade& g,
                     const BoundaryDifference& d) {
   std::ostringstream out;
-  out << "graded " << o.theirs << " (" << to_string(format) << ") on " << c.cells.size() << " cells\n";
+  out << "graded " << (o.theirs.empty() ? std::string("the output of --run") : o.theirs) << " (" << to_string(format) << ") on " << c.cells.size() << " cells\n";
   out << "orientation-preserving " << (g.orientation_preserving ? "yes" : "no: " + g.orientation_problem) << "\n";
   out << "sample-connected " << (g.sample_connected ? "yes" : "no, " + std::to_string(g.islands.size()) +
                                                                   (g.islands.size() == 1 ? " island" : " islands") +
@@ -164,18 +177,69 @@ std::string summary(const GradeCommandOptions& o, const Complex& c, LabellingFor
   return out.str();
 }
 
+/// The labelling to grade: THEIR_RESULT, or what --run's program wrote (nullopt when it gave none: `run` says why).
+std::optional<ReadLabelling> their_labelling(const GradeCommandOptions& o, const LoadedInput& in,
+                                             std::optional<ExternalRun>& run) {
+  if (o.run_command.empty()) return read_labelling_file(o.theirs, in.complex());
+  ExternalSolver solver;
+  solver.command = o.run_command;
+  solver.input = *external_input_from_string(o.run_input);
+  solver.weight_scale = o.weight_scale;
+  solver.time_limit = o.run_time_limit;
+  run = run_external_solver(in, solver);
+  return run->labelling;
+}
+
+/// --run options checked before anything is computed.
+void check_run_options(const GradeCommandOptions& o) {
+  if (o.run_command.empty() == o.theirs.empty())
+    throw InputError(o.theirs.empty() ? "THEIR_RESULT: give their labelling file, or --run CMD to compute it here"
+                                      : "--run: give THEIR_RESULT or --run, not both");
+  if (o.run_command.empty()) return;
+  if (!external_input_from_string(o.run_input))
+    throw InputError("--run-input: unknown format \"" + o.run_input + "\" (bsh-graphcut or complex)");
+  if (o.weight_scale < 1) throw InputError("--weight-scale: must be at least 1");
+  ExternalSolver solver;
+  solver.command = o.run_command;
+  solver.time_limit = o.run_time_limit;
+  try {
+    check_external_solver(solver);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--run: ") + e.what());
+  }
+}
+
 int run_grade(const GradeCommandOptions& o) {
   const bsh::ExtractOptions oracle = oracle_options(o);
+  check_run_options(o);
   OutputFiles out;
   out.expect(o.json_path, "--json");
   const LoadedInput in = load_input(o.input, o.arrangement);
-  const ReadLabelling theirs = read_labelling_file(o.theirs, in.complex());
+  std::optional<ExternalRun> run;
+  const std::optional<ReadLabelling> theirs = their_labelling(o, in, run);
+  if (!theirs) {  // their program gave no answer: that is its grade, not bad input
+    out.put(o.json_path, nlohmann::json{{"format", "hsx-grade/1"}, {"input", o.input}, {"verdict", "no answer"},
+                                        {"complex_id", complex_identity(in.complex())}, {"run", run_json(o, *run)}}
+                             .dump(2) + "\n");
+    out.commit();
+    if (!o.quiet && o.json_path != "-")
+      std::cout << "ran " << o.run_command << ": " << run->problem << " (" << run->seconds << " s)\n"
+                << (run->output_tail.empty() ? "" : "its output ends:\n" + run->output_tail +
+                                                      (run->output_tail.back() == '\n' ? "" : "\n"))
+                << "verdict no answer\n";
+    return kNotOptimal;
+  }
   const bsh::Problem problem(in.complex());
-  const bsh::Grade g = bsh::grade(problem, theirs.cells, oracle);
-  const BoundaryDifference d = boundary_difference(problem, in.complex(), theirs.cells, g.optimum.labelling);
-  out.put(o.json_path, grade_json(o, in.complex(), theirs.format, g, d).dump(2) + "\n");
+  const bsh::Grade g = bsh::grade(problem, theirs->cells, oracle);
+  const BoundaryDifference d = boundary_difference(problem, in.complex(), theirs->cells, g.optimum.labelling);
+  nlohmann::json j = grade_json(o, in.complex(), theirs->format, g, d);
+  if (run) j["run"] = run_json(o, *run);
+  out.put(o.json_path, j.dump(2) + "\n");
   out.commit();
-  if (!o.quiet && o.json_path != "-") std::cout << summary(o, in.complex(), theirs.format, g, d);
+  if (!o.quiet && o.json_path != "-") {
+    if (run) std::cout << "ran " << o.run_command << " in " << run->seconds << " s\n";
+    std::cout << summary(o, in.complex(), theirs->format, g, d);
+  }
   const std::string v = verdict(g);
   return v == "optimal" ? 0 : v == "undecided" ? kUndecided : kNotOptimal;
 }
@@ -193,8 +257,7 @@ void add_grade_command(CLI::App& app) {
   cmd->add_option("THEIR_RESULT", o->theirs,
                   "their labelling: an hsx-result/1, the BSH graph cut's {\"labels\": [...]} (true: inside), a JSON "
                   "array or a plain list of 0/1, one per cell in the order of `hsx arrange INPUT --json`'s cells "
-                  "(`hsx arrange INPUT --export bsh-graphcut F` writes their graph-cut input)")
-      ->required();
+                  "(`hsx arrange INPUT --export bsh-graphcut F` writes their graph-cut input); or --run");
   cmd->add_option("--method", o->method, "the reference search: best-first (default), exact or brute-force");
   cmd->add_option("--max-states", o->max_states, "reference: stop after expanding N states (0: no limit)");
   cmd->add_option("--max-nodes", o->max_nodes, "reference, exact: stop after N branch-and-bound nodes (0: no limit)");
@@ -205,6 +268,18 @@ void add_grade_command(CLI::App& app) {
                   "unless the labelling is invalid")
       ->check(seconds());
   cmd->add_option("--precision", o->precision_bits, "precision cap in bits for certified comparisons (default 2048)");
+  cmd->add_option("--run", o->run_command,
+                  "instead of THEIR_RESULT: run this shell command here and grade the labelling it writes; {input} "
+                  "and {output} stand for the two files, in a private folder removed afterwards "
+                  "(io/external_solver.hpp); a program that fails, times out or writes no labelling gets the "
+                  "verdict \"no answer\" (exit 3)");
+  cmd->add_option("--run-input", o->run_input,
+                  "--run: what {input} holds: bsh-graphcut (default, `hsx arrange --export bsh-graphcut`) or "
+                  "complex (hsx-complex/1)");
+  cmd->add_option("--run-time-limit", o->run_time_limit, "--run: kill the program after S seconds (0: no limit)")
+      ->check(seconds());
+  cmd->add_option("--weight-scale", o->weight_scale,
+                  "--run-input bsh-graphcut: integer weight = round(measure x this), at least 1 (default 1000000)");
   cmd->add_option("--json", o->json_path, "write the grade as hsx-grade/1 JSON ('-' for stdout)")->check(output_path());
   cmd->add_flag("-q,--quiet", o->quiet, "no summary (the exit status says the verdict)");
   add_arrangement_limits(cmd, o->arrangement);

@@ -124,6 +124,31 @@ for v in optimal suboptimal invalid undecided; do
 done
 echo "naive_graphcut on ${#verdicts[@]} bundled scenes: $summary"
 
+# ---- --run: the program run here, its answer graded ----
+SHARED="$ROOT/data/scenes/shared_edges.json"
+mkdir -p "$TMP/tmpdir"
+export TMPDIR="$TMP/tmpdir"
+expect_status 3 "--run naive_graphcut on shared_edges" "$HSX" grade "$SHARED" --run "'$NAIVE' {input} {output}" \
+  --json "$TMP/run.json"
+[[ "$(json_field "$TMP/run.json" "d['verdict'], d['run']['ran'], d['run']['exit_status'], d['graded_format']")" == \
+   "suboptimal True 0 BSH graph-cut labels" ]] && pass || fail "--run: $(head -c 600 "$TMP/run.json")"
+expect_status 0 "--run naive_graphcut on star" "$HSX" grade "$STAR" --run "'$NAIVE' {input} {output}" -q
+expect_status 3 "--run a program that times out" "$HSX" grade "$STAR" --run "sleep 20; : {input} {output}" \
+  --run-time-limit 0.5 --json "$TMP/slow.json"
+[[ "$(json_field "$TMP/slow.json" "d['verdict'], d['run']['timed_out'], d['run']['seconds'] < 5")" == \
+   "no answer True True" ]] && pass || fail "--run, timed out: $(head -c 600 "$TMP/slow.json")"
+expect_status 3 "--run a program that fails" "$HSX" grade "$STAR" --run "echo broken >&2; exit 9 # {input} {output}"
+grep -q "exit status 9" "$TMP/out.txt" && grep -q broken "$TMP/out.txt" && pass || fail "--run, failing: $(cat "$TMP/out.txt")"
+expect_status 3 "--run a program reading hsx-complex/1" "$HSX" grade "$STAR" --run-input complex \
+  --run "grep -q hsx-complex/1 {input} && echo 0 > {output}"
+grep -q "{output}: 1 labels for $cells cells" "$TMP/out.txt" && pass || fail "--run, short output: $(cat "$TMP/out.txt")"
+[[ -z "$(ls -A "$TMP/tmpdir")" ]] && pass || fail "--run left $(ls "$TMP/tmpdir") in TMPDIR"
+unset TMPDIR
+expect_status 2 "--run without {output}" "$HSX" grade "$STAR" --run "'$NAIVE' {input}"
+expect_status 2 "--run and THEIR_RESULT" "$HSX" grade "$STAR" "$TMP/star.plain.txt" --run "'$NAIVE' {input} {output}"
+expect_status 2 "neither THEIR_RESULT nor --run" "$HSX" grade "$STAR"
+expect_status 2 "--run-input unknown" "$HSX" grade "$STAR" --run "'$NAIVE' {input} {output}" --run-input scene
+
 # ---- bad input: exit 2, a message naming the file, no output ----
 expect_status 2 "too few labels" "$HSX" grade "$STAR" <(echo "0 1") --json "$TMP/no.json"
 grep -q "labels for $cells cells" "$TMP/err.txt" && pass || fail "too few labels: $(cat "$TMP/err.txt")"

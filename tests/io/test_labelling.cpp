@@ -2,6 +2,7 @@
 // and the field, and the BSH graph-cut export keeps the authors' conventions (adj_cell_0 outside, adj_cell_1
 // inside, integer weights, samples and neighbours per patch).
 #include <hsx/algorithms/bsh/extract.hpp>
+#include <hsx/io/external_solver.hpp>
 #include <hsx/io/input.hpp>
 #include <hsx/io/labelling.hpp>
 #include <hsx/io/result_json.hpp>
@@ -10,6 +11,10 @@
 #include <rapidcheck/catch.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include <unistd.h>
 #include <string>
 
 using namespace hsx;
@@ -115,4 +120,62 @@ TEST_CASE("labelling: the BSH graph-cut export keeps the authors' conventions", 
   const LoadedInput in = load_input(scene_path("star.json"));
   CHECK_THROWS_AS(bsh_graphcut_to_json(in.complex(), 0), InputError);
   CHECK_THROWS_WITH(bsh_graphcut_to_json(in.complex(), std::int64_t(1) << 62), Catch::Contains("exceeds 2^53"));
+}
+
+TEST_CASE("external solver: runs, times out, fails, and leaves nothing behind", "[labelling][external]") {
+  const LoadedInput in = load_input(scene_path("star.json"));
+  const std::size_t cells = in.complex().cells.size();
+  const std::string tmp = std::filesystem::temp_directory_path() / ("hsx-external-test-" + std::to_string(getpid()));
+  std::filesystem::create_directories(tmp);
+  setenv("TMPDIR", tmp.c_str(), 1);
+  ExternalSolver solver;
+  // A program that writes the empty shape as a plain list, after checking that its input is the graph-cut JSON.
+  solver.command = "grep -q adj_cell_0 {input} && python3 -c \"print(' '.join(['0'] * " + std::to_string(cells) +
+                   "))\" > {output}";
+  ExternalRun run = run_external_solver(in, solver);
+  CHECK(run.ran);
+  CHECK(run.exit_status == 0);
+  REQUIRE(run.labelling);
+  CHECK(run.labelling->cells == std::vector<char>(cells, 0));
+  CHECK(run.labelling->format == LabellingFormat::PlainList);
+  // hsx-complex/1 as the input, a JSON list as the output.
+  solver.input = ExternalInput::Complex;
+  std::string list = "[0";
+  for (std::size_t k = 1; k < cells; ++k) list += ",0";
+  solver.command = "grep -q hsx-complex/1 {input} && echo '" + list + "]' > {output}";
+  run = run_external_solver(in, solver);
+  REQUIRE(run.labelling);
+  CHECK(run.labelling->format == LabellingFormat::JsonList);
+  // A malformed output: the problem names {output}, not the private folder.
+  solver.command = "echo '" + list + "' > {output}; : {input}";
+  run = run_external_solver(in, solver);
+  CHECK(run.exit_status == 0);
+  CHECK_FALSE(run.labelling);
+  CHECK_THAT(run.problem, Catch::StartsWith("{output}: line "));
+  // Failing, silent and slow programs.
+  solver.input = ExternalInput::BshGraphcut;
+  solver.command = "echo oops >&2; exit 5 # {input} {output}";
+  run = run_external_solver(in, solver);
+  CHECK(run.exit_status == 5);
+  CHECK(run.problem == "exit status 5");
+  CHECK(run.output_tail == "oops\n");
+  solver.command = "true {input} {output}";
+  run = run_external_solver(in, solver);
+  CHECK(run.problem == "{output} was not written");
+  solver.command = "sleep 30 & sleep 30; : {input} {output}";
+  solver.time_limit = 0.3;
+  run = run_external_solver(in, solver);
+  CHECK(run.timed_out);
+  CHECK_FALSE(run.ran);
+  CHECK(run.seconds < 10);
+  // Every private folder is gone.
+  CHECK(std::filesystem::is_empty(tmp));
+  std::filesystem::remove_all(tmp);
+  unsetenv("TMPDIR");
+  // Bad solvers are InputErrors.
+  solver.time_limit = 0;
+  solver.command = "cat {input}";
+  CHECK_THROWS_WITH(run_external_solver(in, solver), Catch::Contains("has no {output}"));
+  solver.command = " ";
+  CHECK_THROWS_WITH(run_external_solver(in, solver), Catch::Contains("empty"));
 }

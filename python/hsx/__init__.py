@@ -24,11 +24,13 @@ from . import _hsx
 from ._hsx import (CancelToken, Cell, CheckResult, Complex, Conversion, CsgTree, Describability, Energy, Grade,
                    InputError, Junction, Measure, NhTree, Order, Patch, Result, SampleSite, Samples, Ties, Undecided,
                    compare)
-from ._scene import Disk, HalfPlane, Polygon, Sample, Scene, exact
+from ._scene import (Box, Cone, Cylinder, Disk, HalfPlane, Mesh, Plane, Polygon, Sample, Scene, Scene3, Sphere, Torus,
+                     exact)
 
 __all__ = ["CancelToken", "Cell", "CheckResult", "Complex", "Conversion", "CsgTree", "Describability", "Energy",
            "Grade", "InputError", "Junction", "Measure", "NhTree", "Order", "Patch", "Result", "SampleSite", "Samples",
-           "Ties", "Undecided", "compare", "Disk", "HalfPlane", "Polygon", "Sample", "Scene", "exact", "arrange",
+           "Ties", "Undecided", "compare", "Disk", "HalfPlane", "Polygon", "Plane", "Box", "Sphere", "Cylinder", "Cone",
+           "Torus", "Mesh", "Sample", "Scene", "Scene3", "exact", "arrange",
            "load", "extract", "grade", "check", "solid", "describe", "csg", "samples", "convert", "nhtree",
            "random_scene", "random_scenes", "METHODS", "DEGENERACIES"]
 

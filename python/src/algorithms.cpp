@@ -378,6 +378,10 @@ void bind_samples(py::module_& m) {
                              "The exhaustive minimum, None when too large to search")
       .def("scene_json",
            [](const SamplesHandle& h, const std::string& description) -> py::object {
+             if (h.input->scene3)  // 3D: at the centroid of each patch's largest triangle (sample_scene.hpp)
+               return py::str(hsx::write_scene3(bsh::scene_with_samples(*h.input->scene3, *h.input->arranged3,
+                                                                        h.r.sample_patches, description))
+                                  .dump(2) + "\n");
              if (!h.input->scene) return py::none();
              return py::str(hsx::write_scene2(bsh::scene_with_samples(*h.input->scene, *h.input->arranged,
                                                                       h.r.sample_patches, description))

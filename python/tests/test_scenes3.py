@@ -47,3 +47,201 @@ def test_2d_result_has_no_boundary_mesh(scenes_dir):
 def test_bad_3d_input_raises():
     with pytest.raises(hsx.InputError):
         hsx.arrange('{"format": "hsx-scene/1", "dimension": 3, "halfspaces": [{"kind": "sphere"}]}')
+
+
+# ---- 3D scenes built programmatically (hsx.Scene3 and the 3D builders) ----
+
+SCENES3 = ["boxes_coincident", "cad_part", "coplanar_faces", "four_tori", "mesh_obj", "mesh_off", "mesh_ply",
+           "nested_cavity", "planes", "primitives", "sphere_cavity", "spheres_flipped_torus", "tangent_planes",
+           "torus_spheres"]
+
+
+def _tessellation_keywords(entry):
+    t = entry.get("tessellation", {})
+    return {k: (Fraction(v) if k == "edge_length" else v) for k, v in t.items()}
+
+
+def builder_of(entry, directory):
+    """The hsx builder call for one halfspace of a bundled 3D file (numbers as Fractions, never the file's text)."""
+    def p(key):
+        return tuple(Fraction(x) for x in entry[key])
+
+    kind, name, comp = entry["kind"], entry["name"], entry.get("complement", False)
+    tk = _tessellation_keywords(entry)
+    if kind == "plane":
+        h = hsx.Plane(p("normal"), Fraction(entry["offset"]), name)
+    elif kind == "box":
+        h = hsx.Box(p("min"), p("max"), name)
+    elif kind == "sphere":
+        h = hsx.Sphere(p("center"), Fraction(entry["radius"]), name, **tk)
+    elif kind == "cylinder":
+        h = hsx.Cylinder(p("axis_point1"), p("axis_point2"), Fraction(entry["radius"]), name,
+                         infinite=entry.get("infinite", False), **tk)
+    elif kind == "cone":
+        h = hsx.Cone(p("apex"), p("base_center"), Fraction(entry["radius"]), name, **tk)
+    elif kind == "torus":
+        h = hsx.Torus(p("center"), p("axis"), Fraction(entry["major_radius"]), Fraction(entry["minor_radius"]),
+                      name, **tk)
+    elif kind == "mesh":
+        h = hsx.Mesh(directory / entry["file"], name)  # absolute: the scene built here has no file
+    else:
+        raise AssertionError(f"a kind the builders do not cover: {kind}")
+    return ~h if comp else h
+
+
+def built_scene(path):
+    doc = json.loads(path.read_text(), parse_float=str)
+    domain = doc.get("domain")
+    scene = hsx.Scene3([builder_of(e, path.parent) for e in doc["halfspaces"]],
+                       domain=None if domain is None else (tuple(map(Fraction, domain["min"])),
+                                                           tuple(map(Fraction, domain["max"]))),
+                       description=doc.get("description"))
+    for s in doc.get("samples", []):
+        key = "at" if "at" in s else "near"
+        scene.sample(s["on"], **{key: tuple(Fraction(x) for x in s[key])})
+    return scene, doc
+
+
+@pytest.mark.parametrize("name", SCENES3)
+def test_built_scene_matches_the_file_and_the_cli(name, source_dir, hsx_program, tmp_path):
+    path = source_dir / "data" / "scenes3d" / f"{name}.json"
+    scene, doc = built_scene(path)
+    assert isinstance(scene, hsx.Scene3) and isinstance(scene, hsx.Scene)
+    assert sorted({h["kind"] for h in scene.to_dict()["halfspaces"]}) == sorted({h["kind"] for h in doc["halfspaces"]})
+    c = hsx.arrange(scene)
+    assert c.dimension == 3 and c.has_scene
+    # the CLI on the file: the arrangement's counts and identity, the graph cut's exact volume
+    arranged = tmp_path / "a.json"
+    subprocess.run([hsx_program, "arrange", str(path), "--json", str(arranged)], capture_output=True, text=True,
+                   check=True)
+    counts = json.loads(arranged.read_text())["counts"]
+    assert (len(c.cells), len(c.patches), len(c.junctions), len(c.samples), c.outer_cell_count) == (
+        counts["cells"], counts["patches"], counts["junctions"], counts["samples"], counts["outer_cells"])
+    assert c.identity == hsx.load(str(path)).identity
+    result = tmp_path / "r.json"
+    subprocess.run([hsx_program, "extract", str(path), "--method", "graphcut", "--json", str(result)],
+                   capture_output=True, text=True, check=True)
+    cli = json.loads(result.read_text())
+    r = hsx.extract(scene, method="graphcut")
+    assert r.complex.identity == cli["complex_id"]
+    assert r.volume.rational == Fraction(cli["volume"]["exact"])
+    assert r.volume.exact == cli["volume"]["exact"] or Fraction(r.volume.exact) == Fraction(cli["volume"]["exact"])
+    assert sorted(r.inside_cells) == sorted(cli["inside_cells"])
+
+
+def test_primitives_by_hand_and_round_trips(source_dir):
+    F = Fraction
+    s = hsx.Scene3([hsx.Torus((0, 0, 0), (0, 0, 1), 3, F(1, 2), "T", segments=24, minor_segments=8),
+                    hsx.Cone((0, 0, 4), (0, 0, 1), 2, "K", segments=12),
+                    hsx.Cylinder((-4, 0, 0), (4, 0, 0), 1, "C", edge_length="1/2"),
+                    ~hsx.Cylinder((0, 0, 0), (0, 1, 0), 5, "I", infinite=True, segments=16)],
+                   domain=((-6, -6, -6), (6, 6, 6)))
+    s.sample("T", near=(3, 0, 1))
+    s.sample("K", near=(0, 0, 5))
+    s.sample(s.to_dict()["halfspaces"][3]["name"], near=(6, 0, 0))
+    path = source_dir / "data" / "scenes3d" / "primitives.json"
+    assert hsx.arrange(s).identity == hsx.load(str(path)).identity
+    d = s.to_dict()
+    assert d["dimension"] == 3 and d["halfspaces"][0]["minor_radius"] == "1/2"
+    assert d["halfspaces"][0]["tessellation"] == {"segments": 24, "minor_segments": 8}
+    assert d["halfspaces"][2]["tessellation"] == {"edge_length": "1/2"}
+    assert d["halfspaces"][3]["infinite"] is True and d["halfspaces"][3]["complement"] is True
+    again = hsx.Scene.from_dict(d)
+    assert isinstance(again, hsx.Scene3) and again.to_json() == s.to_json()
+    from_text = hsx.Scene.from_json(s.to_json())
+    assert isinstance(from_text, hsx.Scene3)
+    assert hsx.arrange(from_text).identity == hsx.arrange(s).identity
+    # a file read as text comes back as a dict with exact numbers (hsx's writer: every primitive's tessellation)
+    f = hsx.Scene.from_file(path)
+    assert isinstance(f, hsx.Scene3) and f.halfspace_names == ["T", "K", "C", "I"]
+    assert hsx.arrange(hsx.Scene3.from_dict(f.to_dict())).identity == hsx.arrange(f).identity
+    # unnamed halfspaces are named by position; the default tessellation is the reader's
+    u = hsx.Scene3([hsx.Sphere((0, 0, 0), 1), hsx.Box((-2, -2, -2), (0, 0, 0))])
+    assert hsx.arrange(u).halfspaces == ["H0", "H1"]
+    assert "tessellation" not in u.to_dict()["halfspaces"][0]
+    assert hsx.arrange(u).identity == hsx.arrange(hsx.Scene3(
+        [hsx.Sphere((0, 0, 0), 1, "H0", segments=32), hsx.Box((-2, -2, -2), (0, 0, 0), "H1")])).identity
+    assert repr(u) == "<hsx.Scene3: 2 halfspaces, 0 samples>"
+
+
+def test_3d_numbers_are_exact():
+    with pytest.raises(TypeError, match=r"radius: 0\.5 is a float"):
+        hsx.Sphere((0, 0, 0), 0.5)
+    with pytest.raises(TypeError, match=r"center\[2\]: 0\.5 is a float"):
+        hsx.Sphere((0, 0, 0.5), 1)
+    with pytest.raises(TypeError, match=r"tessellation\.edge_length: 0\.1 is a float"):
+        hsx.Cylinder((0, 0, 0), (0, 0, 1), 1, edge_length=0.1)
+    with pytest.raises(TypeError, match="a number of segments is an int"):
+        hsx.Sphere((0, 0, 0), 1, segments=16.0)
+    with pytest.raises(TypeError, match="a 3D point has 3 coordinates, got 2"):
+        hsx.Plane((0, 1), 0)
+    with pytest.raises(TypeError, match="infinite: a bool"):
+        hsx.Cylinder((0, 0, 0), (0, 0, 1), 1, infinite=1)
+    s = hsx.Sphere((0, 0, 0), 0.1, "S", exact_from_float=True, edge_length=0.25)
+    assert Fraction(s.to_dict()["radius"]) == Fraction(0.1) != Fraction(1, 10)
+    assert s.to_dict()["tessellation"] == {"edge_length": "1/4"}
+    # "0.1" as a string is 1/10 exactly, as the reader reads it
+    a = hsx.arrange(hsx.Scene3([hsx.Box((0, 0, 0), ("0.1", 1, 1), "B")], domain=((-1, -1, -1), (2, 2, 2))))
+    inner = [c for c in a.cells if not c.outer]
+    assert len(inner) == 1 and inner[0].measure.rational == Fraction(1, 10)
+
+
+def test_dimensions_do_not_mix():
+    with pytest.raises(TypeError, match=r"Scene3\.add: a Plane, Box.*got a 2D Disk"):
+        hsx.Scene3([hsx.Disk((0, 0), 1)])
+    with pytest.raises(TypeError, match=r"Scene\.add: a HalfPlane, Disk or Polygon, got a 3D Sphere"):
+        hsx.Scene([hsx.Sphere((0, 0, 0), 1)])
+    s = hsx.Scene3([hsx.Sphere((0, 0, 0), 1, "S")])
+    with pytest.raises(TypeError, match="has 2 coordinates; a 3D scene needs 3"):
+        s.sample("S", at=(1, 0))
+    with pytest.raises(hsx.InputError, match="dimension: expected 3, got 2"):
+        hsx.Scene3.from_dict({"format": "hsx-scene/1", "dimension": 2, "halfspaces": []})
+    assert type(hsx.Scene.from_dict({"format": "hsx-scene/1", "dimension": 2, "halfspaces": []})) is hsx.Scene
+
+
+def test_3d_builder_errors_carry_the_cli_messages(tmp_path):
+    with pytest.raises(hsx.InputError, match=r"halfspaces\[0\]\.radius: must be positive"):
+        hsx.arrange(hsx.Scene3([hsx.Sphere((0, 0, 0), 0, "S")]))
+    with pytest.raises(hsx.InputError, match=r"minor_radius: must be below major_radius"):
+        hsx.arrange(hsx.Scene3([hsx.Torus((0, 0, 0), (0, 0, 1), 1, 2, "T")]))
+    with pytest.raises(hsx.InputError, match=r"give \"segments\" or \"edge_length\", not both"):
+        hsx.arrange(hsx.Scene3([hsx.Sphere((0, 0, 0), 1, "S", segments=8, edge_length=1)]))
+    with pytest.raises(hsx.InputError, match="infinite cylinder is clipped by the domain"):
+        hsx.arrange(hsx.Scene3([hsx.Cylinder((0, 0, 0), (0, 0, 1), 1, "C", infinite=True)]))
+    with pytest.raises(hsx.InputError, match=r"halfspaces\[0\]\.file"):
+        hsx.arrange(hsx.Scene3([hsx.Mesh(tmp_path / "missing.obj", "M")]))
+    s = hsx.Scene3([hsx.Sphere((0, 0, 0), 1, "S", segments=8)])
+    s.sample("S", at=(5, 5, 5))
+    with pytest.raises(hsx.InputError, match=r"samples\[0\]"):
+        hsx.arrange(s)
+
+
+@pytest.mark.parametrize("name", ["cad_part", "nested_cavity", "mesh_ply"])
+def test_built_scene_extracts_checks_grades_as_the_cli(name, source_dir, hsx_program, tmp_path):
+    path = source_dir / "data" / "scenes3d" / f"{name}.json"
+    scene, _ = built_scene(path)
+    for method in ("exact", "beam"):
+        out = tmp_path / f"{method}.json"
+        subprocess.run([hsx_program, "extract", str(path), "--method", method, "--json", str(out), "--no-timing"],
+                       capture_output=True, text=True, check=True)
+        assert hsx.extract(scene, method=method).to_json() == out.read_text(), method
+    out = tmp_path / "check.json"
+    p = subprocess.run([hsx_program, "check", str(path), "--json", str(out)], capture_output=True, text=True)
+    assert p.returncode in (0, 3), p.stderr
+    cli = [(c["check"], c["status"], c["witness"]) for c in json.loads(out.read_text())["checks"]]
+    assert cli == [(c.name, c.status, c.witness) for c in hsx.check(scene)]
+    r = hsx.extract(scene, method="exact")
+    g = hsx.grade(scene, r.labelling)
+    assert g.optimal and g.energy.compare(r.energy) == hsx.Order.Equal
+
+
+def test_3d_samples_scene_json_reproduces_the_shape(source_dir):
+    c = hsx.arrange(built_scene(source_dir / "data" / "scenes3d" / "nested_cavity.json")[0])
+    target = hsx.extract(c, method="exact")
+    s = hsx.samples(c, target=target)
+    assert s.reproduced
+    text = s.scene_json()
+    doc = json.loads(text)
+    assert doc["dimension"] == 3 and len(doc["samples"]) == s.count
+    again = hsx.extract(text, method="exact")
+    assert list(again.labelling) == list(target.labelling)

@@ -245,3 +245,103 @@ def test_3d_samples_scene_json_reproduces_the_shape(source_dir):
     assert doc["dimension"] == 3 and len(doc["samples"]) == s.count
     again = hsx.extract(text, method="exact")
     assert list(again.labelling) == list(target.labelling)
+
+
+# ---- 3D surfaces as numpy arrays, against the CLI's mesh files ----
+
+def read_ply(text):
+    lines = text.splitlines()
+    end = lines.index("end_header")
+    nv = int(next(line for line in lines if line.startswith("element vertex")).split()[2])
+    nf = int(next(line for line in lines if line.startswith("element face")).split()[2])
+    vertices = [[float(x) for x in line.split()] for line in lines[end + 1:end + 1 + nv]]
+    faces = [[int(x) for x in line.split()] for line in lines[end + 1 + nv:end + 1 + nv + nf]]
+    return vertices, faces
+
+
+@pytest.mark.parametrize("name", ["cad_part", "mesh_obj", "boxes_coincident"])
+def test_surface_mesh_is_the_cli_ply(name, source_dir, hsx_program, tmp_path):
+    path = source_dir / "data" / "scenes3d" / f"{name}.json"
+    c = hsx.load(str(path))
+    v, f, patch, hs = c.surface_mesh()
+    assert v.dtype == np.float64 and v.shape[1] == 3
+    assert f.dtype == np.int64 and f.shape[1] == 3 and patch.shape == hs.shape == (len(f),)
+    ply = tmp_path / "a.ply"
+    cx_json = tmp_path / "a.json"
+    subprocess.run([hsx_program, "arrange", str(path), "--ply", str(ply), "--json", str(cx_json)],
+                   capture_output=True, text=True, check=True)
+    pv, pf = read_ply(ply.read_text())
+    assert v.tolist() == pv  # %.17g reads back as the same doubles
+    assert f.tolist() == [row[1:4] for row in pf]
+    assert patch.tolist() == [row[4] for row in pf] and hs.tolist() == [row[5] for row in pf]
+    # exact vertices: the arrangement's (hsx-complex/1 geometry), those of the exported faces, ascending
+    geometry = json.loads(cx_json.read_text())["geometry"]
+    used = sorted({k for t in geometry["triangles"] if not t["on_box"] and t["halfspaces"] for k in t["vertices"]})
+    ve, fe, pe, he = c.surface_mesh(exact=True)
+    assert [tuple(map(Fraction, row)) for row in ve] == [tuple(map(Fraction, geometry["vertices"][k])) for k in used]
+    assert fe.tolist() == f.tolist() and pe.tolist() == patch.tolist() and he.tolist() == hs.tolist()
+    # every face lies on its halfspace's patch; every patch of the complex that is first in its group has faces
+    for k in set(patch.tolist()):
+        assert c.patches[k].halfspace_index == int(hs[patch == k][0])
+
+
+def test_boundary_mesh_is_the_cli_off(source_dir, hsx_program, tmp_path):
+    path = source_dir / "data" / "scenes3d" / "cad_part.json"
+    r = hsx.extract(hsx.load(str(path)), method="beam")
+    off = tmp_path / "s.off"
+    subprocess.run([hsx_program, "extract", str(path), "--method", "beam", "--off", str(off),
+                    "--exact-coordinates"], capture_output=True, text=True, check=True)
+    lines = [line for line in off.read_text().splitlines() if not line.startswith("#")]
+    nv, nf, _ = map(int, lines[1].split())
+    ve, fe, patch, hs = r.boundary_mesh(exact=True)
+    assert [list(map(Fraction, row)) for row in ve] == [list(map(Fraction, line.split())) for line in lines[2:2 + nv]]
+    assert fe.tolist() == [list(map(int, line.split()[1:4])) for line in lines[2 + nv:2 + nv + nf]]
+    ranges = [line.split() for line in off.read_text().splitlines() if line.startswith("# patch ")]
+    expected_patch = []
+    for _, _, k, _, _, _, _, count in ranges:
+        expected_patch += [int(k)] * int(count)
+    assert patch.tolist() == expected_patch
+    # floats: the doubles the mesh files write (truncated toward zero, as GMP's mpq_get_d), within one ulp
+    v, f, _, _ = r.boundary_mesh()
+    nearest = np.array([[float(Fraction(x)) for x in row] for row in ve])
+    assert np.all(np.abs(v - nearest) <= np.spacing(np.abs(nearest))) and f.tolist() == fe.tolist()
+    assert np.all(np.abs(v) <= np.abs(nearest))
+
+
+def test_surface_mesh_refuses_2d_and_documents(scenes_dir, hsx_program, tmp_path, source_dir):
+    with pytest.raises(hsx.InputError, match="needs a 3D complex"):
+        hsx.load(str(scenes_dir / "lens.json")).surface_mesh()
+    doc = tmp_path / "c.json"
+    subprocess.run([hsx_program, "arrange", str(source_dir / "data" / "scenes3d" / "planes.json"), "--json",
+                    str(doc)], capture_output=True, text=True, check=True)
+    from_document = hsx.load(str(doc))
+    assert from_document.dimension == 3 and not from_document.has_scene
+    with pytest.raises(hsx.InputError, match="hsx-complex/1 document carries no triangles"):
+        from_document.surface_mesh()
+    assert from_document.svg() is None and from_document._repr_svg_() is None
+
+
+# ---- 3D pictures ----
+
+def test_3d_pictures_are_the_cli_svg(source_dir, hsx_program, tmp_path):
+    path = source_dir / "data" / "scenes3d" / "cad_part.json"
+    c = hsx.load(str(path))
+    out = tmp_path / "a.svg"
+    subprocess.run([hsx_program, "arrange", str(path), "--svg", str(out)], capture_output=True, text=True,
+                   check=True)
+    assert c.svg(width=1000, title=str(path)) == out.read_text()
+    r = hsx.extract(c, method="beam")
+    out = tmp_path / "r.svg"
+    subprocess.run([hsx_program, "extract", str(path), "--method", "beam", "--svg", str(out), "--show-removed",
+                    "--labels"], capture_output=True, text=True, check=True)
+    title = f"{path} - beam" + (" (optimal)" if r.optimal else "")
+    assert r.svg(show_removed=True, labels=True, width=1000, title=title) == out.read_text()
+    # notebooks: Complex, Result and Scene3 draw themselves (four views; a shape only its boundary)
+    for picture in (c._repr_svg_(), r._repr_svg_(), built_scene(path)[0]._repr_svg_()):
+        assert picture.startswith("<?xml") and picture.count('class="view"') >= 4
+    assert r._repr_svg_() != c._repr_svg_()
+    assert c.svg(fill=r.labelling, width=1000) == r.svg(width=1000)
+    with pytest.raises(hsx.InputError, match="width: a 3D picture needs at least 200"):
+        c.svg(width=100)
+    with pytest.raises(hsx.InputError, match="highlight: no patch"):
+        c.svg(highlight=[len(c.patches)])

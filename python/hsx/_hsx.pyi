@@ -111,6 +111,9 @@ class Complex:
             fill: Optional[Union[Sequence[bool], BoolArray]] = None, highlight: Optional[Sequence[int]] = None,
             highlight_legend: str = "highlighted patches") -> Optional[str]: ...
     def _repr_svg_(self) -> Optional[str]: ...
+    def surface_mesh(self, exact: bool = False) -> Tuple[Union[npt.NDArray[np.float64], List[Tuple[str, str, str]]],
+                                                         npt.NDArray[np.int64], npt.NDArray[np.int64],
+                                                         npt.NDArray[np.int64]]: ...
     def patch_polylines(self, arc_points: int = 32) -> List[List[npt.NDArray[np.float64]]]: ...
     def cell_outlines(self, arc_points: int = 32) -> List[List[npt.NDArray[np.float64]]]: ...
 
@@ -135,9 +138,12 @@ class Result:
     inside_cells: List[int]
     energy: Energy
     area: Measure
+    volume: Measure
     sample_connected: bool
     boundary_patches: List[int]
-    def boundary_mesh(self, exact: bool = False) -> Tuple[Any, Any, Any, Any]: ...
+    def boundary_mesh(self, exact: bool = False) -> Tuple[Union[npt.NDArray[np.float64], List[Tuple[str, str, str]]],
+                                                          npt.NDArray[np.int64], npt.NDArray[np.int64],
+                                                          npt.NDArray[np.int64]]: ...
     removed_patches: List[int]
     steps: List[List[int]]
     ties: Ties

@@ -256,7 +256,8 @@ void bind_result(py::module_& m) {
            py::arg("include_seconds") = false,
            "The hsx-result/1 document (`hsx extract --json --no-timing` writes the same bytes)")
       .def("svg", &result_svg, py::arg("show_removed") = false, py::arg("labels") = false, py::arg("width") = 800,
-           py::arg("title") = "", "The shape's picture (as `hsx extract --svg`; 3D: its boundary in four orthographic views, io/svg3.hpp; "
+           py::arg("title") = "",
+           "The shape's picture (as `hsx extract --svg`; 3D: its boundary in four orthographic views, io/svg3.hpp, "
            "width at least 200), None without a scene. `show_removed`: the search's removed patches highlighted")
       .def("_repr_svg_", [](const ResultHandle& h) { return result_svg(h, false, false, 800, ""); })
       .def("__repr__", [](const ResultHandle& h) {

@@ -294,8 +294,9 @@ void bind_complex(py::module_& m) {
            "Every structural invariant, checked exactly: the violations (empty: valid)")
       .def_property_readonly("identity", [](const ComplexHandle& h) { return hsx::complex_identity(h.complex()); },
                              "complex_id: the identity results carry (io/result_json.hpp)")
-      .def_property_readonly("has_scene", [](const ComplexHandle& h) { return h.input->scene.has_value() || h.input->scene3.has_value(); },
-                             "Arranged from a scene (False: read from an hsx-complex/1 document)")
+      .def_property_readonly("has_scene",
+                             [](const ComplexHandle& h) { return h.input->scene.has_value() || h.input->scene3.has_value(); },
+                             "Arranged from a scene, 2D or 3D (False: read from an hsx-complex/1 document)")
       .def_property_readonly("source", [](const ComplexHandle& h) { return h.input->path; },
                              "The file or name it was read from")
       .def("scene_json",

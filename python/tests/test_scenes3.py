@@ -146,6 +146,7 @@ def test_primitives_by_hand_and_round_trips(source_dir):
     assert d["halfspaces"][0]["tessellation"] == {"segments": 24, "minor_segments": 8}
     assert d["halfspaces"][2]["tessellation"] == {"edge_length": "1/2"}
     assert d["halfspaces"][3]["infinite"] is True and d["halfspaces"][3]["complement"] is True
+    assert hsx.arrange(d).identity == hsx.arrange(s).identity  # a dict goes through Scene.from_dict
     again = hsx.Scene.from_dict(d)
     assert isinstance(again, hsx.Scene3) and again.to_json() == s.to_json()
     from_text = hsx.Scene.from_json(s.to_json())
@@ -319,6 +320,8 @@ def test_surface_mesh_refuses_2d_and_documents(scenes_dir, hsx_program, tmp_path
     with pytest.raises(hsx.InputError, match="hsx-complex/1 document carries no triangles"):
         from_document.surface_mesh()
     assert from_document.svg() is None and from_document._repr_svg_() is None
+    with pytest.raises(hsx.InputError, match="Complex.surface_mesh"):
+        hsx.load(str(source_dir / "data" / "scenes3d" / "planes.json")).patch_polylines()
 
 
 # ---- 3D pictures ----

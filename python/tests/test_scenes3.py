@@ -348,3 +348,30 @@ def test_3d_pictures_are_the_cli_svg(source_dir, hsx_program, tmp_path):
         c.svg(width=100)
     with pytest.raises(hsx.InputError, match="highlight: no patch"):
         c.svg(highlight=[len(c.patches)])
+
+
+def test_cad_part_example(source_dir, tmp_path):
+    """examples/python/cad_part_3d.py: the part built in Python, its shape's closed boundary and exact volume, the
+    engine's SVG, and the matplotlib plot (or the message saying it is skipped)."""
+    import os
+    import sys
+    script = source_dir / "examples" / "python" / "cad_part_3d.py"
+    p = subprocess.run([sys.executable, str(script), "--svg", str(tmp_path / "s.svg"), "--png", str(tmp_path / "s.png")],
+                       capture_output=True, text=True, env=os.environ.copy(), timeout=600)
+    assert p.returncode == 0, p.stdout + p.stderr
+    assert "0 edges used unevenly, divergence volume == exact volume: yes" in p.stdout
+    assert "beam vs optimum: Equal" in p.stdout
+    assert (tmp_path / "s.svg").read_text().count('class="view"') >= 4
+    try:
+        import matplotlib  # noqa: F401
+        assert (tmp_path / "s.png").stat().st_size > 1000
+    except ImportError:
+        assert "matplotlib is not installed" in p.stdout and not (tmp_path / "s.png").exists()
+    # the example's scene is the bundled file's
+    sys.path.insert(0, str(script.parent))
+    try:
+        import cad_part_3d
+    finally:
+        sys.path.pop(0)
+    assert hsx.arrange(cad_part_3d.cad_part()).identity == hsx.load(
+        str(source_dir / "data" / "scenes3d" / "cad_part.json")).identity

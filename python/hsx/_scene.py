@@ -307,7 +307,13 @@ class Sample:
 
 
 def _dimension_of(document) -> Optional[int]:
-    d = document.get("dimension") if isinstance(document, dict) else None
+    """A document's dimension: its "dimension" field, 3 for a BSH authors' config.json (an "input" and no
+    "format", io/bsh_config.hpp), None when it has neither (hsx reports what is wrong when it is arranged)."""
+    if not isinstance(document, dict):
+        return None
+    if "format" not in document and "input" in document:
+        return 3
+    d = document.get("dimension")
     return d if isinstance(d, int) and not isinstance(d, bool) else None
 
 

@@ -198,6 +198,10 @@ def test_dimensions_do_not_mix():
     with pytest.raises(hsx.InputError, match="dimension: expected 3, got 2"):
         hsx.Scene3.from_dict({"format": "hsx-scene/1", "dimension": 2, "halfspaces": []})
     assert type(hsx.Scene.from_dict({"format": "hsx-scene/1", "dimension": 2, "halfspaces": []})) is hsx.Scene
+    assert type(hsx.Scene.from_json('{"input": []}')) is hsx.Scene3  # a BSH authors' config.json is 3D
+    assert type(hsx.Scene.from_json("{not json")) is hsx.Scene  # hsx reports it when arranged
+    with pytest.raises(hsx.InputError):
+        hsx.arrange(hsx.Scene.from_json("{not json"))
 
 
 def test_3d_builder_errors_carry_the_cli_messages(tmp_path):

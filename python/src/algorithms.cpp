@@ -149,7 +149,9 @@ py::dict stats_dict(const bsh::SearchStats& s) {
   return d;
 }
 
-py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int width, const std::string& title) {
+py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int width, const std::string& title,
+                      py::object views) {
+  refuse_views_in_2d(h.input, views);
   std::vector<char> highlight;
   if (show_removed) {
     highlight.assign(h.input->complex().patches.size(), 0);
@@ -163,6 +165,7 @@ py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int
     o.show_cell_ids = o.show_patch_ids = labels;
     o.highlight_patches = highlight;
     o.highlight_legend = "removed patches";
+    o.views = svg3_views(views);
     return svg3_picture(h.input, o);
   }
   hsx::SvgOptions o;
@@ -256,10 +259,11 @@ void bind_result(py::module_& m) {
            py::arg("include_seconds") = false,
            "The hsx-result/1 document (`hsx extract --json --no-timing` writes the same bytes)")
       .def("svg", &result_svg, py::arg("show_removed") = false, py::arg("labels") = false, py::arg("width") = 800,
-           py::arg("title") = "",
+           py::arg("title") = "", py::arg("views") = py::none(),
            "The shape's picture (as `hsx extract --svg`; 3D: its boundary in four orthographic views, io/svg3.hpp, "
-           "width at least 200), None without a scene. `show_removed`: the search's removed patches highlighted")
-      .def("_repr_svg_", [](const ResultHandle& h) { return result_svg(h, false, false, 800, ""); })
+           "width at least 200), None without a scene. `show_removed`: the search's removed patches highlighted; "
+           "`views` (3D only): as Complex.svg's")
+      .def("_repr_svg_", [](const ResultHandle& h) { return result_svg(h, false, false, 800, "", py::none()); })
       .def("__repr__", [](const ResultHandle& h) {
         return "<hsx.Result " + std::string(bsh::to_string(h.r().method)) + (h.r().optimal ? " optimal" : "") +
                ": " + std::to_string(h.r().energy.missing_samples) + " missing, measure " +

@@ -67,6 +67,13 @@ py::tuple face_arrays(const hsx::Arranged3& arranged, const std::vector<hsx::Exp
 /// The 3D picture of `input` (io/svg3.hpp's arrangement_svg3) with `options`, as a str; None for an input without
 /// a 3D scene. Throws InputError for a width below 200 (io/svg3.hpp's bound).
 py::object svg3_picture(const InputPtr& input, hsx::Svg3Options options);
+/// Svg3Options::views from Python: None (empty: the default four), or a non-empty sequence of default view names
+/// ("front", "side", "top", "isometric") and (name, direction, up) tuples of exact coordinates (io/svg3.hpp's
+/// SvgView3). Throws InputError for an unknown name, a zero direction or an up parallel to it, py::type_error for
+/// a malformed entry or a float coordinate.
+std::vector<hsx::SvgView3> svg3_views(py::handle views);
+/// Throws InputError ("views: only 3D pictures have views") when `views` is given for an input without a 3D scene.
+void refuse_views_in_2d(const InputPtr& input, py::handle views);
 
 // ---- cancel.cpp ----
 /// A stop flag another Python thread sets (hsx.CancelToken().cancel()); read by the search through its cancel hook.

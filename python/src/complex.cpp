@@ -63,8 +63,9 @@ std::string complex_repr(const ComplexHandle& h) {
 
 /// Complex.svg: 2D (io/svg.hpp) or 3D (io/svg3.hpp), with the same options.
 py::object complex_svg(const ComplexHandle& h, bool labels, int width, const std::string& title, py::object fill,
-                       py::object highlight, const std::string& highlight_legend) {
+                       py::object highlight, const std::string& highlight_legend, py::object views) {
   if (width < 1) throw hsx::InputError("width: must be at least 1");
+  refuse_views_in_2d(h.input, views);
   std::vector<char> cell_fill, highlighted;
   if (!fill.is_none()) cell_fill = flags_from(fill, h.complex().cells.size(), "fill");
   if (!highlight.is_none()) {
@@ -84,6 +85,7 @@ py::object complex_svg(const ComplexHandle& h, bool labels, int width, const std
     o.cell_fill = std::move(cell_fill);
     o.highlight_patches = std::move(highlighted);
     o.highlight_legend = highlight_legend;
+    o.views = svg3_views(views);
     return svg3_picture(h.input, o);
   }
   hsx::SvgOptions o;
@@ -311,9 +313,11 @@ void bind_complex(py::module_& m) {
            "The hsx-complex/1 document, byte for byte what `hsx arrange --json` writes")
       .def("svg", &complex_svg, py::arg("labels") = false, py::arg("width") = 800, py::arg("title") = "",
            py::arg("fill") = py::none(), py::arg("highlight") = py::none(),
-           py::arg("highlight_legend") = "highlighted patches",
+           py::arg("highlight_legend") = "highlighted patches", py::arg("views") = py::none(),
            "The arrangement's picture as SVG text (as `hsx arrange --svg`; 3D: four orthographic views of its "
-           "surfaces, io/svg3.hpp, width at least 200), None without a scene. `labels`: cell and patch ids; "
+           "surfaces, io/svg3.hpp, width at least 200), None without a scene. `views` (3D only): the views to "
+           "draw, names among front, side, top, isometric or (name, direction, up) tuples of exact numbers "
+           "(None: all four defaults). `labels`: cell and patch ids; "
            "`fill`: per cell, True inside a shape (drawn as `hsx extract --svg` does: 2D boundary bold, 3D only "
            "the shape's boundary; missing samples ringed); `highlight`: patch ids drawn highlighted, described in "
            "the legend by `highlight_legend`")

@@ -379,3 +379,33 @@ def test_cad_part_example(source_dir, tmp_path):
         sys.path.pop(0)
     assert hsx.arrange(cad_part_3d.cad_part()).identity == hsx.load(
         str(source_dir / "data" / "scenes3d" / "cad_part.json")).identity
+
+
+def test_3d_picture_views(source_dir, scenes_dir):
+    c = hsx.load(str(source_dir / "data" / "scenes3d" / "nested_cavity.json"))
+    one = c.svg(views=["isometric"], width=560)
+    assert one.count('class="view"') == 1 and "isometric (along (-1, 1, -1))" in one
+    assert "front (along +y)" not in one
+    # a view given by its exact direction and up is the default view of the same name
+    F = Fraction
+    assert c.svg(views=[("top (along -z)", (0, 0, -1), (0, 1, 0))]) == c.svg(views=["top"])
+    # any positive multiple of the direction and up is the same view (exact numbers of every kind)
+    assert c.svg(views=[("top (along -z)", (0, 0, F(-7, 3)), ("0", "2", 0))]) == c.svg(views=["top"])
+    both = c.svg(views=["front", ("mine", (1, 2, 3), (0, 0, 1))])
+    assert both.count('class="view"') == 2 and "mine" in both
+    r = hsx.extract(c, method="exact")
+    assert r.svg(views=["side"]).count('class="view"') == 1
+    with pytest.raises(hsx.InputError, match=r"views\[0\]: unknown view \"back\""):
+        c.svg(views=["back"])
+    with pytest.raises(hsx.InputError, match=r"views\[0\]\.direction: must not be zero"):
+        c.svg(views=[("z", (0, 0, 0), (0, 1, 0))])
+    with pytest.raises(hsx.InputError, match=r"views\[1\]\.up: must not be parallel"):
+        c.svg(views=["top", ("z", (0, 0, 1), (0, 0, 2))])
+    with pytest.raises(TypeError, match="is a float|float"):
+        c.svg(views=[("z", (0, 0, 1.0), (0, 1, 0))])
+    with pytest.raises(TypeError):
+        c.svg(views="top")
+    with pytest.raises(hsx.InputError, match="at least one view"):
+        c.svg(views=[])
+    with pytest.raises(hsx.InputError, match="only 3D pictures have views"):
+        hsx.load(str(scenes_dir / "lens.json")).svg(views=["top"])

@@ -8,6 +8,9 @@
     r = hsx.extract(cx, method="exact")            # hsx.Result: labelling (numpy bool), energy, ties, stats
     r.energy.measure.exact                         # '2/3*pi + ...', exact; float(r.energy.measure) for plotting
 
+    scene3 = hsx.Scene3([hsx.Sphere((0, 0, 0), 2, "S", segments=16), hsx.Box((0, 0, 0), (3, 3, 3), "B")])
+    r3 = hsx.extract(scene3, method="graphcut")    # 3D: r3.volume exact, r3.boundary_mesh() numpy arrays
+
 Every function takes a scene as an hsx.Scene, a dict, JSON text (a string starting with "{") or a file path, or
 an hsx.Complex already arranged. Bad input raises hsx.InputError (a ValueError) with the hsx program's message;
 a Python float where an exact number is expected raises TypeError unless exact_from_float=True (hsx/_scene.py).
@@ -24,11 +27,13 @@ from . import _hsx
 from ._hsx import (CancelToken, Cell, CheckResult, Complex, Conversion, CsgTree, Describability, Energy, Grade,
                    InputError, Junction, Measure, NhTree, Order, Patch, Result, SampleSite, Samples, Ties, Undecided,
                    compare)
-from ._scene import Disk, HalfPlane, Polygon, Sample, Scene, exact
+from ._scene import (Box, Cone, Cylinder, Disk, HalfPlane, Mesh, Plane, Polygon, Sample, Scene, Scene3, Sphere, Torus,
+                     exact)
 
 __all__ = ["CancelToken", "Cell", "CheckResult", "Complex", "Conversion", "CsgTree", "Describability", "Energy",
            "Grade", "InputError", "Junction", "Measure", "NhTree", "Order", "Patch", "Result", "SampleSite", "Samples",
-           "Ties", "Undecided", "compare", "Disk", "HalfPlane", "Polygon", "Sample", "Scene", "exact", "arrange",
+           "Ties", "Undecided", "compare", "Disk", "HalfPlane", "Polygon", "Plane", "Box", "Sphere", "Cylinder", "Cone",
+           "Torus", "Mesh", "Sample", "Scene", "Scene3", "exact", "arrange",
            "load", "extract", "grade", "check", "solid", "describe", "csg", "samples", "convert", "nhtree",
            "random_scene", "random_scenes", "METHODS", "DEGENERACIES"]
 

@@ -36,12 +36,47 @@ class Polygon(_Halfspace):
     def __init__(self, vertices: Iterable[Point], name: Optional[str] = ..., complement: bool = ..., *,
                  exact_from_float: bool = ...) -> None: ...
 
+class _Halfspace3(_Halfspace): ...
+
+class Plane(_Halfspace3):
+    def __init__(self, normal: Point, offset: Any, name: Optional[str] = ..., complement: bool = ..., *,
+                 exact_from_float: bool = ...) -> None: ...
+
+class Box(_Halfspace3):
+    def __init__(self, min_corner: Point, max_corner: Point, name: Optional[str] = ..., complement: bool = ..., *,
+                 exact_from_float: bool = ...) -> None: ...
+
+class Sphere(_Halfspace3):
+    def __init__(self, center: Point, radius: Any, name: Optional[str] = ..., complement: bool = ..., *,
+                 segments: Optional[int] = ..., edge_length: Any = ..., exact_from_float: bool = ...) -> None: ...
+
+class Cylinder(_Halfspace3):
+    def __init__(self, axis_point1: Point, axis_point2: Point, radius: Any, name: Optional[str] = ...,
+                 complement: bool = ..., *, infinite: bool = ..., segments: Optional[int] = ...,
+                 edge_length: Any = ..., exact_from_float: bool = ...) -> None: ...
+
+class Cone(_Halfspace3):
+    def __init__(self, apex: Point, base_center: Point, radius: Any, name: Optional[str] = ...,
+                 complement: bool = ..., *, segments: Optional[int] = ..., edge_length: Any = ...,
+                 exact_from_float: bool = ...) -> None: ...
+
+class Torus(_Halfspace3):
+    def __init__(self, center: Point, axis: Point, major_radius: Any, minor_radius: Any, name: Optional[str] = ...,
+                 complement: bool = ..., *, segments: Optional[int] = ..., minor_segments: Optional[int] = ...,
+                 edge_length: Any = ..., exact_from_float: bool = ...) -> None: ...
+
+class Mesh(_Halfspace3):
+    def __init__(self, file: Union[str, os.PathLike], name: Optional[str] = ..., complement: bool = ...) -> None: ...
+
 class Sample:
     def __init__(self, on: Union[str, _Halfspace], at: Optional[Point] = ..., near: Optional[Point] = ..., *,
                  exact_from_float: bool = ...) -> None: ...
+    @property
+    def dimension(self) -> int: ...
     def to_dict(self) -> dict: ...
 
 class Scene:
+    dimension: int
     source: str
     degeneracies: List[str]
     def __init__(self, halfspaces: Sequence[_Halfspace] = ..., samples: Sequence[Sample] = ...,
@@ -62,6 +97,8 @@ class Scene:
     @property
     def halfspace_names(self) -> List[str]: ...
     def _repr_svg_(self) -> Optional[str]: ...
+
+class Scene3(Scene): ...
 
 def load(source: Union[str, os.PathLike], *, max_cells: int = ..., max_side_table: int = ...) -> Complex: ...
 def arrange(scene: SceneLike, *, max_cells: int = ..., max_side_table: int = ...,

@@ -2,7 +2,8 @@
 
 Read from the complex's hsx-complex/1 document (its "geometry" section, complex_json.hpp): one-root coordinates
 "a + b*sqrt(c)" are evaluated in floating point, arcs are sampled. Complexes without geometry (read from a
-document that has none) have nothing to draw: both functions raise ValueError.
+document that has none) have nothing to draw: both functions raise ValueError; a 3D complex raises hsx.InputError
+(Complex.surface_mesh gives its surfaces).
 """
 from __future__ import annotations
 
@@ -40,6 +41,10 @@ def number(text: str) -> float:
 
 
 def _geometry(complex_):
+    if complex_.dimension != 2:
+        from ._hsx import InputError
+        raise InputError("patch_polylines and cell_outlines draw a 2D complex; a 3D complex gives its surfaces as "
+                         "arrays with Complex.surface_mesh()")
     doc = json.loads(complex_.to_json())
     g = doc.get("geometry")
     if not g:

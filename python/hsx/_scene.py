@@ -6,8 +6,9 @@ C++ reader). A Python ``float`` is refused with a ``TypeError`` unless ``exact_f
 which case the float's exact binary value is used: ``0.1`` becomes 3602879701896397/36028797018963968, the double
 nearest 1/10, not 1/10 itself (``Fraction(0.1)``).
 
-A Scene holds its hsx-scene/1 document (numbers as JSON integers or exact strings); the C++ reader validates it
-when it is arranged (``hsx.arrange``), with the CLI's messages ("halfspaces[2].radius: ...").
+A Scene (2D: HalfPlane, Disk, Polygon) or Scene3 (3D: Plane, Box, Sphere, Cylinder, Cone, Torus, Mesh) holds its
+hsx-scene/1 document (numbers as JSON integers or exact strings); the C++ reader validates it when it is arranged
+(``hsx.arrange``), with the CLI's messages ("halfspaces[2].radius: ...").
 """
 from __future__ import annotations
 
@@ -18,7 +19,8 @@ import os
 from fractions import Fraction
 from typing import Any, Iterable, List, Optional, Sequence
 
-__all__ = ["exact", "HalfPlane", "Disk", "Polygon", "Sample", "Scene"]
+__all__ = ["exact", "HalfPlane", "Disk", "Polygon", "Plane", "Box", "Sphere", "Cylinder", "Cone", "Torus", "Mesh",
+           "Sample", "Scene", "Scene3"]
 
 
 def exact(value: Any, where: str = "value", exact_from_float: bool = False):
@@ -55,13 +57,21 @@ def exact(value: Any, where: str = "value", exact_from_float: bool = False):
     raise TypeError(f"{where}: expected an int, a fractions.Fraction or an exact string, got {type(value).__name__}")
 
 
-def _point(p: Any, where: str, exact_from_float: bool) -> list:
+def _point(p: Any, where: str, exact_from_float: bool, dimensions=(2,)) -> list:
+    """``p`` as a list of exact numbers; its length must be one of ``dimensions``."""
     if isinstance(p, (str, bytes)) or not isinstance(p, Iterable):
-        raise TypeError(f"{where}: a point is a pair of numbers, got {type(p).__name__}")
+        raise TypeError(f"{where}: a point is a {'pair' if dimensions == (2,) else 'tuple'} of numbers, "
+                        f"got {type(p).__name__}")
     coords = list(p)
-    if len(coords) != 2:
-        raise TypeError(f"{where}: a 2D point has 2 coordinates, got {len(coords)}")
+    if len(coords) not in dimensions:
+        if len(dimensions) == 1:
+            raise TypeError(f"{where}: a {dimensions[0]}D point has {dimensions[0]} coordinates, got {len(coords)}")
+        raise TypeError(f"{where}: a point has 2 (2D) or 3 (3D) coordinates, got {len(coords)}")
     return [exact(x, f"{where}[{k}]", exact_from_float) for k, x in enumerate(coords)]
+
+
+def _point3(p: Any, where: str, exact_from_float: bool) -> list:
+    return _point(p, where, exact_from_float, (3,))
 
 
 def _normalise(value: Any, where: str, exact_from_float: bool) -> Any:
@@ -82,6 +92,7 @@ def _normalise(value: Any, where: str, exact_from_float: bool) -> Any:
 
 class _Halfspace:
     kind = ""
+    dimension = 2
 
     def __init__(self, name: Optional[str], complement: bool):
         self.name = name
@@ -139,16 +150,151 @@ class Polygon(_Halfspace):
         self._fields = {"vertices": [_point(v, f"vertices[{k}]", exact_from_float) for k, v in enumerate(vertices)]}
 
 
+def _segments(value: Any, where: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{where}: a number of segments is an int, got {type(value).__name__}")
+    return int(value)
+
+
+def _tessellation(segments, edge_length, exact_from_float: bool, minor_segments=None) -> Optional[dict]:
+    """hsx-scene/1's "tessellation" from the builders' keywords (None: none given, hsx's default 32 segments). The
+    reader checks the combination (one of segments and edge_length; minor_segments with segments, tori only)."""
+    t = {}
+    if segments is not None:
+        t["segments"] = _segments(segments, "tessellation.segments")
+    if minor_segments is not None:
+        t["minor_segments"] = _segments(minor_segments, "tessellation.minor_segments")
+    if edge_length is not None:
+        t["edge_length"] = exact(edge_length, "tessellation.edge_length", exact_from_float)
+    return t or None
+
+
+class _Halfspace3(_Halfspace):
+    dimension = 3
+
+    def _set(self, fields: dict, tessellation: Optional[dict] = None) -> None:
+        self._fields = fields
+        if tessellation is not None:
+            self._fields["tessellation"] = tessellation
+
+
+class Plane(_Halfspace3):
+    """{ x : normal . x <= offset } in 3D (``normal`` outward, non-zero, need not be unit); clipped to the domain."""
+    kind = "plane"
+
+    def __init__(self, normal, offset, name: Optional[str] = None, complement: bool = False, *,
+                 exact_from_float: bool = False):
+        super().__init__(name, complement)
+        self._set({"normal": _point3(normal, "normal", exact_from_float),
+                   "offset": exact(offset, "offset", exact_from_float)})
+
+
+class Box(_Halfspace3):
+    """The closed axis-aligned box between opposite corners ``min_corner`` < ``max_corner`` (every coordinate);
+    hsx-scene/1's "min" and "max"."""
+    kind = "box"
+
+    def __init__(self, min_corner, max_corner, name: Optional[str] = None, complement: bool = False, *,
+                 exact_from_float: bool = False):
+        super().__init__(name, complement)
+        self._set({"min": _point3(min_corner, "min", exact_from_float),
+                   "max": _point3(max_corner, "max", exact_from_float)})
+
+
+class Sphere(_Halfspace3):
+    """The ball |x - center| <= radius (radius > 0), tessellated: ``segments`` per full turn of every circle, or
+    circles cut into chords of about ``edge_length`` (give at most one; neither: 32 segments). hsx arranges the
+    tessellation (docs/scene-format.md says exactly which triangles), never the curved surface."""
+    kind = "sphere"
+
+    def __init__(self, center, radius, name: Optional[str] = None, complement: bool = False, *,
+                 segments: Optional[int] = None, edge_length=None, exact_from_float: bool = False):
+        super().__init__(name, complement)
+        self._set({"center": _point3(center, "center", exact_from_float),
+                   "radius": exact(radius, "radius", exact_from_float)},
+                  _tessellation(segments, edge_length, exact_from_float))
+
+
+class Cylinder(_Halfspace3):
+    """The capped cylinder of ``radius`` about the axis from ``axis_point1`` to ``axis_point2`` (distinct); with
+    ``infinite=True`` unbounded along the axis and clipped by the domain box (the scene then needs a domain).
+    ``segments`` / ``edge_length`` as for Sphere."""
+    kind = "cylinder"
+
+    def __init__(self, axis_point1, axis_point2, radius, name: Optional[str] = None, complement: bool = False, *,
+                 infinite: bool = False, segments: Optional[int] = None, edge_length=None,
+                 exact_from_float: bool = False):
+        super().__init__(name, complement)
+        fields = {"axis_point1": _point3(axis_point1, "axis_point1", exact_from_float),
+                  "axis_point2": _point3(axis_point2, "axis_point2", exact_from_float),
+                  "radius": exact(radius, "radius", exact_from_float)}
+        if not isinstance(infinite, bool):
+            raise TypeError(f"infinite: a bool, got {type(infinite).__name__}")
+        if infinite:
+            fields["infinite"] = True
+        self._set(fields, _tessellation(segments, edge_length, exact_from_float))
+
+
+class Cone(_Halfspace3):
+    """The solid cone from ``apex`` to its flat base disk of ``radius`` about ``base_center`` (distinct from the
+    apex). ``segments`` / ``edge_length`` as for Sphere."""
+    kind = "cone"
+
+    def __init__(self, apex, base_center, radius, name: Optional[str] = None, complement: bool = False, *,
+                 segments: Optional[int] = None, edge_length=None, exact_from_float: bool = False):
+        super().__init__(name, complement)
+        self._set({"apex": _point3(apex, "apex", exact_from_float),
+                   "base_center": _point3(base_center, "base_center", exact_from_float),
+                   "radius": exact(radius, "radius", exact_from_float)},
+                  _tessellation(segments, edge_length, exact_from_float))
+
+
+class Torus(_Halfspace3):
+    """The solid ring torus about ``center`` with ``axis`` (non-zero direction), 0 < ``minor_radius`` <
+    ``major_radius``. ``segments`` per turn about the axis, ``minor_segments`` around the tube (default:
+    ``segments``), or ``edge_length`` instead of both."""
+    kind = "torus"
+
+    def __init__(self, center, axis, major_radius, minor_radius, name: Optional[str] = None,
+                 complement: bool = False, *, segments: Optional[int] = None, minor_segments: Optional[int] = None,
+                 edge_length=None, exact_from_float: bool = False):
+        super().__init__(name, complement)
+        self._set({"center": _point3(center, "center", exact_from_float),
+                   "axis": _point3(axis, "axis", exact_from_float),
+                   "major_radius": exact(major_radius, "major_radius", exact_from_float),
+                   "minor_radius": exact(minor_radius, "minor_radius", exact_from_float)},
+                  _tessellation(segments, edge_length, exact_from_float, minor_segments))
+
+
+class Mesh(_Halfspace3):
+    """The solid bounded by a closed triangle mesh file (.obj, .off or .ply; exact rational or decimal
+    coordinates). ``file`` is kept as given: hsx resolves a relative path against the directory of the scene's file
+    (Scene.from_file), and for a scene built in Python against the current directory; give an absolute path to be
+    independent of it."""
+    kind = "mesh"
+
+    def __init__(self, file, name: Optional[str] = None, complement: bool = False):
+        super().__init__(name, complement)
+        if not isinstance(file, (str, os.PathLike)):
+            raise TypeError(f"file: a path, got {type(file).__name__}")
+        self._set({"file": os.fspath(file)})
+
+
 class Sample:
     """A sample on the boundary of halfspace ``on`` (a name or a halfspace object with a name): exactly ``at`` a
-    boundary point, or ``near`` a point (snapped exactly to the nearest boundary point)."""
+    boundary point, or ``near`` a point (snapped exactly to the nearest boundary point; 3D: of the tessellated
+    surface). Points have 2 coordinates in a Scene, 3 in a Scene3."""
 
     def __init__(self, on, at=None, near=None, *, exact_from_float: bool = False):
         if (at is None) == (near is None):
             raise TypeError("Sample: give exactly one of at= and near=")
         self.on = on
         self.key = "at" if at is not None else "near"
-        self.point = _point(at if at is not None else near, self.key, exact_from_float)
+        self.point = _point(at if at is not None else near, self.key, exact_from_float, (2, 3))
+
+    @property
+    def dimension(self) -> int:
+        return len(self.point)
 
     def to_dict(self) -> dict:
         name = self.on.name if isinstance(self.on, _Halfspace) else self.on
@@ -160,22 +306,38 @@ class Sample:
         return f"hsx.Sample({self.to_dict()!r})"
 
 
+def _dimension_of(document) -> Optional[int]:
+    """A document's dimension: its "dimension" field, 3 for a BSH authors' config.json (an "input" and no
+    "format", io/bsh_config.hpp), None when it has neither (hsx reports what is wrong when it is arranged)."""
+    if not isinstance(document, dict):
+        return None
+    if "format" not in document and "input" in document:
+        return 3
+    d = document.get("dimension")
+    return d if isinstance(d, int) and not isinstance(d, bool) else None
+
+
 class Scene:
-    """A 2D scene (hsx-scene/1). Build it from halfspaces and samples, or with from_dict / from_json / from_file.
+    """A 2D scene (hsx-scene/1); Scene3 is the 3D one. Build it from halfspaces and samples, or with from_dict /
+    from_json / from_file (on Scene, these give a Scene3 for a document of dimension 3).
 
     ``halfspaces``: HalfPlane, Disk, Polygon objects (unnamed ones are called H0, H1, ... by position);
-    ``samples``: Sample objects; ``domain``: ((xmin, ymin), (xmax, ymax)) or None (then hsx chooses one).
+    ``samples``: Sample objects; ``domain``: ((xmin, ymin), (xmax, ymax)) or None (then hsx chooses one);
+    ``description``: the document's description.
     """
+    dimension = 2
+    _kinds = "a HalfPlane, Disk or Polygon"
 
     def __init__(self, halfspaces: Sequence[_Halfspace] = (), samples: Sequence[Sample] = (), domain=None,
                  description: Optional[str] = None, *, exact_from_float: bool = False):
-        self._doc: dict = {"format": "hsx-scene/1", "dimension": 2}
+        self._doc: dict = {"format": "hsx-scene/1", "dimension": self.dimension}
         if description is not None:
             self._doc["description"] = description
         if domain is not None:
             lo, hi = domain
-            self._doc["domain"] = {"min": _point(lo, "domain.min", exact_from_float),
-                                   "max": _point(hi, "domain.max", exact_from_float)}
+            dims = (self.dimension,)
+            self._doc["domain"] = {"min": _point(lo, "domain.min", exact_from_float, dims),
+                                   "max": _point(hi, "domain.max", exact_from_float, dims)}
         self._doc["halfspaces"] = []
         self._doc["samples"] = []
         for h in halfspaces:
@@ -187,15 +349,20 @@ class Scene:
     # -- building --
     def add(self, halfspace: _Halfspace) -> str:
         """Adds a halfspace; returns its name."""
-        if not isinstance(halfspace, _Halfspace):
-            raise TypeError("Scene.add: a HalfPlane, Disk or Polygon")
+        if not isinstance(halfspace, _Halfspace) or halfspace.dimension != self.dimension:
+            got = (f"a {halfspace.dimension}D {type(halfspace).__name__}" if isinstance(halfspace, _Halfspace)
+                   else type(halfspace).__name__)
+            raise TypeError(f"{type(self).__name__}.add: {self._kinds}, got {got}")
         entry = halfspace.to_dict(f"H{len(self._doc['halfspaces'])}")
         self._doc["halfspaces"].append(entry)
         return entry["name"]
 
     def add_sample(self, sample: Sample) -> None:
         if not isinstance(sample, Sample):
-            raise TypeError("Scene.add_sample: a Sample")
+            raise TypeError(f"{type(self).__name__}.add_sample: a Sample")
+        if sample.dimension != self.dimension:
+            raise TypeError(f"{type(self).__name__}.add_sample: the sample's point has {sample.dimension} "
+                            f"coordinates; a {self.dimension}D scene needs {self.dimension}")
         self._doc["samples"].append(sample.to_dict())
 
     def sample(self, on, at=None, near=None, *, exact_from_float: bool = False) -> None:
@@ -204,19 +371,36 @@ class Scene:
 
     # -- reading --
     @classmethod
+    def _class_for(cls, dimension: Optional[int]):
+        """The class a document of ``dimension`` gets: Scene dispatches (3 -> Scene3); Scene3 refuses 2D."""
+        if cls is Scene:
+            return Scene3 if dimension == 3 else Scene
+        if dimension is not None and dimension != cls.dimension:
+            from ._hsx import InputError
+            raise InputError(f"dimension: expected {cls.dimension}, got {dimension} (use hsx.Scene)")
+        return cls
+
+    @classmethod
     def from_dict(cls, document: dict, *, exact_from_float: bool = False) -> "Scene":
         """A scene from an hsx-scene/1 document as a dict (numbers made exact; fields checked when arranged)."""
         if not isinstance(document, dict):
-            raise TypeError("Scene.from_dict: a dict")
-        scene = cls.__new__(cls)
+            raise TypeError(f"{cls.__name__}.from_dict: a dict")
+        target = cls._class_for(_dimension_of(document))
+        scene = target.__new__(target)
         scene._doc = _normalise(document, "", exact_from_float)
         scene.source = "<dict>"
         return scene
 
     @classmethod
     def from_json(cls, text: str, source: str = "<json>") -> "Scene":
-        """A scene from JSON text; its numbers are read exactly by hsx (0.1 is 1/10), never as floats."""
-        scene = cls.__new__(cls)
+        """A scene from JSON text; its numbers are read exactly by hsx (0.1 is 1/10), never as floats. ``source``
+        names it in messages; a mesh file is found relative to its directory."""
+        try:  # only to see the dimension: the text itself is what hsx reads
+            dimension = _dimension_of(json.loads(text, parse_float=str))
+        except ValueError:
+            dimension = None  # not JSON: hsx reports it when the scene is arranged
+        target = cls._class_for(dimension)
+        scene = target.__new__(target)
         scene._doc = None
         scene._text = text
         scene.source = source
@@ -224,6 +408,7 @@ class Scene:
 
     @classmethod
     def from_file(cls, path) -> "Scene":
+        """A scene from a file (read as from_json; relative mesh paths are the file's directory's)."""
         with open(os.fspath(path), encoding="utf-8") as f:
             return cls.from_json(f.read(), source=os.fspath(path))
 
@@ -254,7 +439,17 @@ class Scene:
             return None
 
     def __repr__(self):
+        name = type(self).__name__
         if self._doc is None:
-            return f"<hsx.Scene from {self.source}>"
-        return (f"<hsx.Scene: {len(self._doc.get('halfspaces', []))} halfspaces, "
+            return f"<hsx.{name} from {self.source}>"
+        return (f"<hsx.{name}: {len(self._doc.get('halfspaces', []))} halfspaces, "
                 f"{len(self._doc.get('samples', []))} samples>")
+
+
+class Scene3(Scene):
+    """A 3D scene (hsx-scene/1, dimension 3), built like Scene: ``halfspaces``: Plane, Box, Sphere, Cylinder,
+    Cone, Torus, Mesh objects; ``samples``: Sample objects with 3 coordinates; ``domain``: ((xmin, ymin, zmin),
+    (xmax, ymax, zmax)) or None (hsx chooses one; an infinite cylinder needs one). hsx.arrange, extract, check and
+    grade take it as they take a Scene."""
+    dimension = 3
+    _kinds = "a Plane, Box, Sphere, Cylinder, Cone, Torus or Mesh"

@@ -8,11 +8,9 @@
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/scene_json.hpp>
 #include <hsx/io/svg.hpp>
-#include <hsx/io/mesh_export.hpp>
 
 #include <pybind11/numpy.h>
 
-#include <map>
 
 namespace hsxpy {
 namespace {
@@ -106,50 +104,11 @@ std::vector<int> boundary_patches(const ResultHandle& h) {
   return hsx::patches_of_supports(c, on);
 }
 
-// The shape's boundary (io/mesh_export.hpp's shape_faces: outward, closed), vertices renumbered from 0 in ascending
-// arrangement order: (vertices (n,3) float64, or an (n,3) list of exact strings with `exact`; faces (m,3) int64;
-// patch (m,) int64; halfspace (m,) int64).
+// The shape's boundary (io/mesh_export.hpp's shape_faces: outward, closed) as face_arrays gives it.
 py::tuple boundary_mesh(const ResultHandle& h, bool exact) {
   const hsx::LoadedInput& in = *h.input;
   if (!in.arranged3) throw hsx::InputError("boundary_mesh: needs a result of a 3D scene");
-  const std::vector<hsx::ExportedFace> faces = hsx::shape_faces(*in.arranged3, h.r().labelling);
-  std::map<int, int> index;
-  for (const auto& f : faces)
-    for (int v : f.vertices) index.emplace(v, 0);
-  int next = 0;
-  for (auto& [v, k] : index) k = next++;
-  const auto& points = in.arranged3->arrangement.vertices();
-  const auto n = static_cast<py::ssize_t>(index.size()), m = static_cast<py::ssize_t>(faces.size());
-  py::object vertices;
-  if (exact) {
-    py::list rows;
-    for (const auto& [v, k] : index) {
-      const hsx::PointQ3& p = points[v];
-      rows.append(py::make_tuple(p.x.get_str(), p.y.get_str(), p.z.get_str()));
-    }
-    vertices = rows;
-  } else {
-    py::array_t<double> a({n, py::ssize_t{3}});
-    auto w = a.mutable_unchecked<2>();
-    for (const auto& [v, k] : index) {
-      const hsx::PointQ3& p = points[v];
-      w(k, 0) = p.x.get_d();
-      w(k, 1) = p.y.get_d();
-      w(k, 2) = p.z.get_d();
-    }
-    vertices = a;
-  }
-  py::array_t<std::int64_t> tri({m, py::ssize_t{3}}), patch(m), halfspace(m);
-  auto t = tri.mutable_unchecked<2>();
-  auto pa = patch.mutable_unchecked<1>();
-  auto ha = halfspace.mutable_unchecked<1>();
-  for (py::ssize_t i = 0; i < m; ++i) {
-    const auto& f = faces[static_cast<std::size_t>(i)];
-    for (int j = 0; j < 3; ++j) t(i, j) = index.at(f.vertices[static_cast<std::size_t>(j)]);
-    pa(i) = f.patch;
-    ha(i) = f.halfspace;
-  }
-  return py::make_tuple(vertices, tri, patch, halfspace);
+  return face_arrays(*in.arranged3, hsx::shape_faces(*in.arranged3, h.r().labelling), exact);
 }
 
 std::vector<std::vector<int>> step_patches(const ResultHandle& h) {
@@ -190,7 +149,25 @@ py::dict stats_dict(const bsh::SearchStats& s) {
   return d;
 }
 
-py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int width, const std::string& title) {
+py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int width, const std::string& title,
+                      py::object views) {
+  refuse_views_in_2d(h.input, views);
+  std::vector<char> highlight;
+  if (show_removed) {
+    highlight.assign(h.input->complex().patches.size(), 0);
+    for (int p : hsx::patches_of_supports(h.input->complex(), h.r().removed)) highlight[p] = 1;
+  }
+  if (h.input->scene3) {  // as `hsx extract --svg` on a 3D scene: the shape's boundary in four views
+    hsx::Svg3Options o;
+    o.width = width;
+    o.title = title;
+    o.cell_fill = h.r().labelling;
+    o.show_cell_ids = o.show_patch_ids = labels;
+    o.highlight_patches = highlight;
+    o.highlight_legend = "removed patches";
+    o.views = svg3_views(views);
+    return svg3_picture(h.input, o);
+  }
   hsx::SvgOptions o;
   o.width = width;
   o.title = title;
@@ -198,8 +175,7 @@ py::object result_svg(const ResultHandle& h, bool show_removed, bool labels, int
   o.show_cell_ids = o.show_patch_ids = labels;
   if (show_removed) {
     o.highlight_legend = "removed patches";
-    o.highlight_patches.assign(h.input->complex().patches.size(), 0);
-    for (int p : hsx::patches_of_supports(h.input->complex(), h.r().removed)) o.highlight_patches[p] = 1;
+    o.highlight_patches = highlight;
   }
   return svg_picture(h.input, o);
 }
@@ -248,14 +224,19 @@ void bind_result(py::module_& m) {
       .def_property_readonly("energy", [](const ResultHandle& h) { return h.r().energy; })
       .def_property_readonly("area", [](const ResultHandle& h) {
         return bsh::inside_measure(h.input->complex(), h.r().labelling);
-      })
+      }, "The measure of the inside: its area (2D) or its volume (3D)")
+      .def_property_readonly("volume", [](const ResultHandle& h) {
+        if (h.input->complex().dimension != 3) throw hsx::InputError("volume: a 2D result has an area (Result.area)");
+        return bsh::inside_measure(h.input->complex(), h.r().labelling);
+      }, "3D: the inside's exact volume (`hsx extract --json`'s volume); raises InputError for a 2D result")
       .def_property_readonly("sample_connected", [](const ResultHandle& h) { return h.r().sample_connected; })
       .def_property_readonly("boundary_patches", &boundary_patches, "Patches on the shape's boundary, ascending")
       .def("boundary_mesh", &boundary_mesh, py::arg("exact") = false,
-           "3D: the shape's boundary as a closed, outward triangle mesh (io/mesh_export.hpp's shape_faces): "
-           "(vertices, faces, patch, halfspace); vertices a float64 (n, 3) array, or with exact=True a list of "
-           "(x, y, z) exact rational strings; faces an int64 (m, 3) array of vertex rows, normal (v1-v0)x(v2-v0) "
-           "outward; patch and halfspace per face. Raises InputError for a 2D result")
+           "3D: the shape's boundary as a closed, outward triangle mesh (io/mesh_export.hpp's shape_faces, what "
+           "`hsx extract --obj/--ply/--off` write): (vertices, faces, patch, halfspace); vertices a float64 (n, 3) "
+           "array, or with exact=True a list of (x, y, z) exact rational strings; faces an int64 (m, 3) array of "
+           "vertex rows, normal (v1-v0)x(v2-v0) outward; patch and halfspace per face (int64 (m,)). Raises "
+           "InputError for a 2D result")
       .def_property_readonly("removed_patches",
                              [](const ResultHandle& h) {
                                return hsx::patches_of_supports(h.input->complex(), h.r().removed);
@@ -278,8 +259,11 @@ void bind_result(py::module_& m) {
            py::arg("include_seconds") = false,
            "The hsx-result/1 document (`hsx extract --json --no-timing` writes the same bytes)")
       .def("svg", &result_svg, py::arg("show_removed") = false, py::arg("labels") = false, py::arg("width") = 800,
-           py::arg("title") = "", "The shape's picture (as `hsx extract --svg`), None without a scene")
-      .def("_repr_svg_", [](const ResultHandle& h) { return result_svg(h, false, false, 800, ""); })
+           py::arg("title") = "", py::arg("views") = py::none(),
+           "The shape's picture (as `hsx extract --svg`; 3D: its boundary in four orthographic views, io/svg3.hpp, "
+           "width at least 200), None without a scene. `show_removed`: the search's removed patches highlighted; "
+           "`views` (3D only): as Complex.svg's")
+      .def("_repr_svg_", [](const ResultHandle& h) { return result_svg(h, false, false, 800, "", py::none()); })
       .def("__repr__", [](const ResultHandle& h) {
         return "<hsx.Result " + std::string(bsh::to_string(h.r().method)) + (h.r().optimal ? " optimal" : "") +
                ": " + std::to_string(h.r().energy.missing_samples) + " missing, measure " +
@@ -399,6 +383,10 @@ void bind_samples(py::module_& m) {
                              "The exhaustive minimum, None when too large to search")
       .def("scene_json",
            [](const SamplesHandle& h, const std::string& description) -> py::object {
+             if (h.input->scene3)  // 3D: at the centroid of each patch's largest triangle (sample_scene.hpp)
+               return py::str(hsx::write_scene3(bsh::scene_with_samples(*h.input->scene3, *h.input->arranged3,
+                                                                        h.r.sample_patches, description))
+                                  .dump(2) + "\n");
              if (!h.input->scene) return py::none();
              return py::str(hsx::write_scene2(bsh::scene_with_samples(*h.input->scene, *h.input->arranged,
                                                                       h.r.sample_patches, description))

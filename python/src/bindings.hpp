@@ -11,7 +11,9 @@
 #pragma once
 
 #include <hsx/hsx.hpp>
+#include <hsx/io/mesh_export.hpp>
 #include <hsx/io/svg.hpp>
+#include <hsx/io/svg3.hpp>
 
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -55,6 +57,23 @@ std::vector<char> flags_from(py::handle sequence, std::size_t size, const std::s
 py::object svg_picture(const InputPtr& input, const hsx::SvgOptions& options);
 /// The method named `name` ("best_first" is read as "best-first"); `what` names the argument in the error.
 hsx::bsh::Method method_named(std::string name, const std::string& what);
+
+// ---- mesh3.cpp ----
+/// `faces` of `arranged` (io/mesh_export.hpp's exported_faces or shape_faces) as (vertices, faces, patch,
+/// halfspace): vertices numbered by mesh_export's renumber_vertices (the used ones, ascending), a float64 (n, 3)
+/// numpy array or, with `exact`, a list of (x, y, z) tuples of exact rational strings ("-7/3"); faces an int64
+/// (m, 3) array of vertex rows in `faces`' order and turning; per face its patch and halfspace (int64 (m,)).
+py::tuple face_arrays(const hsx::Arranged3& arranged, const std::vector<hsx::ExportedFace>& faces, bool exact);
+/// The 3D picture of `input` (io/svg3.hpp's arrangement_svg3) with `options`, as a str; None for an input without
+/// a 3D scene. Throws InputError for a width below 200 (io/svg3.hpp's bound).
+py::object svg3_picture(const InputPtr& input, hsx::Svg3Options options);
+/// Svg3Options::views from Python: None (empty: the default four), or a non-empty sequence of default view names
+/// ("front", "side", "top", "isometric") and (name, direction, up) tuples of exact coordinates (io/svg3.hpp's
+/// SvgView3). Throws InputError for an unknown name, a zero direction or an up parallel to it, py::type_error for
+/// a malformed entry or a float coordinate.
+std::vector<hsx::SvgView3> svg3_views(py::handle views);
+/// Throws InputError ("views: only 3D pictures have views") when `views` is given for an input without a 3D scene.
+void refuse_views_in_2d(const InputPtr& input, py::handle views);
 
 // ---- cancel.cpp ----
 /// A stop flag another Python thread sets (hsx.CancelToken().cancel()); read by the search through its cancel hook.

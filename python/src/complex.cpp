@@ -58,7 +58,55 @@ std::string complex_repr(const ComplexHandle& h) {
          " halfspaces, " + std::to_string(c.cells.size()) + " cells (" + std::to_string(c.outer_cell_count()) +
          " outer), " + std::to_string(c.patches.size()) + " patches, " + std::to_string(c.junctions.size()) +
          " junctions, " + std::to_string(c.samples.size()) + " samples" +
-         (h.input->scene ? "" : ", from an hsx-complex/1 document") + ">";
+         (h.input->scene || h.input->scene3 ? "" : ", from an hsx-complex/1 document") + ">";
+}
+
+/// Complex.svg: 2D (io/svg.hpp) or 3D (io/svg3.hpp), with the same options.
+py::object complex_svg(const ComplexHandle& h, bool labels, int width, const std::string& title, py::object fill,
+                       py::object highlight, const std::string& highlight_legend, py::object views) {
+  if (width < 1) throw hsx::InputError("width: must be at least 1");
+  refuse_views_in_2d(h.input, views);
+  std::vector<char> cell_fill, highlighted;
+  if (!fill.is_none()) cell_fill = flags_from(fill, h.complex().cells.size(), "fill");
+  if (!highlight.is_none()) {
+    highlighted.assign(h.complex().patches.size(), 0);
+    for (py::handle p : highlight) {
+      const int k = p.cast<int>();
+      if (k < 0 || k >= static_cast<int>(h.complex().patches.size()))
+        throw hsx::InputError("highlight: no patch " + std::to_string(k));
+      highlighted[static_cast<std::size_t>(k)] = 1;
+    }
+  }
+  if (h.input->scene3) {
+    hsx::Svg3Options o;
+    o.show_cell_ids = o.show_patch_ids = labels;
+    o.width = width;
+    o.title = title;
+    o.cell_fill = std::move(cell_fill);
+    o.highlight_patches = std::move(highlighted);
+    o.highlight_legend = highlight_legend;
+    o.views = svg3_views(views);
+    return svg3_picture(h.input, o);
+  }
+  hsx::SvgOptions o;
+  o.show_cell_ids = o.show_patch_ids = labels;
+  o.width = width;
+  o.title = title;
+  o.cell_fill = std::move(cell_fill);
+  if (!highlight.is_none()) {
+    o.highlight_patches = std::move(highlighted);
+    o.highlight_legend = highlight_legend;
+  }
+  return svg_picture(h.input, o);
+}
+
+py::tuple surface_mesh(const ComplexHandle& h, bool exact) {
+  if (!h.input->arranged3)
+    throw hsx::InputError(h.complex().dimension == 3
+                              ? "surface_mesh: needs a complex arranged from a 3D scene (an hsx-complex/1 document "
+                                "carries no triangles)"
+                              : "surface_mesh: needs a 3D complex (2D: Complex.patch_polylines)");
+  return face_arrays(*h.input->arranged3, hsx::exported_faces(*h.input->arranged3), exact);
 }
 
 void bind_views(py::module_& m) {
@@ -88,7 +136,7 @@ void bind_views(py::module_& m) {
                              },
                              "Names of the halfspaces the cell is inside")
       .def_property_readonly("measure", [](const CellView& v) { return v.complex().cells[v.index].measure; },
-                             "Area (2D)")
+                             "Area (2D) or volume (3D)")
       .def("__repr__", [](const CellView& v) { return "<hsx.Cell " + std::to_string(v.index) + ">"; });
   py::class_<PatchView>(m, "Patch", "A maximal piece of one halfspace's boundary between two cells")
       .def_property_readonly("index", [](const PatchView& v) { return v.index; })
@@ -111,7 +159,7 @@ void bind_views(py::module_& m) {
       .def_property_readonly("samples", [](const PatchView& v) { return v.complex().patches[v.index].samples; },
                              "Indices of the samples on it")
       .def_property_readonly("measure", [](const PatchView& v) { return v.complex().patches[v.index].measure; },
-                             "Length (2D)")
+                             "Length (2D) or area (3D)")
       .def_property_readonly("support", [](const PatchView& v) { return v.complex().patches[v.index].support; },
                              "Its group of coincident patches (Complex.supports)")
       .def_property_readonly("junctions",
@@ -120,7 +168,7 @@ void bind_views(py::module_& m) {
         return "<hsx.Patch " + std::to_string(v.index) + " of " +
                v.complex().halfspace_names[v.complex().patches[v.index].halfspace] + ">";
       });
-  py::class_<JunctionView>(m, "Junction", "Where patches meet (2D: a vertex)")
+  py::class_<JunctionView>(m, "Junction", "Where patches meet (2D: a vertex; 3D: a chain of edges)")
       .def_property_readonly("index", [](const JunctionView& v) { return v.index; })
       .def_property_readonly("patches", [](const JunctionView& v) { return v.complex().junctions[v.index].patches; })
       .def("__repr__", [](const JunctionView& v) { return "<hsx.Junction " + std::to_string(v.index) + ">"; });
@@ -248,45 +296,43 @@ void bind_complex(py::module_& m) {
            "Every structural invariant, checked exactly: the violations (empty: valid)")
       .def_property_readonly("identity", [](const ComplexHandle& h) { return hsx::complex_identity(h.complex()); },
                              "complex_id: the identity results carry (io/result_json.hpp)")
-      .def_property_readonly("has_scene", [](const ComplexHandle& h) { return h.input->scene.has_value(); },
-                             "Arranged from a scene (False: read from an hsx-complex/1 document)")
+      .def_property_readonly("has_scene",
+                             [](const ComplexHandle& h) { return h.input->scene.has_value() || h.input->scene3.has_value(); },
+                             "Arranged from a scene, 2D or 3D (False: read from an hsx-complex/1 document)")
       .def_property_readonly("source", [](const ComplexHandle& h) { return h.input->path; },
                              "The file or name it was read from")
       .def("scene_json",
            [](const ComplexHandle& h) -> py::object {
-             if (!h.input->scene) return py::none();
-             return py::str(hsx::write_scene2(*h.input->scene).dump(2) + "\n");
+             if (h.input->scene) return py::str(hsx::write_scene2(*h.input->scene).dump(2) + "\n");
+             if (h.input->scene3) return py::str(hsx::write_scene3(*h.input->scene3).dump(2) + "\n");
+             return py::none();
            },
-           "The scene as hsx-scene/1 JSON text (exact numbers; the chosen domain included), None without a scene")
+           "The scene as hsx-scene/1 JSON text (exact numbers; 2D: the chosen domain included), None without a "
+           "scene")
       .def("to_json", [](const ComplexHandle& h) { return hsx::complex_json_text(*h.input); },
            "The hsx-complex/1 document, byte for byte what `hsx arrange --json` writes")
-      .def("svg",
-           [](const ComplexHandle& h, bool labels, int width, const std::string& title, py::object fill,
-              py::object highlight, const std::string& highlight_legend) {
-             hsx::SvgOptions o;
-             o.show_cell_ids = o.show_patch_ids = labels;
-             if (width < 1) throw hsx::InputError("width: must be at least 1");
-             o.width = width;
-             o.title = title;
-             if (!fill.is_none()) o.cell_fill = flags_from(fill, h.complex().cells.size(), "fill");
-             if (!highlight.is_none()) {
-               o.highlight_patches.assign(h.complex().patches.size(), 0);
-               for (py::handle p : highlight) {
-                 const int k = p.cast<int>();
-                 if (k < 0 || k >= static_cast<int>(h.complex().patches.size()))
-                   throw hsx::InputError("highlight: no patch " + std::to_string(k));
-                 o.highlight_patches[k] = 1;
-               }
-               o.highlight_legend = highlight_legend;
-             }
-             return svg_picture(h.input, o);
-           },
-           py::arg("labels") = false, py::arg("width") = 800, py::arg("title") = "", py::arg("fill") = py::none(),
-           py::arg("highlight") = py::none(), py::arg("highlight_legend") = "highlighted patches",
-           "The arrangement's picture as SVG text (as `hsx arrange --svg`), None without a scene. `fill`: per cell, "
-           "True inside a shape (drawn as `hsx extract --svg` does, boundary bold, missing samples ringed); "
-           "`highlight`: patch ids drawn highlighted, described in the legend by `highlight_legend`")
-      .def("_repr_svg_", [](const ComplexHandle& h) { return svg_picture(h.input, hsx::SvgOptions{}); })
+      .def("svg", &complex_svg, py::arg("labels") = false, py::arg("width") = 800, py::arg("title") = "",
+           py::arg("fill") = py::none(), py::arg("highlight") = py::none(),
+           py::arg("highlight_legend") = "highlighted patches", py::arg("views") = py::none(),
+           "The arrangement's picture as SVG text (as `hsx arrange --svg`; 3D: four orthographic views of its "
+           "surfaces, io/svg3.hpp, width at least 200), None without a scene. `views` (3D only): the views to "
+           "draw, names among front, side, top, isometric or (name, direction, up) tuples of exact numbers "
+           "(None: all four defaults). `labels`: cell and patch ids; "
+           "`fill`: per cell, True inside a shape (drawn as `hsx extract --svg` does: 2D boundary bold, 3D only "
+           "the shape's boundary; missing samples ringed); `highlight`: patch ids drawn highlighted, described in "
+           "the legend by `highlight_legend`")
+      .def("surface_mesh", &surface_mesh, py::arg("exact") = false,
+           "3D: the arrangement's surfaces (io/mesh_export.hpp's exported_faces, what `hsx arrange --ply/--obj` "
+           "write): every triangle not on the domain box once, with its first halfspace and that halfspace's "
+           "patch (-1: none), turned so that its normal (v1-v0)x(v2-v0) points out of that halfspace; a patch "
+           "coincident with one of a lower halfspace has no faces of its own. (vertices, faces, patch, halfspace): "
+           "vertices a float64 (n, 3) array, or with exact=True a list of (x, y, z) exact rational strings; faces "
+           "an int64 (m, 3) array of vertex rows; patch and halfspace per face (int64 (m,)). Raises InputError "
+           "for a 2D complex or one read from an hsx-complex/1 document")
+      .def("_repr_svg_", [](const ComplexHandle& h) {
+        if (h.input->scene3) return svg3_picture(h.input, hsx::Svg3Options{});
+        return svg_picture(h.input, hsx::SvgOptions{});
+      })
       .def("__repr__", &complex_repr);
 
   m.def("_load_text", &load_text, py::arg("text"), py::arg("source"), py::arg("max_cells"),

@@ -55,22 +55,21 @@ std::string comment_text(const std::string& s) {
   return out;
 }
 
-/// The exported faces' vertices in ascending arrangement order: new id per arrangement vertex (-1: unused), and
-/// the list of used vertices.
-std::vector<int> renumber(const Arrangement3& arr, const std::vector<ExportedFace>& faces, std::vector<int>* used) {
-  std::vector<int> id(arr.vertices().size(), -1);
-  for (const ExportedFace& f : faces)
-    for (int v : f.vertices) id[static_cast<std::size_t>(v)] = 0;
-  int next = 0;
-  for (std::size_t v = 0; v < id.size(); ++v)
-    if (id[v] == 0) {
-      id[v] = next++;
-      used->push_back(static_cast<int>(v));
-    }
-  return id;
-}
-
 }  // namespace
+
+VertexNumbering renumber_vertices(const Arrangement3& arr, const std::vector<ExportedFace>& faces) {
+  VertexNumbering n;
+  n.id.assign(arr.vertices().size(), -1);
+  for (const ExportedFace& f : faces)
+    for (int v : f.vertices) n.id.at(static_cast<std::size_t>(v)) = 0;  // at: a vertex the arrangement lacks throws
+  int next = 0;
+  for (std::size_t v = 0; v < n.id.size(); ++v)
+    if (n.id[v] == 0) {
+      n.id[v] = next++;
+      n.used.push_back(static_cast<int>(v));
+    }
+  return n;
+}
 
 std::vector<ExportedFace> exported_faces(const Arranged3& a) {
   const std::vector<int> patch = patch_of_triangles(a);
@@ -99,8 +98,9 @@ namespace {
 
 std::string ply_text(const Scene3& scene, const Arranged3& a, const std::vector<ExportedFace>& faces,
                      const std::string& what) {
-  std::vector<int> used;
-  const std::vector<int> id = renumber(a.arrangement, faces, &used);
+  const VertexNumbering numbering = renumber_vertices(a.arrangement, faces);
+  const std::vector<int>& id = numbering.id;
+  const std::vector<int>& used = numbering.used;
   std::string s = "ply\nformat ascii 1.0\ncomment hsx " + what + "\n";
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i)
     s += "comment halfspace " + std::to_string(i) + " " + comment_text(scene.halfspaces[i].name) + "\n";
@@ -126,8 +126,9 @@ ObjText obj_text(const Scene3& scene, const Arranged3& a, std::vector<ExportedFa
                  const std::string& mtl_name, const MeshExportOptions& options, const std::string& what) {
   if (mtl_name.empty() || mtl_name.find_first_of("\r\n") != std::string::npos)
     throw std::invalid_argument("OBJ export: bad material library name");
-  std::vector<int> used;
-  const std::vector<int> id = renumber(a.arrangement, faces, &used);
+  const VertexNumbering numbering = renumber_vertices(a.arrangement, faces);
+  const std::vector<int>& id = numbering.id;
+  const std::vector<int>& used = numbering.used;
   std::stable_sort(faces.begin(), faces.end(),
                    [](const ExportedFace& x, const ExportedFace& y) { return x.patch < y.patch; });
   ObjText out;
@@ -242,8 +243,9 @@ std::string shape_off(const Scene3& scene, const Arranged3& a, const std::vector
                       const MeshExportOptions& options) {
   check_fit(scene, a);
   const std::vector<ExportedFace> faces = shape_faces(a, labelling);
-  std::vector<int> used;
-  const std::vector<int> id = renumber(a.arrangement, faces, &used);
+  const VertexNumbering numbering = renumber_vertices(a.arrangement, faces);
+  const std::vector<int>& id = numbering.id;
+  const std::vector<int>& used = numbering.used;
   std::string s = "OFF\n# hsx " + std::string(kShapeWhat) + "; face colours by halfspace\n";
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i)
     s += "# halfspace " + std::to_string(i) + " " + comment_text(scene.halfspaces[i].name) + "\n";

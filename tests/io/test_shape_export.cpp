@@ -308,6 +308,49 @@ TEST_CASE("shape OFF (exact) reads back: patch ranges, colours, the exact volume
   CHECK(read_off(decimal, "decimal.off").faces == mesh.faces);
 }
 
+TEST_CASE("renumber_vertices: the exports' numbering, used vertices ascending", "[io][mesh_export][shape]") {
+  const Arrangement3& arr = arranged().arrangement;
+  const std::vector<std::vector<ExportedFace>> face_sets = {shape_faces(arranged(), rich_labelling()),
+                                                             exported_faces(arranged())};
+  for (const std::vector<ExportedFace>& faces : face_sets) {
+    const VertexNumbering n = renumber_vertices(arr, faces);
+    REQUIRE(n.id.size() == arr.vertices().size());
+    std::vector<char> touched(arr.vertices().size(), 0);
+    for (const ExportedFace& f : faces)
+      for (int v : f.vertices) touched[static_cast<std::size_t>(v)] = 1;
+    std::vector<int> expected_used;
+    for (std::size_t v = 0; v < touched.size(); ++v)
+      if (touched[v]) expected_used.push_back(static_cast<int>(v));
+    CHECK(n.used == expected_used);
+    for (std::size_t v = 0; v < n.id.size(); ++v) CHECK((n.id[v] >= 0) == (touched[v] != 0));
+    for (std::size_t k = 0; k < n.used.size(); ++k)
+      CHECK(n.id[static_cast<std::size_t>(n.used[k])] == static_cast<int>(k));
+  }
+  // The OFF file's vertices are exactly the used ones, in this order, and its faces use these numbers.
+  const std::vector<char> l = rich_labelling();
+  const std::vector<ExportedFace> faces = shape_faces(arranged(), l);
+  const VertexNumbering n = renumber_vertices(arr, faces);
+  MeshExportOptions exact;
+  exact.exact = true;
+  std::istringstream in(shape_off(scene(), arranged(), l, exact));
+  const ObjMesh mesh = read_off(in, "shape.off");
+  REQUIRE(mesh.vertices.size() == n.used.size());
+  for (std::size_t k = 0; k < n.used.size(); ++k)
+    CHECK(mesh.vertices[k] == arr.vertices()[static_cast<std::size_t>(n.used[k])]);
+  REQUIRE(mesh.faces.size() == faces.size());
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    for (int j = 0; j < 3; ++j)
+      CHECK(mesh.faces[k][static_cast<std::size_t>(j)] ==
+            n.id[static_cast<std::size_t>(faces[k].vertices[static_cast<std::size_t>(j)])]);
+  // No faces: nothing used; a vertex the arrangement does not have: refused.
+  const VertexNumbering none = renumber_vertices(arr, {});
+  CHECK(none.used.empty());
+  CHECK(std::all_of(none.id.begin(), none.id.end(), [](int v) { return v == -1; }));
+  ExportedFace bad;
+  bad.vertices = {0, 1, static_cast<int>(arr.vertices().size())};
+  CHECK_THROWS_AS(renumber_vertices(arr, {bad}), std::out_of_range);
+}
+
 TEST_CASE("shape SVG: the boundary's faces per view, missing samples ringed, removed patches on top", "[io][svg3][shape]") {
   const Arranged3& a = arranged();
   const std::vector<char> l = rich_labelling();

@@ -56,6 +56,17 @@ std::vector<ExportedFace> exported_faces(const Arranged3& arranged);
 /// an outer cell inside (outer cells are always outside, algorithms/bsh/problem.hpp).
 std::vector<ExportedFace> shape_faces(const Arranged3& arranged, const std::vector<char>& labelling);
 
+/// The vertices of some faces, numbered as every export numbers them (the conventions' "Vertices"): from 0, in
+/// ascending arrangement order, unused vertices left out.
+struct VertexNumbering {
+  std::vector<int> id;    ///< per arrangement vertex: its new number, -1 when no face uses it
+  std::vector<int> used;  ///< the used arrangement vertices, ascending: used[id[v]] == v
+};
+
+/// The numbering of `faces`' vertices (from exported_faces or shape_faces). `arrangement`: the arrangement whose
+/// vertex ids the faces carry. Throws std::out_of_range when a face names a vertex the arrangement does not have.
+VertexNumbering renumber_vertices(const Arrangement3& arrangement, const std::vector<ExportedFace>& faces);
+
 struct MeshExportOptions {
   bool exact = false;  ///< OBJ and OFF coordinates as exact rationals instead of decimals
 };

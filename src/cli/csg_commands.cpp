@@ -17,7 +17,9 @@
 #include <hsx/io/scene_json.hpp>
 #include <hsx/io/solid.hpp>
 #include <hsx/io/svg.hpp>
+#include <hsx/io/svg3.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -55,8 +57,34 @@ nlohmann::json mixed_terms_json(const Complex& c, const csg::Describability& d) 
   return out;
 }
 
+/// The picture of a solid: 2D, the arrangement with the solid filled and, with `marks`, the mixed terms' inside
+/// cells in orange and outside cells in red (io/svg.hpp); 3D, the solid's boundary in four views (io/svg3.hpp) and,
+/// with `marks`, every patch bounding a cell of a mixed term highlighted (the witness cells' boundaries).
 std::string svg_of_solid(const LoadedInput& in, const std::vector<char>& cells, const std::string& title,
                          const csg::Describability* marks, bool labels) {
+  if (in.scene3) {
+    Svg3Options o;
+    o.title = title;
+    o.show_cell_ids = o.show_patch_ids = labels;
+    o.cell_fill = cells;
+    if (marks && !marks->mixed.empty()) {
+      const Complex& c = in.complex();
+      std::vector<char> mixed_cell(c.cells.size(), 0);
+      for (const auto& t : marks->mixed) {
+        for (int k : t.inside_cells) mixed_cell[static_cast<std::size_t>(k)] = 1;
+        for (int k : t.outside_cells) mixed_cell[static_cast<std::size_t>(k)] = 1;
+      }
+      o.highlight_patches.assign(c.patches.size(), 0);
+      for (std::size_t p = 0; p < c.patches.size(); ++p)
+        if (mixed_cell[static_cast<std::size_t>(c.patches[p].inside_cell)] ||
+            mixed_cell[static_cast<std::size_t>(c.patches[p].outside_cell)])
+          o.highlight_patches[p] = 1;
+      o.highlight_legend = "the boundaries of the " + std::to_string(std::count(mixed_cell.begin(), mixed_cell.end(), 1)) +
+                           " cells of the " + std::to_string(marks->mixed.size()) +
+                           " mixed terms (witness cells, inside and outside the solid)";
+    }
+    return arrangement_svg3(*in.scene3, *in.arranged3, o);
+  }
   if (!in.scene) throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
   SvgOptions o;
   o.title = title;
@@ -185,8 +213,9 @@ int run_csg(const CsgOptions& o) {
   const std::vector<char>& cells = t.separated ? t.separated->cells : solid.cells;
   const Scene2* scene = t.separated ? &t.separated->scene : (in.scene ? &*in.scene : nullptr);
   nlohmann::json j{{"format", "hsx-csg/1"}, {"describable", r.describable}, {"verified", r.verified}};
-  const Measure area = bsh::inside_measure(complex, cells);
-  j["area"] = measure_to_json(area);
+  const Measure area = bsh::inside_measure(complex, cells);  // the solid's area (2D) or volume (3D)
+  const char* const measure_name = complex.dimension == 3 ? "volume" : "area";
+  j[measure_name] = measure_to_json(area);
   if (t.separated) {
     j["separators"] = separators_json(*in.scene, *t.separated);
     j["separator_candidates_tried"] = t.separated->candidates_tried;
@@ -228,7 +257,7 @@ int run_csg(const CsgOptions& o) {
         std::cout << " (try --separators)";
       std::cout << "\n";
     }
-    std::cout << "area " << area.decimal_string(30);
+    std::cout << measure_name << " " << area.decimal_string(30);
     if (auto e = area.exact_string()) std::cout << " = " << *e;
     std::cout << "\n";
   }
@@ -450,7 +479,8 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON")
         ->check(output_path());
-    cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)")
+    cmd->add_option("--svg", o->svg_path, "draw the solid; 2D: mixed terms' cells in orange (inside) and red (outside); 3D: four views of "
+                    "the solid's boundary, the patches bounding the mixed terms' cells highlighted")
         ->check(output_path());
     cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
     cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "
@@ -465,9 +495,9 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_flag("--separators", o->separators, "when not describable, add separating half-planes (2D) and retry");
     cmd->add_option("--max-separators", o->max_separators, "at most this many separators (default 8)");
-    cmd->add_option("--json", o->json_path, "write tree, verified, stats, area as JSON")
+    cmd->add_option("--json", o->json_path, "write tree, verified, stats, area (2D) or volume (3D) as JSON")
         ->check(output_path());
-    cmd->add_option("--svg", o->svg_path, "draw the solid")
+    cmd->add_option("--svg", o->svg_path, "draw the solid (3D: its boundary in four views)")
         ->check(output_path());
     cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
     cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact); not written "

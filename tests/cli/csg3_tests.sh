@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# hsx describe and hsx csg on 3D scenes (issue 14 section 1): usage: csg3_tests.sh PATH/TO/hsx SOURCE_DIR
+# - csg --json on a 3D solid has "volume" (exact), never "area"; the summary says "volume"; a 2D one keeps "area";
+# - a non-describable 3D solid (data/scenes3d/split_box.json, its left half chosen by scripts/solid-by-witness):
+#   describe exits 3 with the mixed term and its witness cells; describe --svg draws the solid and highlights the
+#   patches bounding the witness cells; csg --svg draws the solid's boundary (shape faces only, no highlight);
+# - pictures are byte-identical from run to run.
+# Prints "N passed, M failed" and exits non-zero when anything failed.
+set -u
+hsx="$(realpath "${1:?usage: csg3_tests.sh HSX SOURCE_DIR}")"
+src="$(realpath "${2:?usage: csg3_tests.sh HSX SOURCE_DIR}")"
+source "$src/tests/cli/common.sh"
+S3="$src/data/scenes3d"
+json() { python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval("(" + sys.argv[2].strip() + ")") else 1)' "$1" "$2"; }
+# check WHAT FILE PYTHON-EXPRESSION (d: the JSON document)
+check() { if json "$2" "$3"; then ok; else bad "$1: $3 false on $2: $(head -c 300 "$2")"; fi; }
+
+# ---- 3: volume, not area ----
+CAD="Cyl & Top & Bottom & Slab & Notch | Ring1 | Ring2"
+if expect 0 "" -- "$hsx" csg "$S3/cad_part.json" --csg "$CAD" --json cad.json; then
+  check "3D csg: volume key, no area" cad.json '"volume" in d and "area" not in d and d["verified"] is True'
+  has out "volume 13.37161106376118529" "3D csg summary"
+  if grep -q "^area" out; then bad "3D csg summary says area"; else ok; fi
+fi
+# The volume is the one hsx extract reports for the same cells (the CSG tree's cells are the solid's).
+if expect 0 "" -- "$hsx" csg "$src/data/figures/fig02-1.json" --csg "A & B" --json f2.json; then
+  check "2D csg: area key" f2.json '"area" in d and "volume" not in d'
+  has out "area " "2D csg summary"
+fi
+
+# ---- 2: pictures of 3D solids, witness cells of mixed terms ----
+SPLIT="$S3/split_box.json"
+expect 0 "" -- "$hsx" arrange "$SPLIT" --json split_complex.json
+expect 0 "" -- "$hsx" extract "$SPLIT" --json split_any.json --no-timing
+expect 0 "" -- python3 "$src/scripts/solid-by-witness" split_complex.json split_any.json \
+  '"B" in inside and "C" not in inside and x < 0' left.json
+check "solid-by-witness: one cell" left.json 'len(d["inside_cells"]) == 1'
+if expect 3 "" -- "$hsx" describe "$SPLIT" --shape left.json --json d.json --svg d.svg; then
+  has out "not describable by the 2 halfspaces (4 canonical intersection terms, 1 mixed)" "describe 3D summary"
+  has out "mixed term B ~C: inside cells" "describe 3D mixed term"
+  check "describe 3D JSON: one mixed term, inside and outside witness cells with 3 coordinates" d.json '
+    d["describable"] is False and len(d["mixed_terms"]) == 1 and
+    len(d["mixed_terms"][0]["witness"]["inside"]["point"]) == 3 and
+    d["mixed_terms"][0]["signs"] == {"B": "in", "C": "out"}'
+  # The two cells of B & ~C have 6 patches between them (each half: 5 of B's faces and 1 of C's), each a quad
+  # of 2 triangles at least: highlights are present, faces are the shape's boundary.
+  has d.svg 'class="highlight"' "describe 3D svg highlights"
+  has d.svg "the boundaries of the 2 cells of the 1 mixed terms" "describe 3D svg legend"
+  has d.svg 'class="face"' "describe 3D svg faces"
+  expect 3 "" -- "$hsx" describe "$SPLIT" --shape left.json --svg d2.svg
+  if cmp -s d.svg d2.svg; then ok; else bad "describe 3D svg not deterministic"; fi
+fi
+if expect 3 "" -- "$hsx" csg "$SPLIT" --shape left.json --svg c.svg --json c.json; then
+  has c.svg 'class="face"' "csg 3D svg faces"
+  if grep -q 'class="highlight"' c.svg; then bad "csg 3D svg has highlights"; else ok; fi
+  check "csg 3D not describable: volume 6, mixed terms" c.json \
+    'd["describable"] is False and d["volume"]["exact"] == "6" and len(d["mixed_terms"]) == 1'
+fi
+# A describable 3D solid's describe picture: no highlight (no mixed term).
+if expect 0 "" -- "$hsx" describe "$S3/cad_part.json" --csg "$CAD" --svg cad.svg; then
+  has cad.svg 'class="face"' "describe 3D describable svg faces"
+  if grep -q 'class="highlight"' cad.svg; then bad "describable solid has highlights"; else ok; fi
+fi
+
+finish

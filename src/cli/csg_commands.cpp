@@ -23,6 +23,7 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -149,8 +150,9 @@ struct CsgOptions {
   SolidSource solid;
   bool separators = false;
   int max_separators = 8;
-  int circle_segments = 96;
+  int circle_segments = kCircleSegmentsNotGiven;  ///< --circle-segments (2D only; 96 when not given)
   bool labels = false;
+  static constexpr int kCircleSegmentsNotGiven = std::numeric_limits<int>::min();
 };
 
 nlohmann::json stats_json(const csg::BhcResult& r) {
@@ -203,7 +205,12 @@ int run_csg(const CsgOptions& o) {
   if (o.max_separators < 0) throw InputError("--max-separators: must be >= 0");
   if (!in.scene && o.separators)
     throw InputError("--separators: needs a scene (separating half-planes are geometry), not a complex");
-  if (!in.scene && !o.openscad_path.empty()) throw InputError("--openscad: needs a scene, not a complex");
+  if (!in.scene && !in.scene3 && !o.openscad_path.empty())
+    throw InputError("--openscad: needs a scene, not a complex");
+  if (o.circle_segments != CsgOptions::kCircleSegmentsNotGiven && (in.scene3 || o.openscad_path.empty()))
+    throw InputError(in.scene3 ? "--circle-segments: 2D only (a 3D OpenSCAD program uses the scene's own "
+                                 "tessellation)"
+                               : "--circle-segments: only with --openscad");
   const Solid solid = load_solid(in, o.solid);
   const csg::SolidTree t = in.scene ? csg::build_tree(*in.scene, *in.arranged, solid.cells,
                                                       csg::SolidTreeOptions{o.separators, o.max_separators})
@@ -232,9 +239,13 @@ int run_csg(const CsgOptions& o) {
   if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - BHC", nullptr, o.labels);
   const bool write_scad = !o.openscad_path.empty() && t.has_verified_tree();
   if (write_scad) {
-    OpenScadOptions so;
-    so.circle_segments = o.circle_segments;
-    scad_text = to_openscad(*r.tree, *scene, so);
+    if (in.scene3) {
+      scad_text = to_openscad(*r.tree, *in.scene3);
+    } else {
+      OpenScadOptions so;
+      if (o.circle_segments != CsgOptions::kCircleSegmentsNotGiven) so.circle_segments = o.circle_segments;
+      scad_text = to_openscad(*r.tree, *scene, so);
+    }
   }
   if (!o.json_path.empty()) out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.svg_path, svg_text);
@@ -500,10 +511,11 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--svg", o->svg_path, "draw the solid (3D: its boundary in four views)")
         ->check(output_path());
     cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
-    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact); not written "
-                                                    "when there is no verified tree")
+    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact; 3D: every "
+                                                    "halfspace as the polyhedron hsx arranges, io/openscad.hpp); not "
+                                                    "written when there is no verified tree")
         ->check(output_path());
-    cmd->add_option("--circle-segments", o->circle_segments, "OpenSCAD $fn for circles (default 96)");
+    cmd->add_option("--circle-segments", o->circle_segments, "2D OpenSCAD $fn for circles (default 96; only with --openscad)");
     cmd->footer("Exit codes: 0 a verified tree was built (after separators, when --separators was given and needed); "
                 "3 the solid is not describable by the halfspaces (separators included), so there is no tree: "
                 "--json and --svg are still written, --openscad is not (a message says so); 2 bad input only "

@@ -4,7 +4,12 @@
 # - a non-describable 3D solid (data/scenes3d/split_box.json, its left half chosen by scripts/solid-by-witness):
 #   describe exits 3 with the mixed term and its witness cells; describe --svg draws the solid and highlights the
 #   patches bounding the witness cells; csg --svg draws the solid's boundary (shape faces only, no highlight);
-# - pictures are byte-identical from run to run.
+# - pictures are byte-identical from run to run;
+# - csg --openscad on a 3D scene: a 3D program, deterministic, one polyhedron per leaf of the tree (planes and
+#   complements as documented in io/openscad.hpp), every polyhedron closed and clockwise from outside (each
+#   directed edge once, its reverse once; negative divergence volume with OpenSCAD's orientation), the planes'
+#   polyhedra of the exact volume of the domain box's part; --circle-segments is refused in 3D and without
+#   --openscad (exit 2); when `openscad` is installed, it renders the program to STL (not required).
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
 hsx="$(realpath "${1:?usage: csg3_tests.sh HSX SOURCE_DIR}")"
@@ -61,5 +66,62 @@ if expect 0 "" -- "$hsx" describe "$S3/cad_part.json" --csg "$CAD" --svg cad.svg
   has cad.svg 'class="face"' "describe 3D describable svg faces"
   if grep -q 'class="highlight"' cad.svg; then bad "describable solid has highlights"; else ok; fi
 fi
+
+# ---- 1: OpenSCAD in 3D ----
+if expect 0 "" -- "$hsx" csg "$S3/cad_part.json" --csg "$CAD" --openscad cad.scad --json cad2.json; then
+  expect 0 "" -- "$hsx" csg "$S3/cad_part.json" --csg "$CAD" --openscad cad2.scad
+  if cmp -s cad.scad cad2.scad; then ok; else bad "3D openscad not deterministic"; fi
+  has cad.scad "// hsx CSG expression as a 3D OpenSCAD program, with hsx's tessellation made explicit." "3D header"
+  has cad.scad "// domain: [-4, -5, -2] to [4, 5, 4]" "3D domain"
+  has cad.scad "  // Top (plane, the domain box clipped to it)" "3D plane leaf"
+  has cad.scad "difference() {  // Notch (box, complement, 8 vertices, 12 triangles, subtracted from the domain box)" \
+    "3D complemented box"
+  has cad.scad "translate([-4, -5, -2]) cube([8, 10, 6]);" "3D domain cube"
+  has cad.scad "  // Ring1 (torus, 128 vertices, 256 triangles)" "3D torus with its tessellation's counts"
+  if python3 - cad.scad cad2.json <<'PY'
+import json, re, sys
+text = open(sys.argv[1]).read()
+tree = json.load(open(sys.argv[2]))
+leaves = tree["stats"]["leaves"]
+polys = re.findall(r"polyhedron\(points = (\[.*?\]), faces = (\[.*?\])\);", text)
+if len(polys) != leaves:
+    sys.exit("%d polyhedra for %d leaves" % (len(polys), leaves))
+volumes = []
+for pts, fcs in polys:
+    p = json.loads(pts); f = json.loads(fcs)
+    edges = {}
+    for face in f:
+        for i in range(len(face)):
+            e = (face[i], face[(i + 1) % len(face)])
+            edges[e] = edges.get(e, 0) + 1
+    if any(n != 1 or edges.get((b, a)) != 1 for (a, b), n in edges.items()):
+        sys.exit("a polyhedron is not closed and consistently oriented")
+    v = 0.0
+    for face in f:
+        a = p[face[0]]
+        for i in range(1, len(face) - 1):
+            b, c = p[face[i]], p[face[i + 1]]
+            v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                  a[2] * (b[0] * c[1] - b[1] * c[0])) / 6
+    if v >= 0:
+        sys.exit("a polyhedron is not clockwise from outside (volume %g)" % v)
+    volumes.append(-v)
+# Top (z <= 2) and Bottom (z >= 0) clip the 8 x 10 x 6 domain box to z in [-2, 2] and [0, 4]: 320 each.
+if sum(1 for v in volumes if abs(v - 320) < 1e-9) != 2:
+    sys.exit("the two planes' polyhedra do not have volume 320: %r" % volumes)
+PY
+  then ok; else bad "3D openscad polyhedra (closed, clockwise, volumes)"; fi
+  if command -v openscad >/dev/null 2>&1; then
+    if timeout 300 openscad -o cad.stl cad.scad >openscad.log 2>&1 && [ -s cad.stl ]; then ok
+    else bad "openscad failed on the 3D program: $(tail -c 300 openscad.log)"; fi
+  else
+    echo "openscad not installed: the 3D program was checked for structure only"
+  fi
+fi
+expect 2 "--circle-segments: 2D only" -- "$hsx" csg "$S3/cad_part.json" --csg "$CAD" --openscad x.scad \
+  --circle-segments 12
+if [ -e x.scad ]; then bad "--circle-segments in 3D wrote the program"; else ok; fi
+expect 2 "--circle-segments: only with --openscad" -- "$hsx" csg "$src/data/figures/fig02-1.json" --csg "A & B" \
+  --circle-segments 12
 
 finish

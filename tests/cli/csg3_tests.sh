@@ -9,7 +9,12 @@
 #   complements as documented in io/openscad.hpp), every polyhedron closed and clockwise from outside (each
 #   directed edge once, its reverse once; negative divergence volume with OpenSCAD's orientation), the planes'
 #   polyhedra of the exact volume of the domain box's part; --circle-segments is refused in 3D and without
-#   --openscad (exit 2); when `openscad` is installed, it renders the program to STL (not required).
+#   --openscad (exit 2); when `openscad` is installed, it renders the program to STL (not required);
+# - csg --separators in 3D: the split box needs one plane; the BHC objects rebuilt (docs/csg3.md): the bracket
+#   (data/scenes3d/bhc_bracket.json) is describable with the tree figures docs/csg3.md reports; the rounded pocket
+#   (bhc_pocket.json, its solid by the rule of docs/csg3.md) has 9 mixed terms, needs 8 edge-vertex planes, then
+#   has a verified tree (27 leaves) and an OpenSCAD program with the separators; --max-separators 3 stops short
+#   (exit 3); --separators on a complex is refused (exit 2).
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
 hsx="$(realpath "${1:?usage: csg3_tests.sh HSX SOURCE_DIR}")"
@@ -123,5 +128,62 @@ expect 2 "--circle-segments: 2D only" -- "$hsx" csg "$S3/cad_part.json" --csg "$
 if [ -e x.scad ]; then bad "--circle-segments in 3D wrote the program"; else ok; fi
 expect 2 "--circle-segments: only with --openscad" -- "$hsx" csg "$src/data/figures/fig02-1.json" --csg "A & B" \
   --circle-segments 12
+
+# ---- 4 and 5: separating planes, the BHC objects ----
+if expect 0 "" -- "$hsx" csg "$SPLIT" --shape left.json --separators --json sep.json; then
+  has out "added 1 separating plane(s)" "split box: one plane"
+  has out "round 1: 1 mixed terms (2 cells)" "split box: the round's line"
+  check "split box --separators JSON" sep.json '
+    d["verified"] is True and len(d["separators"]) == 1 and d["separators"][0]["kind"] == "plane" and
+    d["separator_stop"] == "describable" and len(d["separator_rounds"]) == 1 and
+    sum(t.get("chosen", False) for t in d["separator_rounds"][0]["trials"]) == 1 and
+    d["volume"]["exact"] == "6"'
+fi
+expect 2 "--separators: needs a scene" -- "$hsx" csg split_complex.json --csg "B & ~C" --separators
+
+BRACKET="X0 & Y0 & Y1 & Z0 & ((X1 & Z1 & Ch1) | (U1 & Z2 & Ch2) | (G0 & G1 & Gd) | Boss) & ~H1 & ~H2 & ~H3 & ~(S0 & S1 & Sz)"
+expect 0 "" -- "$hsx" describe "$S3/bhc_bracket.json" --csg "$BRACKET"
+has out "describable by the 20 halfspaces (342 canonical intersection terms, 0 mixed)" "bracket describable"
+if expect 0 "" -- "$hsx" csg "$S3/bhc_bracket.json" --csg "$BRACKET" --json bracket.json; then
+  check "bracket tree (docs/csg3.md)" bracket.json '
+    d["verified"] is True and d["stats"]["leaves"] == 29 and d["stats"]["internal_nodes"] == 21 and
+    d["stats"]["depth"] == 8 and d["stats"]["duplicated_halfspaces"] == 7 and d["stats"]["partitions"] == 2 and
+    d["volume"]["decimal"].startswith("316.0258775148174053")'
+fi
+
+POCKET="$S3/bhc_pocket.json"
+RULE='all(h in inside for h in ("BX0","BX1","BY0","BY1","BZ0","BZ1"))
+  and not (z > 2 and abs(x) < 3 and abs(y) < Fraction(5, 2)
+           and (abs(x) < 2 or abs(y) < Fraction(3, 2) or bool(inside & {"P1","P2","P3","P4"})))
+  and not (abs(x) > 5 and abs(y) > 4 and not (inside & {"O1","O2","O3","O4"}))'
+expect 0 "" -- "$hsx" arrange "$POCKET" --json pocket_complex.json
+expect 0 "" -- "$hsx" extract "$POCKET" --json pocket_any.json --no-timing
+expect 0 "" -- python3 "$src/scripts/solid-by-witness" pocket_complex.json pocket_any.json "$RULE" pocket.json
+has out "37 cells" "pocket solid: 37 cells"
+if expect 3 "" -- "$hsx" describe "$POCKET" --shape pocket.json --json pocket_d.json --svg pocket_d.svg; then
+  has out "not describable by the 19 halfspaces (132 canonical intersection terms, 9 mixed)" "pocket witnesses"
+  check "pocket: 8 single-pair terms and the pocket's 4 slivers against 1 pocket cell" pocket_d.json '
+    sum(len(t["inside_cells"]) == 1 and len(t["outside_cells"]) == 1 for t in d["mixed_terms"]) == 8 and
+    any(len(t["inside_cells"]) == 4 and len(t["outside_cells"]) == 1 for t in d["mixed_terms"])'
+  has pocket_d.svg "the boundaries of the 21 cells of the 9 mixed terms" "pocket witness picture"
+fi
+expect 3 "" -- "$hsx" csg "$POCKET" --shape pocket.json --openscad never.scad
+has out "(try --separators)" "pocket without separators"
+has err "never.scad not written" "pocket without separators: no OpenSCAD"
+if expect 0 "" -- "$hsx" csg "$POCKET" --shape pocket.json --separators --json pocket_t.json --openscad pocket.scad; then
+  has out "added 8 separating plane(s)" "pocket: 8 planes"
+  check "pocket: 8 edge-vertex vertical planes, verified tree of 27 leaves" pocket_t.json '
+    d["verified"] is True and len(d["separators"]) == 8 and len(d["separator_rounds"]) == 8 and
+    all(s["normal"][2] == 0 for s in d["separators"]) and
+    all(t["origin"] == "edge-vertex" for r in d["separator_rounds"] for t in r["trials"] if t.get("chosen")) and
+    [r["mixed_terms"] for r in d["separator_rounds"]] == [9, 7, 5, 3, 1, 1, 1, 1] and
+    d["stats"]["leaves"] == 27 and d["stats"]["duplicated_halfspaces"] == 0 and
+    d["volume"]["decimal"].startswith("418.1229349185668897")'
+  has pocket.scad "  // sep7 (plane, the domain box clipped to it)" "pocket OpenSCAD has the separators"
+fi
+if expect 3 "" -- "$hsx" csg "$POCKET" --shape pocket.json --separators --max-separators 3 --json pocket_3.json; then
+  has out "(stopped at --max-separators 3)" "pocket --max-separators 3"
+  check "pocket --max-separators 3 JSON" pocket_3.json 'd["separator_stop"] == "max-separators" and len(d["separators"]) == 3'
+fi
 
 finish

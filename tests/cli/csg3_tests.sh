@@ -185,5 +185,19 @@ if expect 3 "" -- "$hsx" csg "$POCKET" --shape pocket.json --separators --max-se
   has out "(stopped at --max-separators 3)" "pocket --max-separators 3"
   check "pocket --max-separators 3 JSON" pocket_3.json 'd["separator_stop"] == "max-separators" and len(d["separators"]) == 3'
 fi
+# docs/csg3.md: with 18 segments (not a multiple of 4) the blends fall short of their walls, the slivers merge with
+# their neighbours (132 cells, not 164) and the same rule gives a describable solid; with 12 segments it is as 16.
+for n in 12 18; do
+  sed "s/\"segments\": 16/\"segments\": $n/g" "$POCKET" >pocket$n.json
+  expect 0 "" -- "$hsx" arrange pocket$n.json --json pocket${n}_complex.json
+  expect 0 "" -- "$hsx" extract pocket$n.json --json pocket${n}_any.json --no-timing
+  expect 0 "" -- python3 "$src/scripts/solid-by-witness" pocket${n}_complex.json pocket${n}_any.json "$RULE" pocket${n}_s.json
+done
+check "12 segments: 164 cells" pocket12_complex.json 'len(d["cells"]) == 164'
+check "18 segments: 132 cells" pocket18_complex.json 'len(d["cells"]) == 132'
+expect 3 "" -- "$hsx" describe pocket12.json --shape pocket12_s.json
+has out "(132 canonical intersection terms, 9 mixed)" "12 segments: 9 mixed terms"
+expect 0 "" -- "$hsx" describe pocket18.json --shape pocket18_s.json
+has out "(132 canonical intersection terms, 0 mixed)" "18 segments: describable"
 
 finish

@@ -1,6 +1,8 @@
 // hsx describe / csg / convert / samples / corpus: Halfspace CSG (Shapiro-Vossler, BHC) and the conversion of
 // solids to BSH (BSH paper, Section 6). Options are parsed and results printed here; the algorithms are the
-// library's (algorithms/csg/solid_tree.hpp, separators.hpp, convert.hpp; io/solid.hpp).
+// library's (algorithms/csg/solid_tree.hpp, separators.hpp, separators3.hpp, convert.hpp; io/solid.hpp). describe
+// and csg run on 2D and 3D scenes (3D: volume, io/svg3.hpp pictures, OpenSCAD with the tessellation explicit,
+// separating planes; docs/csg3.md).
 // Exit codes of describe and csg: 0 describable (csg: a verified tree was built, after separators when asked),
 // 3 not describable (no tree), 2 bad input, 1 internal error (e.g. a tree that fails verification).
 #include <hsx/algorithms/bsh/problem.hpp>

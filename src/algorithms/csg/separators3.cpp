@@ -261,6 +261,7 @@ SeparatedSolid3 add_separators(const Scene3& scene, const Arranged3& arranged, c
     std::optional<Best> best;
     const std::string name = "sep" + std::to_string(s.separators);
     for (const Ranked& ranked : order) {
+      if (static_cast<int>(round.trials.size()) >= kMaxPlaneTrials) break;
       const std::size_t k = ranked.k;
       PlaneTrial trial{candidates[k], ranked.p.terms, ranked.p.cells};
       Scene3 next = s.scene;

@@ -17,14 +17,17 @@
 // Each candidate gets a prediction, exact but cheap: per mixed term, each cell is on the plane's negative side, on its
 // positive side (all its boundary vertices on that closed side) or crossed. A term with a crossed cell is predicted
 // unchanged; otherwise its cells split by side, and a side holding only inside or only outside cells frees them (they
-// no longer share a sign vector with a cell of the other kind); the term is resolved when both sides are freed.
+// no longer share a sign vector with a cell of the other kind); the term is resolved when both sides are freed. For
+// a term none of whose cells is crossed the prediction is exact (those cells stay whole and take the plane's side,
+// and no term without mixed cells becomes mixed); a crossed term may in fact gain or lose cells.
 // Candidates predicted to free no cell are not arranged. The others are arranged in order of prediction (most
 // resolved terms first, then most freed cells; ties in candidate order):
 // the scene plus the plane, arranged exactly (complex/from_arrangement3.hpp), the solid carried over (each new cell
 // is inside iff the old cell holding its interior point, Arrangement3::locate, was). The first trial that achieves the
-// best prediction (as many fewer mixed terms and mixed cells) is kept at once; otherwise every predicted candidate is arranged
-// and the best kept (fewest mixed terms, then fewest mixed cells, then the first). When the best reduces neither the
-// mixed terms nor the mixed cells, no candidate separates and the search stops. A candidate whose arrangement is
+// best prediction (as many fewer mixed terms and mixed cells) is kept at once; otherwise every predicted candidate is
+// arranged, at most kMaxPlaneTrials per round (each trial is a whole 3D arrangement), and the best kept (fewest
+// mixed terms, then fewest mixed cells, then the first). When the best reduces neither the mixed terms nor the mixed
+// cells, no candidate separates and the search stops. A candidate whose arrangement is
 // refused (a sample on an edge where boundaries meet, a limit) is recorded as rejected and skipped.
 #pragma once
 
@@ -37,6 +40,9 @@
 #include <vector>
 
 namespace hsx::csg {
+
+/// At most this many candidates are arranged per round (in prediction order); the others are not tried.
+inline constexpr int kMaxPlaneTrials = 64;
 
 enum class PlaneOrigin { FacePlane, EdgeVertex, Bisector };
 const char* to_string(PlaneOrigin origin);  ///< "face-plane", "edge-vertex", "bisector"

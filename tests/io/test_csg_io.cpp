@@ -575,6 +575,24 @@ TEST_CASE("box_cut_by_plane: exact convex pieces, closed, outward, volumes", "[c
   CHECK_THROWS_AS(box_cut_by_plane(box, PointQ3{R(0), R(0), R(0)}, R(0)), std::invalid_argument);
 }
 
+TEST_CASE("box_cut_by_plane: the two sides of any plane make up the box", "[csg][openscad][geometry]") {
+  rc::prop("closed, outward, volumes adding up to the box's", [] {
+    const Box3 box{PointQ3{R(-1), R(0), R(0)}, PointQ3{R(2), R(1), R(3)}};  // volume 9, six_volume 54
+    const auto c = [] { return *rc::gen::inRange(-3, 4); };
+    const PointQ3 n{R(c()), R(c()), R(c())};
+    RC_PRE(!(n.x == 0 && n.y == 0 && n.z == 0));
+    const Rational o = R(*rc::gen::inRange(-12, 13), *rc::gen::inRange(1, 4));
+    const auto below = box_cut_by_plane(box, n, o);
+    const auto above = box_cut_by_plane(box, PointQ3{-n.x, -n.y, -n.z}, Rational(-o));
+    RC_ASSERT(six_volume(below) + six_volume(above) == R(54));
+    RC_ASSERT((below.empty() || closed(below)));
+    RC_ASSERT((above.empty() || closed(above)));
+    RC_ASSERT((below.empty() || six_volume(below) > 0));
+    for (const auto& f : below)
+      for (const PointQ3& p : f) RC_ASSERT(dot3(n, p) <= o);
+  });
+}
+
 TEST_CASE("openscad export 3D: the tessellation explicit, planes clipped, complements subtracted",
           "[csg][openscad]") {
   const Scene3 s = read_scene3_text(R"({"format": "hsx-scene/1", "dimension": 3,

@@ -63,7 +63,7 @@ nlohmann::json mixed_terms_json(const Complex& c, const csg::Describability& d) 
 
 /// The picture of a solid: 2D, the arrangement with the solid filled and, with `marks`, the mixed terms' inside
 /// cells in orange and outside cells in red (io/svg.hpp); 3D, the solid's boundary in four views (io/svg3.hpp) and,
-/// with `marks`, every patch bounding a cell of a mixed term highlighted (the witness cells' boundaries).
+/// with `marks`, the patches bounding the mixed terms' cells drawn over it, orange (inside) and red (outside).
 std::string svg_of_solid(const LoadedInput& in, const std::vector<char>& cells, const std::string& title,
                          const csg::Describability* marks, bool labels) {
   if (in.scene3) {
@@ -72,20 +72,13 @@ std::string svg_of_solid(const LoadedInput& in, const std::vector<char>& cells, 
     o.show_cell_ids = o.show_patch_ids = labels;
     o.cell_fill = cells;
     if (marks && !marks->mixed.empty()) {
-      const Complex& c = in.complex();
-      std::vector<char> mixed_cell(c.cells.size(), 0);
+      o.cell_marks.assign(cells.size(), 0);
       for (const auto& t : marks->mixed) {
-        for (int k : t.inside_cells) mixed_cell[static_cast<std::size_t>(k)] = 1;
-        for (int k : t.outside_cells) mixed_cell[static_cast<std::size_t>(k)] = 1;
+        for (int k : t.inside_cells) o.cell_marks[static_cast<std::size_t>(k)] = 1;
+        for (int k : t.outside_cells) o.cell_marks[static_cast<std::size_t>(k)] = 2;
       }
-      o.highlight_patches.assign(c.patches.size(), 0);
-      for (std::size_t p = 0; p < c.patches.size(); ++p)
-        if (mixed_cell[static_cast<std::size_t>(c.patches[p].inside_cell)] ||
-            mixed_cell[static_cast<std::size_t>(c.patches[p].outside_cell)])
-          o.highlight_patches[p] = 1;
-      o.highlight_legend = "the boundaries of the " + std::to_string(std::count(mixed_cell.begin(), mixed_cell.end(), 1)) +
-                           " cells of the " + std::to_string(marks->mixed.size()) +
-                           " mixed terms (witness cells, inside and outside the solid)";
+      o.mark_legend[0] = "inside cells of the " + std::to_string(marks->mixed.size()) + " mixed terms (in the solid)";
+      o.mark_legend[1] = "outside cells of the mixed terms (not in the solid, same sign vectors)";
     }
     return arrangement_svg3(*in.scene3, *in.arranged3, o);
   }
@@ -578,8 +571,8 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON")
         ->check(output_path());
-    cmd->add_option("--svg", o->svg_path, "draw the solid; 2D: mixed terms' cells in orange (inside) and red (outside); 3D: four views of "
-                    "the solid's boundary, the patches bounding the mixed terms' cells highlighted")
+    cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside); 3D: four views of the "
+                    "solid's boundary, with the patches bounding those cells")
         ->check(output_path());
     cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
     cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "

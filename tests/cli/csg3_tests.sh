@@ -2,8 +2,8 @@
 # hsx describe and hsx csg on 3D scenes (issue 14 section 1): usage: csg3_tests.sh PATH/TO/hsx SOURCE_DIR
 # - csg --json on a 3D solid has "volume" (exact), never "area"; the summary says "volume"; a 2D one keeps "area";
 # - a non-describable 3D solid (data/scenes3d/split_box.json, its left half chosen by scripts/solid-by-witness):
-#   describe exits 3 with the mixed term and its witness cells; describe --svg draws the solid and highlights the
-#   patches bounding the witness cells; csg --svg draws the solid's boundary (shape faces only, no highlight);
+#   describe exits 3 with the mixed term and its witness cells; describe --svg draws the solid and, over it, the
+#   patches bounding the witness cells (orange inside, red outside); csg --svg draws the solid's boundary only;
 # - pictures are byte-identical from run to run;
 # - csg --openscad on a 3D scene: a 3D program, deterministic, one polyhedron per leaf of the tree (planes and
 #   complements as documented in io/openscad.hpp), every polyhedron closed and clockwise from outside (each
@@ -53,23 +53,24 @@ if expect 3 "" -- "$hsx" describe "$SPLIT" --shape left.json --json d.json --svg
     len(d["mixed_terms"][0]["witness"]["inside"]["point"]) == 3 and
     d["mixed_terms"][0]["signs"] == {"B": "in", "C": "out"}'
   # The two cells of B & ~C have 6 patches between them (each half: 5 of B's faces and 1 of C's), each a quad
-  # of 2 triangles at least: highlights are present, faces are the shape's boundary.
-  has d.svg 'class="highlight"' "describe 3D svg highlights"
-  has d.svg "the boundaries of the 2 cells of the 1 mixed terms" "describe 3D svg legend"
+  # of 2 triangles at least: both kinds of marks are present, faces are the shape's boundary.
+  has d.svg 'class="mark-inside"' "describe 3D svg: inside witness cell"
+  has d.svg 'class="mark-outside"' "describe 3D svg: outside witness cell"
+  has d.svg "inside cells of the 1 mixed terms (in the solid) (1 cells;" "describe 3D svg legend"
   has d.svg 'class="face"' "describe 3D svg faces"
   expect 3 "" -- "$hsx" describe "$SPLIT" --shape left.json --svg d2.svg
   if cmp -s d.svg d2.svg; then ok; else bad "describe 3D svg not deterministic"; fi
 fi
 if expect 3 "" -- "$hsx" csg "$SPLIT" --shape left.json --svg c.svg --json c.json; then
   has c.svg 'class="face"' "csg 3D svg faces"
-  if grep -q 'class="highlight"' c.svg; then bad "csg 3D svg has highlights"; else ok; fi
+  if grep -q 'class="mark-' c.svg; then bad "csg 3D svg has marks"; else ok; fi
   check "csg 3D not describable: volume 6, mixed terms" c.json \
     'd["describable"] is False and d["volume"]["exact"] == "6" and len(d["mixed_terms"]) == 1'
 fi
-# A describable 3D solid's describe picture: no highlight (no mixed term).
+# A describable 3D solid's describe picture: no marks (no mixed term).
 if expect 0 "" -- "$hsx" describe "$S3/cad_part.json" --csg "$CAD" --svg cad.svg; then
   has cad.svg 'class="face"' "describe 3D describable svg faces"
-  if grep -q 'class="highlight"' cad.svg; then bad "describable solid has highlights"; else ok; fi
+  if grep -q 'class="mark-' cad.svg; then bad "describable solid has marks"; else ok; fi
 fi
 
 # ---- 1: OpenSCAD in 3D ----
@@ -165,7 +166,9 @@ if expect 3 "" -- "$hsx" describe "$POCKET" --shape pocket.json --json pocket_d.
   check "pocket: 8 single-pair terms and the pocket's 4 slivers against 1 pocket cell" pocket_d.json '
     sum(len(t["inside_cells"]) == 1 and len(t["outside_cells"]) == 1 for t in d["mixed_terms"]) == 8 and
     any(len(t["inside_cells"]) == 4 and len(t["outside_cells"]) == 1 for t in d["mixed_terms"])'
-  has pocket_d.svg "the boundaries of the 21 cells of the 9 mixed terms" "pocket witness picture"
+  has pocket_d.svg "inside cells of the 9 mixed terms (in the solid) (12 cells;" "pocket witness picture: inside"
+  has pocket_d.svg "outside cells of the mixed terms (not in the solid, same sign vectors) (9 cells;" \
+    "pocket witness picture: outside"
 fi
 expect 3 "" -- "$hsx" csg "$POCKET" --shape pocket.json --openscad never.scad
 has out "(try --separators)" "pocket without separators"

@@ -1,12 +1,15 @@
 // hsx describe / csg / convert / samples / corpus: Halfspace CSG (Shapiro-Vossler, BHC) and the conversion of
 // solids to BSH (BSH paper, Section 6). Options are parsed and results printed here; the algorithms are the
-// library's (algorithms/csg/solid_tree.hpp, separators.hpp, convert.hpp; io/solid.hpp).
+// library's (algorithms/csg/solid_tree.hpp, separators.hpp, separators3.hpp, convert.hpp; io/solid.hpp). describe
+// and csg run on 2D and 3D scenes (3D: volume, io/svg3.hpp pictures, OpenSCAD with the tessellation explicit,
+// separating planes; docs/csg3.md).
 // Exit codes of describe and csg: 0 describable (csg: a verified tree was built, after separators when asked),
 // 3 not describable (no tree), 2 bad input, 1 internal error (e.g. a tree that fails verification).
 #include <hsx/algorithms/bsh/problem.hpp>
 #include <hsx/algorithms/bsh/sample_scene.hpp>
 #include <hsx/algorithms/bsh/samples.hpp>
 #include <hsx/algorithms/csg/convert.hpp>
+#include <hsx/algorithms/csg/separators3.hpp>
 #include <hsx/algorithms/csg/solid_tree.hpp>
 #include "cli/commands.hpp"
 #include <hsx/io/csg_text.hpp>
@@ -17,10 +20,13 @@
 #include <hsx/io/scene_json.hpp>
 #include <hsx/io/solid.hpp>
 #include <hsx/io/svg.hpp>
+#include <hsx/io/svg3.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -55,8 +61,27 @@ nlohmann::json mixed_terms_json(const Complex& c, const csg::Describability& d) 
   return out;
 }
 
+/// The picture of a solid: 2D, the arrangement with the solid filled and, with `marks`, the mixed terms' inside
+/// cells in orange and outside cells in red (io/svg.hpp); 3D, the solid's boundary in four views (io/svg3.hpp) and,
+/// with `marks`, the patches bounding the mixed terms' cells drawn over it, orange (inside) and red (outside).
 std::string svg_of_solid(const LoadedInput& in, const std::vector<char>& cells, const std::string& title,
                          const csg::Describability* marks, bool labels) {
+  if (in.scene3) {
+    Svg3Options o;
+    o.title = title;
+    o.show_cell_ids = o.show_patch_ids = labels;
+    o.cell_fill = cells;
+    if (marks && !marks->mixed.empty()) {
+      o.cell_marks.assign(cells.size(), 0);
+      for (const auto& t : marks->mixed) {
+        for (int k : t.inside_cells) o.cell_marks[static_cast<std::size_t>(k)] = 1;
+        for (int k : t.outside_cells) o.cell_marks[static_cast<std::size_t>(k)] = 2;
+      }
+      o.mark_legend[0] = "inside cells of the " + std::to_string(marks->mixed.size()) + " mixed terms (in the solid)";
+      o.mark_legend[1] = "outside cells of the mixed terms (not in the solid, same sign vectors)";
+    }
+    return arrangement_svg3(*in.scene3, *in.arranged3, o);
+  }
   if (!in.scene) throw InputError("--svg: pictures need a scene (an hsx-complex/1 document carries no drawing)");
   SvgOptions o;
   o.title = title;
@@ -121,8 +146,9 @@ struct CsgOptions {
   SolidSource solid;
   bool separators = false;
   int max_separators = 8;
-  int circle_segments = 96;
+  int circle_segments = kCircleSegmentsNotGiven;  ///< --circle-segments (2D only; 96 when not given)
   bool labels = false;
+  static constexpr int kCircleSegmentsNotGiven = std::numeric_limits<int>::min();
 };
 
 nlohmann::json stats_json(const csg::BhcResult& r) {
@@ -151,11 +177,88 @@ nlohmann::json separators_json(const Scene2& input, const csg::SeparatedSolid& s
   return added;
 }
 
+nlohmann::json plane_json(const csg::SeparatorPlane& p) {
+  return {{"normal", {exact_string(p.normal.x), exact_string(p.normal.y), exact_string(p.normal.z)}},
+          {"offset", exact_string(p.offset)},
+          {"origin", csg::to_string(p.origin)}};
+}
+
+/// The planes added (as hsx-scene/1 halfspaces) and every round's trials: which candidates separated, which not.
+void separators3_json(const Scene3& input, const csg::SeparatedSolid3& s, nlohmann::json& j) {
+  nlohmann::json added = nlohmann::json::array();
+  const nlohmann::json halfspaces = write_scene3(s.scene).at("halfspaces");
+  for (std::size_t k = input.halfspaces.size(); k < s.scene.halfspaces.size(); ++k) added.push_back(halfspaces.at(k));
+  nlohmann::json rounds = nlohmann::json::array();
+  for (const csg::PlaneRound& r : s.rounds) {
+    nlohmann::json trials = nlohmann::json::array();
+    for (const csg::PlaneTrial& t : r.trials) {
+      nlohmann::json row = plane_json(t.plane);
+      row["predicted_terms"] = t.predicted_terms;
+      row["predicted_cells"] = t.predicted_cells;
+      row["arranged"] = t.arranged;
+      if (t.arranged) {
+        row["mixed_terms"] = t.mixed_terms;
+        row["mixed_cells"] = t.mixed_cells;
+        row["separated"] = t.separated;
+        row["chosen"] = t.chosen;
+      } else {
+        row["rejection"] = t.rejection;
+      }
+      trials.push_back(row);
+    }
+    rounds.push_back({{"mixed_terms", r.mixed_terms},
+                      {"mixed_cells", r.mixed_cells},
+                      {"candidates", r.candidates},
+                      {"predicted", r.predicted},
+                      {"trials", trials}});
+  }
+  j["separators"] = added;
+  j["separator_rounds"] = rounds;
+  j["separator_stop"] = to_string(s.stop);
+}
+
 /// Why separators did not make the solid describable, for the summary line.
 std::string separators_outcome(const csg::SeparatedSolid& s, int max_separators) {
   if (s.stop == csg::SeparatorStop::MaxSeparators)
     return "stopped at --max-separators " + std::to_string(max_separators);
   return "none of the " + std::to_string(s.candidates_tried) + " candidates tried separated the remaining mixed cells";
+}
+
+std::string separators3_outcome(const csg::SeparatedSolid3& s, int max_separators) {
+  if (s.stop == csg::SeparatorStop::MaxSeparators)
+    return "stopped at --max-separators " + std::to_string(max_separators);
+  const csg::PlaneRound& last = s.rounds.back();
+  return "none of the " + std::to_string(last.trials.size()) + " candidate planes arranged (of " +
+         std::to_string(last.candidates) + ") separated the remaining mixed cells";
+}
+
+std::string plane_text(const csg::SeparatorPlane& p) {
+  return "(" + exact_string(p.normal.x) + ", " + exact_string(p.normal.y) + ", " + exact_string(p.normal.z) +
+         ") . x <= " + exact_string(p.offset) + " [" + csg::to_string(p.origin) + "]";
+}
+
+/// One line per round: the mixed terms before, the candidates, the trials that separated and did not, the chosen.
+void print_plane_rounds(const csg::SeparatedSolid3& s) {
+  for (std::size_t k = 0; k < s.rounds.size(); ++k) {
+    const csg::PlaneRound& r = s.rounds[k];
+    int separated = 0, rejected = 0;
+    const csg::PlaneTrial* chosen = nullptr;
+    for (const auto& t : r.trials) {
+      separated += t.separated ? 1 : 0;
+      rejected += t.arranged ? 0 : 1;
+      if (t.chosen) chosen = &t;
+    }
+    std::cout << "round " << k + 1 << ": " << r.mixed_terms << " mixed terms (" << r.mixed_cells << " cells), "
+              << r.candidates << " candidate planes, " << r.predicted << " predicted to separate, "
+              << r.trials.size() << " arranged: " << separated << " separated, "
+              << r.trials.size() - static_cast<std::size_t>(separated) - static_cast<std::size_t>(rejected)
+              << " did not, " << rejected << " rejected";
+    if (chosen)
+      std::cout << "; added sep" << k << " " << plane_text(chosen->plane) << " -> " << chosen->mixed_terms
+                << " mixed terms";
+    std::cout << "\n";
+  }
+  std::cout << "added " << s.separators << " separating plane(s)\n";
 }
 
 void print_tree_summary(const csg::BhcResult& r, const Complex& complex) {
@@ -173,25 +276,36 @@ int run_csg(const CsgOptions& o) {
   out.expect(o.openscad_path, "--openscad");
   const LoadedInput in = load_input(o.input, o.limits);
   if (o.max_separators < 0) throw InputError("--max-separators: must be >= 0");
-  if (!in.scene && o.separators)
-    throw InputError("--separators: needs a scene (separating half-planes are geometry), not a complex");
-  if (!in.scene && !o.openscad_path.empty()) throw InputError("--openscad: needs a scene, not a complex");
+  if (!in.scene && !in.scene3 && o.separators)
+    throw InputError("--separators: needs a scene (separating half-planes and planes are geometry), not a complex");
+  if (!in.scene && !in.scene3 && !o.openscad_path.empty())
+    throw InputError("--openscad: needs a scene, not a complex");
+  if (o.circle_segments != CsgOptions::kCircleSegmentsNotGiven && (in.scene3 || o.openscad_path.empty()))
+    throw InputError(in.scene3 ? "--circle-segments: 2D only (a 3D OpenSCAD program uses the scene's own "
+                                 "tessellation)"
+                               : "--circle-segments: only with --openscad");
   const Solid solid = load_solid(in, o.solid);
-  const csg::SolidTree t = in.scene ? csg::build_tree(*in.scene, *in.arranged, solid.cells,
-                                                      csg::SolidTreeOptions{o.separators, o.max_separators})
-                                    : csg::build_tree(in.complex(), solid.cells);
+  const csg::SolidTreeOptions tree_options{o.separators, o.max_separators};
+  const csg::SolidTree t = in.scene    ? csg::build_tree(*in.scene, *in.arranged, solid.cells, tree_options)
+                           : in.scene3 ? csg::build_tree(*in.scene3, *in.arranged3, solid.cells, tree_options, o.limits)
+                                       : csg::build_tree(in.complex(), solid.cells);
   const csg::BhcResult& r = t.bhc;
-  const Complex& complex = t.separated ? t.separated->arranged.complex : in.complex();
-  const std::vector<char>& cells = t.separated ? t.separated->cells : solid.cells;
+  const Complex& complex = t.separated    ? t.separated->arranged.complex
+                           : t.separated3 ? t.separated3->arranged.complex
+                                          : in.complex();
+  const std::vector<char>& cells = t.separated ? t.separated->cells : t.separated3 ? t.separated3->cells : solid.cells;
   const Scene2* scene = t.separated ? &t.separated->scene : (in.scene ? &*in.scene : nullptr);
+  const Scene3* scene3 = t.separated3 ? &t.separated3->scene : (in.scene3 ? &*in.scene3 : nullptr);
   nlohmann::json j{{"format", "hsx-csg/1"}, {"describable", r.describable}, {"verified", r.verified}};
-  const Measure area = bsh::inside_measure(complex, cells);
-  j["area"] = measure_to_json(area);
+  const Measure area = bsh::inside_measure(complex, cells);  // the solid's area (2D) or volume (3D)
+  const char* const measure_name = complex.dimension == 3 ? "volume" : "area";
+  j[measure_name] = measure_to_json(area);
   if (t.separated) {
     j["separators"] = separators_json(*in.scene, *t.separated);
     j["separator_candidates_tried"] = t.separated->candidates_tried;
     j["separator_stop"] = to_string(t.separated->stop);
   }
+  if (t.separated3) separators3_json(*in.scene3, *t.separated3, j);
   if (r.describable) {
     j["tree"] = csg_to_json(*r.tree, complex.halfspace_names);
     j["text"] = csg::to_text(*r.tree, complex.halfspace_names);
@@ -203,9 +317,13 @@ int run_csg(const CsgOptions& o) {
   if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - BHC", nullptr, o.labels);
   const bool write_scad = !o.openscad_path.empty() && t.has_verified_tree();
   if (write_scad) {
-    OpenScadOptions so;
-    so.circle_segments = o.circle_segments;
-    scad_text = to_openscad(*r.tree, *scene, so);
+    if (scene3) {
+      scad_text = to_openscad(*r.tree, *scene3);
+    } else {
+      OpenScadOptions so;
+      if (o.circle_segments != CsgOptions::kCircleSegmentsNotGiven) so.circle_segments = o.circle_segments;
+      scad_text = to_openscad(*r.tree, *scene, so);
+    }
   }
   if (!o.json_path.empty()) out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.svg_path, svg_text);
@@ -215,6 +333,7 @@ int run_csg(const CsgOptions& o) {
     std::cerr << "hsx: --openscad: " << o.openscad_path << " not written: there is no verified tree\n";
   if (o.json_path != "-") {
     if (t.separated) std::cout << "added " << t.separated->separators << " separating half-plane(s)\n";
+    if (t.separated3) print_plane_rounds(*t.separated3);
     if (r.describable) {
       print_tree_summary(r, complex);
     } else {
@@ -224,11 +343,13 @@ int run_csg(const CsgOptions& o) {
       for (int k : r.witness.outside_cells) std::cout << " " << k;
       if (t.separated)
         std::cout << " (" << separators_outcome(*t.separated, o.max_separators) << ")";
-      else if (in.scene)
+      else if (t.separated3)
+        std::cout << " (" << separators3_outcome(*t.separated3, o.max_separators) << ")";
+      else if (in.scene || in.scene3)
         std::cout << " (try --separators)";
       std::cout << "\n";
     }
-    std::cout << "area " << area.decimal_string(30);
+    std::cout << measure_name << " " << area.decimal_string(30);
     if (auto e = area.exact_string()) std::cout << " = " << *e;
     std::cout << "\n";
   }
@@ -450,7 +571,8 @@ void add_csg_commands(CLI::App& app) {
     add_solid_options(cmd, o->solid);
     cmd->add_option("--json", o->json_path, "write describable and mixed_terms as JSON")
         ->check(output_path());
-    cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside)")
+    cmd->add_option("--svg", o->svg_path, "draw the solid; mixed terms' cells in orange (inside) and red (outside); 3D: four views of the "
+                    "solid's boundary, with the patches bounding those cells")
         ->check(output_path());
     cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
     cmd->footer("Exit codes: 0 describable; 3 not describable (--json and --svg are still written); 2 bad input; "
@@ -463,17 +585,19 @@ void add_csg_commands(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("csg", "Build a halfspace CSG tree of the solid with BHC, verified on every cell");
     cmd->add_option("SCENE", o->input, "hsx-scene/1 or hsx-complex/1 file")->required();
     add_solid_options(cmd, o->solid);
-    cmd->add_flag("--separators", o->separators, "when not describable, add separating half-planes (2D) and retry");
+    cmd->add_flag("--separators", o->separators, "when not describable, add separating half-planes (2D) or planes (3D; "
+                  "algorithms/csg/separators3.hpp) and retry");
     cmd->add_option("--max-separators", o->max_separators, "at most this many separators (default 8)");
-    cmd->add_option("--json", o->json_path, "write tree, verified, stats, area as JSON")
+    cmd->add_option("--json", o->json_path, "write tree, verified, stats, area (2D) or volume (3D) as JSON")
         ->check(output_path());
-    cmd->add_option("--svg", o->svg_path, "draw the solid")
+    cmd->add_option("--svg", o->svg_path, "draw the solid (3D: its boundary in four views)")
         ->check(output_path());
     cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
-    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact); not written "
-                                                    "when there is no verified tree")
+    cmd->add_option("--openscad", o->openscad_path, "write the tree as OpenSCAD (a drawing, not exact; 3D: every "
+                                                    "halfspace as the polyhedron hsx arranges, io/openscad.hpp); not "
+                                                    "written when there is no verified tree")
         ->check(output_path());
-    cmd->add_option("--circle-segments", o->circle_segments, "OpenSCAD $fn for circles (default 96)");
+    cmd->add_option("--circle-segments", o->circle_segments, "2D OpenSCAD $fn for circles (default 96; only with --openscad)");
     cmd->footer("Exit codes: 0 a verified tree was built (after separators, when --separators was given and needed); "
                 "3 the solid is not describable by the halfspaces (separators included), so there is no tree: "
                 "--json and --svg are still written, --openscad is not (a message says so); 2 bad input only "

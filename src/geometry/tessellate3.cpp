@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <utility>
 
 namespace hsx {
@@ -378,6 +379,17 @@ int bsh_segments(double h, double radius) {
   if (!(radius > 0) || !(h < 2 * radius)) return 15;
   const double n = std::round(M_PI / std::asin(h / (2 * radius)));
   return n > kMaxSegments ? kMaxSegments + 1 : std::max(15, static_cast<int>(n));
+}
+
+std::vector<std::vector<PointQ3>> box_cut_by_plane(const Box3& box, const PointQ3& normal, const Rational& offset) {
+  if (is_zero(normal)) throw std::invalid_argument("box_cut_by_plane: the normal is zero");
+  bool interior = false;  // some corner strictly on the kept side: the kept part has volume
+  for (int i = 0; i < 8 && !interior; ++i) {
+    const PointQ3 c{(i & 1 ? box.max : box.min).x, (i & 2 ? box.max : box.min).y, (i & 4 ? box.max : box.min).z};
+    interior = sgn(dot3(normal, c) - offset) < 0;
+  }
+  if (!interior) return {};
+  return clip(box_faces(box), normal, offset);
 }
 
 TriangleSurface tessellate(const Halfspace3& h, const Box3& domain) {

@@ -1,6 +1,8 @@
 // OpenSCAD export: see openscad.hpp.
 #include <hsx/io/openscad.hpp>
 
+#include <hsx/geometry/tessellate3.hpp>
+
 #include <stdexcept>
 #include <vector>
 
@@ -55,17 +57,14 @@ std::vector<PointQ2> clip_box(const Box2& box, const PointQ2& n, const Rational&
   return out;
 }
 
-class Writer {
+/// The tree walk shared by both dimensions: operators as OpenSCAD blocks, leaves and the domain solid from the
+/// subclass. Iterative, so that deep trees do not overflow the stack.
+class TreeWriter {
  public:
-  Writer(const Scene2& scene, const OpenScadOptions& options) : scene_(scene), options_(options) {}
+  virtual ~TreeWriter() = default;
 
   std::string write(const csg::Expr& root) {
-    out_ += "// hsx CSG expression as a 2D OpenSCAD program.\n";
-    out_ += "// a drawing, not exact: circles are polygons with $fn = " + std::to_string(options_.circle_segments) +
-            " segments; coordinates rounded to " + std::to_string(kSignificantDigits) + " significant digits.\n";
-    if (!scene_.description.empty()) out_ += "// scene: " + comment_text(scene_.description) + "\n";
-    out_ += "// domain: " + point(scene_.domain.min) + " to " + point(scene_.domain.max) + "\n";
-
+    header();
     struct Frame {
       const csg::Expr* node;
       std::size_t next;
@@ -77,7 +76,12 @@ class Writer {
       const csg::Expr& n = *top.node;
       const int depth = top.depth;
       if (n.children.empty()) {
-        leaf(n, depth);
+        switch (n.op) {
+          case csg::Op::Empty: line(depth, "union() {}  // empty"); break;
+          case csg::Op::Full: line(depth, domain_solid() + "  // full"); break;
+          case csg::Op::Halfspace: leaf(n.halfspace, depth); break;
+          default: throw std::invalid_argument("to_openscad: an operation without children");
+        }
         frames.pop_back();
         continue;
       }
@@ -94,19 +98,27 @@ class Writer {
     return out_;
   }
 
- private:
+ protected:
+  virtual void header() = 0;
+  /// The domain box as one OpenSCAD statement (the full set, and what complements are subtracted from).
+  virtual std::string domain_solid() const = 0;
+  /// Halfspace `index` (not yet range-checked) at `depth`.
+  virtual void leaf(int index, int depth) = 0;
+
   void line(int depth, const std::string& text) {
     out_.append(static_cast<std::size_t>(depth) * 2, ' ');
     out_ += text;
     out_ += '\n';
   }
 
-  std::string domain_square() const {
-    const Box2& d = scene_.domain;
-    return "translate(" + point(d.min) + ") square([" + num(d.max.x - d.min.x) + ", " + num(d.max.y - d.min.y) +
-           "]);";
+  static void check_index(int index, std::size_t count) {
+    if (index < 0 || static_cast<std::size_t>(index) >= count)
+      throw std::invalid_argument("to_openscad: halfspace index " + std::to_string(index) + " out of range");
   }
 
+  std::string out_;
+
+ private:
   void open(const csg::Expr& n, int depth) {
     switch (n.op) {
       case csg::Op::Union: line(depth, "union() {"); break;
@@ -114,23 +126,35 @@ class Writer {
       case csg::Op::Difference: line(depth, "difference() {"); break;
       case csg::Op::Complement:
         line(depth, "difference() {  // complement");
-        line(depth + 1, domain_square());
+        line(depth + 1, domain_solid());
         break;
       default: throw std::invalid_argument("to_openscad: a leaf with children");
     }
   }
+};
 
-  void leaf(const csg::Expr& n, int depth) {
-    switch (n.op) {
-      case csg::Op::Empty: line(depth, "union() {}  // empty"); return;
-      case csg::Op::Full: line(depth, domain_square() + "  // full"); return;
-      case csg::Op::Halfspace: break;
-      default: throw std::invalid_argument("to_openscad: an operation without children");
-    }
-    if (n.halfspace < 0 || static_cast<std::size_t>(n.halfspace) >= scene_.halfspaces.size()) {
-      throw std::invalid_argument("to_openscad: halfspace index " + std::to_string(n.halfspace) + " out of range");
-    }
-    const Halfspace2& h = scene_.halfspaces[static_cast<std::size_t>(n.halfspace)];
+class Writer2 final : public TreeWriter {
+ public:
+  Writer2(const Scene2& scene, const OpenScadOptions& options) : scene_(scene), options_(options) {}
+
+ private:
+  void header() override {
+    out_ += "// hsx CSG expression as a 2D OpenSCAD program.\n";
+    out_ += "// a drawing, not exact: circles are polygons with $fn = " + std::to_string(options_.circle_segments) +
+            " segments; coordinates rounded to " + std::to_string(kSignificantDigits) + " significant digits.\n";
+    if (!scene_.description.empty()) out_ += "// scene: " + comment_text(scene_.description) + "\n";
+    out_ += "// domain: " + point(scene_.domain.min) + " to " + point(scene_.domain.max) + "\n";
+  }
+
+  std::string domain_solid() const override {
+    const Box2& d = scene_.domain;
+    return "translate(" + point(d.min) + ") square([" + num(d.max.x - d.min.x) + ", " + num(d.max.y - d.min.y) +
+           "]);";
+  }
+
+  void leaf(int index, int depth) override {
+    check_index(index, scene_.halfspaces.size());
+    const Halfspace2& h = scene_.halfspaces[static_cast<std::size_t>(index)];
     const std::string note = "  // " + comment_text(h.name);
     if (h.kind == HalfspaceKind2::Halfplane) {
       const std::vector<PointQ2> clipped =
@@ -155,14 +179,104 @@ class Writer {
       return;
     }
     line(depth, "difference() {" + note + " (complement)");
-    line(depth + 1, domain_square());
+    line(depth + 1, domain_solid());
     line(depth + 1, shape);
     line(depth, "}");
   }
 
   const Scene2& scene_;
   const OpenScadOptions& options_;
-  std::string out_;
+};
+
+std::string point3(const PointQ3& p) { return "[" + num(p.x) + ", " + num(p.y) + ", " + num(p.z) + "]"; }
+
+/// `polyhedron(points = [...], faces = [...]);` of faces given counter-clockwise from outside (hsx's orientation);
+/// each face is written reversed, clockwise from outside, as OpenSCAD wants. Points are numbered in order of
+/// first use.
+std::string polyhedron(const std::vector<std::vector<PointQ3>>& faces) {
+  std::vector<PointQ3> points;
+  std::vector<std::vector<std::size_t>> ids;
+  for (const auto& f : faces) {
+    std::vector<std::size_t> face;
+    for (const PointQ3& p : f) {
+      std::size_t k = 0;
+      while (k < points.size() && points[k] != p) ++k;
+      if (k == points.size()) points.push_back(p);
+      face.push_back(k);
+    }
+    ids.push_back(std::move(face));
+  }
+  std::string s = "polyhedron(points = [";
+  for (std::size_t i = 0; i < points.size(); ++i) s += (i ? ", " : "") + point3(points[i]);
+  s += "], faces = [";
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    s += i ? ", [" : "[";
+    for (std::size_t k = ids[i].size(); k-- > 0;) s += std::to_string(ids[i][k]) + (k ? ", " : "");
+    s += "]";
+  }
+  return s + "]);";
+}
+
+/// The same for a triangle surface: its own vertex numbering, each triangle (a, b, c) written as [a, c, b].
+std::string polyhedron(const TriangleSurface& surface) {
+  std::string s = "polyhedron(points = [";
+  for (std::size_t i = 0; i < surface.vertices.size(); ++i) s += (i ? ", " : "") + point3(surface.vertices[i]);
+  s += "], faces = [";
+  for (std::size_t i = 0; i < surface.triangles.size(); ++i) {
+    const auto& t = surface.triangles[i];
+    s += (i ? ", [" : "[") + std::to_string(t[0]) + ", " + std::to_string(t[2]) + ", " + std::to_string(t[1]) + "]";
+  }
+  return s + "]);";
+}
+
+class Writer3 final : public TreeWriter {
+ public:
+  explicit Writer3(const Scene3& scene) : scene_(scene) {}
+
+ private:
+  void header() override {
+    out_ += "// hsx CSG expression as a 3D OpenSCAD program, with hsx's tessellation made explicit.\n";
+    out_ += "// every curved halfspace is the polyhedron hsx arranges (geometry/tessellate3.hpp), every plane the "
+            "domain box clipped to it; coordinates rounded to " +
+            std::to_string(kSignificantDigits) + " significant digits.\n";
+    if (!scene_.description.empty()) out_ += "// scene: " + comment_text(scene_.description) + "\n";
+    out_ += "// domain: " + point3(scene_.domain.min) + " to " + point3(scene_.domain.max) + "\n";
+  }
+
+  std::string domain_solid() const override {
+    const Box3& d = scene_.domain;
+    return "translate(" + point3(d.min) + ") cube([" + num(d.max.x - d.min.x) + ", " + num(d.max.y - d.min.y) +
+           ", " + num(d.max.z - d.min.z) + "]);";
+  }
+
+  void leaf(int index, int depth) override {
+    check_index(index, scene_.halfspaces.size());
+    const Halfspace3& h = scene_.halfspaces[static_cast<std::size_t>(index)];
+    const std::string note = "  // " + comment_text(h.name) + " (" + to_string(h.kind) +
+                             (h.complement ? ", complement" : "");
+    if (h.kind == HalfspaceKind3::Plane) {
+      const PointQ3 n = h.complement ? PointQ3{-h.normal.x, -h.normal.y, -h.normal.z} : h.normal;
+      const Rational o = h.complement ? Rational(-h.offset) : h.offset;
+      const auto faces = box_cut_by_plane(scene_.domain, n, o);
+      if (faces.empty())
+        line(depth, "union() {}" + note + ", misses the domain)");
+      else
+        line(depth, polyhedron(faces) + note + ", the domain box clipped to it)");
+      return;
+    }
+    const std::string counts = ", " + std::to_string(h.surface.vertices.size()) + " vertices, " +
+                               std::to_string(h.surface.triangles.size()) + " triangles";
+    if (!h.complement) {
+      line(depth, polyhedron(h.surface) + note + counts + ")");
+      return;
+    }
+    line(depth, "difference() {" + note + counts + ", subtracted from the domain box)");
+    line(depth + 1, domain_solid());
+    line(depth + 1, polyhedron(h.surface));
+    line(depth, "}");
+  }
+
+  const Scene3& scene_;
 };
 
 }  // namespace
@@ -172,7 +286,13 @@ std::string to_openscad(const csg::Expr& e, const Scene2& scene, const OpenScadO
     throw InputError("OpenSCAD circle segments: expected 3 to 100000, got " +
                      std::to_string(options.circle_segments));
   }
-  return Writer(scene, options).write(e);
+  return Writer2(scene, options).write(e);
 }
+
+}  // namespace hsx
+
+namespace hsx {
+
+std::string to_openscad(const csg::Expr& e, const Scene3& scene) { return Writer3(scene).write(e); }
 
 }  // namespace hsx

@@ -118,6 +118,10 @@ void check_fit(const Scene3& scene, const Arranged3& a, const Svg3Options& o) {
     throw std::invalid_argument("arrangement_svg3: cell_fill needs one entry per cell");
   if (!o.highlight_patches.empty() && o.highlight_patches.size() != a.complex.patches.size())
     throw std::invalid_argument("arrangement_svg3: highlight_patches needs one entry per patch");
+  if (!o.cell_marks.empty() && o.cell_marks.size() != a.complex.cells.size())
+    throw std::invalid_argument("arrangement_svg3: cell_marks needs one entry per cell");
+  for (char m : o.cell_marks)
+    if (m < 0 || m > 2) throw std::invalid_argument("arrangement_svg3: a cell mark is not 0, 1 or 2");
   for (const SvgView3& v : o.views) {
     const PointQ3& d = v.direction;
     const PointQ3& u = v.up;
@@ -132,9 +136,20 @@ void check_fit(const Scene3& scene, const Arranged3& a, const Svg3Options& o) {
 struct Paint {
   int triangle = -1;
   int halfspace = -1;
-  bool highlight = false;
+  int overlay = 0;  // 0: a face; drawn over the faces: 1 a highlighted patch, 2 / 3 a patch of a marked cell (1 / 2)
   int patch = -1;  // shapes: the face's patch (data-patch), -1: not written
 };
+
+/// Per patch, the mark it is drawn with: its inside cell's mark when set, else its outside cell's (0: none).
+std::vector<char> patch_marks(const Complex& c, const std::vector<char>& cell_marks) {
+  std::vector<char> out(c.patches.size(), 0);
+  if (cell_marks.empty()) return out;
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
+    const char in = cell_marks[static_cast<std::size_t>(c.patches[p].inside_cell)];
+    out[p] = in ? in : cell_marks[static_cast<std::size_t>(c.patches[p].outside_cell)];
+  }
+  return out;
+}
 
 /// What a picture paints (see the conventions): every triangle, or a shape's boundary, then highlighted patches.
 std::vector<Paint> paints_of(const Arranged3& a, const Svg3Options& o) {
@@ -143,24 +158,30 @@ std::vector<Paint> paints_of(const Arranged3& a, const Svg3Options& o) {
   if (o.cell_fill.empty()) {
     for (std::size_t k = 0; k < triangles.size(); ++k)
       paints.push_back({static_cast<int>(k), triangles[k].halfspaces.empty() ? -1 : triangles[k].halfspaces.front(),
-                        false, -1});
+                        0, -1});
   } else {
-    for (const ExportedFace& f : shape_faces(a, o.cell_fill)) paints.push_back({f.triangle, f.halfspace, false, f.patch});
+    for (const ExportedFace& f : shape_faces(a, o.cell_fill)) paints.push_back({f.triangle, f.halfspace, 0, f.patch});
   }
   for (std::size_t p = 0; p < o.highlight_patches.size(); ++p)
     if (o.highlight_patches[p])
       for (int t : a.complex.patches[p].pieces)
-        paints.push_back({t, a.complex.patches[p].halfspace, true, static_cast<int>(p)});
+        paints.push_back({t, a.complex.patches[p].halfspace, 1, static_cast<int>(p)});
+  const std::vector<char> marks = patch_marks(a.complex, o.cell_marks);
+  for (std::size_t p = 0; p < marks.size(); ++p)
+    if (marks[p])
+      for (int t : a.complex.patches[p].pieces)
+        paints.push_back({t, a.complex.patches[p].halfspace, 1 + marks[p], static_cast<int>(p)});
   return paints;
 }
 
 const char* const kHighlightColour = "#ffc400";
+const char* const kMarkColours[2] = {"#f4a261", "#e63946"};  // cell_marks 1 and 2, as io/svg.hpp
 
 /// The paints with `highlight` set as given, back to front, in one "view" group (none for highlights when there
 /// are none).
 std::string faces_svg(const Arrangement3& arr, const std::vector<Paint>& paints, bool highlight,
                       const SvgView3& view, const Projection& p, double opacity) {
-  if (highlight && std::none_of(paints.begin(), paints.end(), [](const Paint& x) { return x.highlight; })) return "";
+  if (highlight && std::none_of(paints.begin(), paints.end(), [](const Paint& x) { return x.overlay > 0; })) return "";
   struct Face {
     double depth;
     std::size_t paint;
@@ -169,7 +190,7 @@ std::string faces_svg(const Arrangement3& arr, const std::vector<Paint>& paints,
   const auto& triangles = arr.triangles();
   for (std::size_t k = 0; k < paints.size(); ++k) {
     const ArrTriangle3& t = triangles.at(static_cast<std::size_t>(paints[k].triangle));
-    if (paints[k].highlight != highlight || !seen(arr, t, view.direction)) continue;
+    if ((paints[k].overlay > 0) != highlight || !seen(arr, t, view.direction)) continue;
     Vec c;
     for (int v : t.vertices) c = c + to_vec(arr.vertices()[v]);
     faces.push_back({dot((1.0 / 3) * c, p.depth), k});
@@ -185,8 +206,13 @@ std::string faces_svg(const Arrangement3& arr, const std::vector<Paint>& paints,
     const ArrTriangle3& t = triangles[static_cast<std::size_t>(paint.triangle)];
     const Vec n = unit(to_vec(exact_normal(arr, t)));
     const double light = 0.35 + 0.65 * std::fabs(dot(n, p.light));
-    const Rgb base = parse_colour(paint.highlight ? kHighlightColour : svg_palette_colour(paint.halfspace));
-    s += std::string("<polygon class=\"") + (paint.highlight ? "highlight" : "face") + "\" data-triangle=\"" +
+    const Rgb base = parse_colour(paint.overlay == 1   ? kHighlightColour
+                                  : paint.overlay > 1 ? kMarkColours[paint.overlay - 2]
+                                                      : svg_palette_colour(paint.halfspace));
+    const char* const kind = paint.overlay == 1 ? "highlight" : paint.overlay == 2 ? "mark-inside"
+                             : paint.overlay == 3                                ? "mark-outside"
+                                                                                 : "face";
+    s += std::string("<polygon class=\"") + kind + "\" data-triangle=\"" +
          std::to_string(paint.triangle) + "\"" +
          (paint.patch >= 0 ? " data-patch=\"" + std::to_string(paint.patch) + "\"" : std::string()) + " points=\"";
     for (int k = 0; k < 3; ++k) s += (k ? " " : "") + p.xy(to_vec(arr.vertices()[t.vertices[k]]));
@@ -263,7 +289,7 @@ std::string legend_text(const Halfspace3& h) {
 
 /// A line of the legend under the halfspaces: a swatch (an amber square or a red ring) and its text.
 struct Mark {
-  enum Swatch { Ring, Highlight, Faces } swatch = Faces;
+  enum Swatch { Ring, Highlight, Faces, MarkInside, MarkOutside } swatch = Faces;
   std::string text;
 };
 
@@ -277,6 +303,13 @@ std::vector<Mark> marks_of(const Arranged3& a, const Svg3Options& o, const std::
   }
   if (std::find(o.highlight_patches.begin(), o.highlight_patches.end(), 1) != o.highlight_patches.end())
     marks.push_back({Mark::Highlight, o.highlight_legend + " (drawn over the rest)"});
+  const std::vector<char> pm = patch_marks(a.complex, o.cell_marks);
+  for (char m : {1, 2})
+    if (std::find(pm.begin(), pm.end(), m) != pm.end())
+      marks.push_back({m == 1 ? Mark::MarkInside : Mark::MarkOutside,
+                       o.mark_legend[m - 1] + " (" +
+                           std::to_string(std::count(o.cell_marks.begin(), o.cell_marks.end(), m)) +
+                           " cells; their boundary patches, drawn over the rest)"});
   return marks;
 }
 
@@ -291,7 +324,11 @@ std::string marks_svg(const std::vector<Mark>& marks, double left, double top, d
     else
       s += "<rect x=\"" + svg_number(left) + "\" y=\"" + svg_number(y) + "\" width=\"" + svg_number(swatch) +
            "\" height=\"" + svg_number(0.9 * font_size) + "\" fill=\"" +
-           (marks[k].swatch == Mark::Highlight ? kHighlightColour : "#9a9a9a") + "\"/>\n";
+           (marks[k].swatch == Mark::Highlight     ? kHighlightColour
+            : marks[k].swatch == Mark::MarkInside  ? kMarkColours[0]
+            : marks[k].swatch == Mark::MarkOutside ? kMarkColours[1]
+                                                   : "#9a9a9a") +
+           "\"/>\n";
     s += "<text x=\"" + svg_number(left + swatch + gap) + "\" y=\"" + svg_number(y + 0.8 * font_size) +
          "\" fill=\"#222222\">" + svg_escape(marks[k].text) + "</text>\n";
   }

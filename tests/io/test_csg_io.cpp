@@ -8,6 +8,7 @@
 #include <hsx/algorithms/csg/expression.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
 #include <hsx/io/csg_text.hpp>
+#include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/csgnet.hpp>
 #include <hsx/io/openscad.hpp>
 #include <hsx/io/scene_json.hpp>
@@ -17,6 +18,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -515,4 +517,127 @@ TEST_CASE("openscad export: half-plane clipping, complements, constants", "[csg]
   bad.circle_segments = 2;
   CHECK(error_of([&] { to_openscad(*leaf(0), s, bad); }) == "OpenSCAD circle segments: expected 3 to 100000, got 2");
   CHECK_THROWS_AS(to_openscad(*leaf(9), s), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------- OpenSCAD, 3D
+
+namespace {
+
+/// Six times the signed volume of a polyhedron given by faces counter-clockwise from outside (fan triangulation;
+/// exact). Positive for a correctly oriented closed surface.
+Rational six_volume(const std::vector<std::vector<PointQ3>>& faces) {
+  Rational v = 0;
+  for (const auto& f : faces)
+    for (std::size_t i = 1; i + 1 < f.size(); ++i) {
+      const PointQ3 &a = f[0], &b = f[i], &c = f[i + 1];
+      v += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+    }
+  return v;
+}
+
+/// Every directed edge of the faces appears exactly once, and so does its reverse (a closed, oriented surface).
+bool closed(const std::vector<std::vector<PointQ3>>& faces) {
+  std::vector<std::pair<PointQ3, PointQ3>> edges;
+  for (const auto& f : faces)
+    for (std::size_t i = 0; i < f.size(); ++i) edges.push_back({f[i], f[(i + 1) % f.size()]});
+  for (const auto& e : edges) {
+    const auto same = std::count(edges.begin(), edges.end(), e);
+    const auto reverse = std::count(edges.begin(), edges.end(), std::make_pair(e.second, e.first));
+    if (same != 1 || reverse != 1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("box_cut_by_plane: exact convex pieces, closed, outward, volumes", "[csg][openscad][geometry]") {
+  const Box3 box{PointQ3{R(0), R(0), R(0)}, PointQ3{R(2), R(2), R(2)}};
+  // x + y + z <= 1: the corner tetrahedron of volume 1/6 (six_volume 1): 3 box faces cut to triangles, the cap.
+  const auto tet = box_cut_by_plane(box, PointQ3{R(1), R(1), R(1)}, R(1));
+  CHECK(tet.size() == 4);
+  CHECK(closed(tet));
+  CHECK(six_volume(tet) == R(1));
+  // Its complement x + y + z >= 1: the rest of the box, 8 - 1/6.
+  const auto rest = box_cut_by_plane(box, PointQ3{R(-1), R(-1), R(-1)}, R(-1));
+  CHECK(rest.size() == 7);  // 6 faces (3 of them pentagons) and the cap
+  CHECK(closed(rest));
+  CHECK(six_volume(rest) == R(6 * 8 - 1));
+  // A plane through a box edge and the opposite edge: half the box, the cap a rectangle.
+  const auto half = box_cut_by_plane(box, PointQ3{R(1), R(-1), R(0)}, R(0));
+  CHECK(closed(half));
+  CHECK(six_volume(half) == R(24));
+  // The plane z <= 2 keeps the box whole, no cap; z <= 0 and z <= -1 keep nothing.
+  const auto whole = box_cut_by_plane(box, PointQ3{R(0), R(0), R(1)}, R(2));
+  CHECK(whole.size() == 6);
+  CHECK(six_volume(whole) == R(48));
+  CHECK(box_cut_by_plane(box, PointQ3{R(0), R(0), R(1)}, R(0)).empty());
+  CHECK(box_cut_by_plane(box, PointQ3{R(0), R(0), R(1)}, R(-1)).empty());
+  CHECK_THROWS_AS(box_cut_by_plane(box, PointQ3{R(0), R(0), R(0)}, R(0)), std::invalid_argument);
+}
+
+TEST_CASE("box_cut_by_plane: the two sides of any plane make up the box", "[csg][openscad][geometry]") {
+  rc::prop("closed, outward, volumes adding up to the box's", [] {
+    const Box3 box{PointQ3{R(-1), R(0), R(0)}, PointQ3{R(2), R(1), R(3)}};  // volume 9, six_volume 54
+    const auto c = [] { return *rc::gen::inRange(-3, 4); };
+    const PointQ3 n{R(c()), R(c()), R(c())};
+    RC_PRE(!(n.x == 0 && n.y == 0 && n.z == 0));
+    const Rational o = R(*rc::gen::inRange(-12, 13), *rc::gen::inRange(1, 4));
+    const auto below = box_cut_by_plane(box, n, o);
+    const auto above = box_cut_by_plane(box, PointQ3{-n.x, -n.y, -n.z}, Rational(-o));
+    RC_ASSERT(six_volume(below) + six_volume(above) == R(54));
+    RC_ASSERT((below.empty() || closed(below)));
+    RC_ASSERT((above.empty() || closed(above)));
+    RC_ASSERT((below.empty() || six_volume(below) > 0));
+    for (const auto& f : below)
+      for (const PointQ3& p : f) RC_ASSERT(dot3(n, p) <= o);
+  });
+}
+
+TEST_CASE("openscad export 3D: the tessellation explicit, planes clipped, complements subtracted",
+          "[csg][openscad]") {
+  const Scene3 s = read_scene3_text(R"({"format": "hsx-scene/1", "dimension": 3,
+    "domain": {"min": [-2, -2, -2], "max": [2, 2, 2]},
+    "halfspaces": [
+      {"name": "P", "kind": "plane", "normal": [0, 0, 1], "offset": 0},
+      {"name": "Q", "kind": "plane", "normal": [0, 0, 1], "offset": 0, "complement": true},
+      {"name": "B", "kind": "box", "min": [-1, -1, -1], "max": [1, 1, 1]},
+      {"name": "C", "kind": "cylinder", "axis_point1": [0, 0, -1], "axis_point2": [0, 0, 1], "radius": "1/2",
+       "tessellation": {"segments": 8}, "complement": true},
+      {"name": "Far", "kind": "plane", "normal": [1, 0, 0], "offset": -5}
+    ]})");
+  const std::vector<std::string> names = {"P", "Q", "B", "C", "Far"};
+  const ExprPtr e = parse_csg_text("(B & P) | C | (Q & Far)", names);
+  const std::string scad = to_openscad(*e, s);
+  CHECK(scad == to_openscad(*e, s));
+  CHECK(scad.rfind("// hsx CSG expression as a 3D OpenSCAD program, with hsx's tessellation made explicit.\n", 0) ==
+        0);
+  CHECK(scad.find("// domain: [-2, -2, -2] to [2, 2, 2]\n") != std::string::npos);
+  // P: the lower half of the domain box, 8 points, 6 quads; the box's corners listed in order of first use, each
+  // face clockwise from outside (the box_cut_by_plane face z = -2 is (0,2,3,1) counter-clockwise -> reversed).
+  CHECK(scad.find("polyhedron(points = [[-2, -2, -2], [-2, 2, -2], [2, 2, -2], [2, -2, -2], [2, -2, 0], "
+                  "[-2, -2, 0], [-2, 2, 0], [2, 2, 0]], faces = [[3, 2, 1, 0], ") != std::string::npos);
+  CHECK(scad.find("  // P (plane, the domain box clipped to it)\n") != std::string::npos);
+  CHECK(scad.find("  // Q (plane, complement, the domain box clipped to it)\n") != std::string::npos);
+  CHECK(scad.find("union() {}  // Far (plane, misses the domain)\n") != std::string::npos);
+  // B: its 8 corners in tessellation order, triangle (0,2,3) written [0, 3, 2].
+  CHECK(scad.find("polyhedron(points = [[-1, -1, -1], [1, -1, -1], [-1, 1, -1], [1, 1, -1], [-1, -1, 1], "
+                  "[1, -1, 1], [-1, 1, 1], [1, 1, 1]], faces = [[0, 3, 2], [0, 1, 3], ") != std::string::npos);
+  CHECK(scad.find("  // B (box, 8 vertices, 12 triangles)\n") != std::string::npos);
+  // ~C: the domain cube minus the 8-gon prism (8 + 8 ring vertices + 2 cap centres, 32 triangles).
+  CHECK(scad.find("difference() {  // C (cylinder, complement, 18 vertices, 32 triangles, subtracted from the "
+                  "domain box)\n    translate([-2, -2, -2]) cube([4, 4, 4]);\n    polyhedron(points = [") !=
+        std::string::npos);
+  CHECK(count(scad, "polyhedron(") == 4);
+  CHECK(count(scad, "{") == count(scad, "}"));
+  // The polyhedron of C has exactly the surface's vertices, each triangle reversed.
+  const TriangleSurface& cs = s.halfspaces[3].surface;
+  REQUIRE(cs.triangles.size() == 32);
+  const auto& t0 = cs.triangles[0];
+  CHECK(scad.find("faces = [[" + std::to_string(t0[0]) + ", " + std::to_string(t0[2]) + ", " +
+                  std::to_string(t0[1]) + "], ") != std::string::npos);
+  CHECK(to_openscad(*complement(leaf(2)), s).find("difference() {  // complement\n"
+                                                   "  translate([-2, -2, -2]) cube([4, 4, 4]);\n"
+                                                   "  polyhedron(points = [[-1, -1, -1], ") != std::string::npos);
+  CHECK(to_openscad(*full(), s).find("translate([-2, -2, -2]) cube([4, 4, 4]);  // full\n") != std::string::npos);
+  CHECK_THROWS_AS(to_openscad(*leaf(7), s), std::invalid_argument);
 }

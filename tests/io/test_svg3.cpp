@@ -250,3 +250,39 @@ TEST_CASE("OBJ export reads back through read_obj: exact triangles, one group pe
   CHECK(mtl_path_for("dir/out.obj") == "dir/out.mtl");
   CHECK_THROWS_AS(arrangement_obj(scene(), a, "a\nb"), std::invalid_argument);
 }
+
+TEST_CASE("3D SVG: cell marks draw the patches bounding marked cells, orange and red", "[io][svg3]") {
+  const Complex& c = arranged().complex;
+  REQUIRE(c.cells.size() >= 3);
+  Svg3Options options;
+  options.views = {default_svg_views3()[3]};
+  options.cell_marks.assign(c.cells.size(), 0);
+  CHECK(count(arrangement_svg3(scene(), arranged(), options), "class=\"mark-") == 0);
+  // Mark the first non-outer cell 1 and the outer cell 0 (it bounds the first one's outside) 2.
+  int marked = -1;
+  for (std::size_t k = 0; k < c.cells.size() && marked < 0; ++k)
+    if (!c.cells[k].outer) marked = static_cast<int>(k);
+  REQUIRE(marked >= 0);
+  options.cell_marks[static_cast<std::size_t>(marked)] = 1;
+  const std::string one = arrangement_svg3(scene(), arranged(), options);
+  // Every triangle of every patch bounding the marked cell, seen in the view, is a mark-inside polygon; the
+  // patches' triangles are at most that many.
+  std::size_t triangles = 0;
+  for (const Patch& p : c.patches)
+    if (p.inside_cell == marked || p.outside_cell == marked) triangles += p.pieces.size();
+  CHECK(count(one, "class=\"mark-inside\"") > 0);
+  CHECK(count(one, "class=\"mark-inside\"") <= triangles);
+  CHECK(count(one, "class=\"mark-outside\"") == 0);
+  CHECK(one.find("inside cells of mixed terms (1 cells;") != std::string::npos);
+  CHECK(one.find("fill=\"#f4a261\"") != std::string::npos);  // the legend's swatch
+  for (std::size_t k = 0; k < c.cells.size(); ++k)
+    if (static_cast<int>(k) != marked) options.cell_marks[k] = 2;
+  const std::string two = arrangement_svg3(scene(), arranged(), options);
+  CHECK(count(two, "class=\"mark-outside\"") > 0);
+  // A patch of the marked cell takes mark 1 when that cell is its inside cell, else the other cell's mark 2.
+  CHECK(count(two, "class=\"mark-inside\"") <= count(one, "class=\"mark-inside\""));
+  options.cell_marks.push_back(0);
+  CHECK_THROWS_AS(arrangement_svg3(scene(), arranged(), options), std::invalid_argument);
+  options.cell_marks.assign(c.cells.size(), 3);
+  CHECK_THROWS_AS(arrangement_svg3(scene(), arranged(), options), std::invalid_argument);
+}

@@ -46,6 +46,7 @@
 #include <hsx/geometry/scene3.hpp>
 
 #include <cstddef>
+#include <vector>
 
 namespace hsx {
 
@@ -69,6 +70,14 @@ int bsh_segments(double h, double radius);
 /// length", "minor_radius must be below major_radius", tessellation bounds, an infinite cylinder that misses the
 /// domain) without naming the halfspace (the caller prefixes it).
 TriangleSurface tessellate(const Halfspace3& h, const Box3& domain);
+
+/// The convex polyhedron box ∩ { x : normal . x <= offset }, computed exactly: its faces, each a convex polygon
+/// with its vertices counter-clockwise seen from outside (the parts of the box's six faces on the kept side, in the
+/// box_surface face order z = min, z = max, y = min, y = max, x = min, x = max, then the cap on the plane when the
+/// plane crosses the box). Every box face is kept whole when the box lies on the kept side (no cap); empty when
+/// the kept part has no interior (the box lies on the other side, or touches the plane only). `normal` must be
+/// non-zero (std::invalid_argument otherwise). For OpenSCAD output of planes (io/openscad.hpp).
+std::vector<std::vector<PointQ3>> box_cut_by_plane(const Box3& box, const PointQ3& normal, const Rational& offset);
 
 /// Describes the tessellation for messages and Halfspace3::origin: "sphere, 32 x 16 segments, 960 triangles".
 std::string tessellation_summary(const Halfspace3& h);

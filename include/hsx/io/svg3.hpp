@@ -20,7 +20,8 @@
 // - `highlight_patches` (per patch, 1 = highlighted; e.g. the patches a search removed): every triangle of such a
 //   patch is also a "highlight" polygon, amber, painted after all the faces (back to front among themselves, in a
 //   second "view" group per view, present when some patch is highlighted) so that they show even inside the shape; the legend says what they are
-//   (`highlight_legend`).
+//   (`highlight_legend`). `cell_marks` (per cell, 1 or 2) draws the patches bounding marked cells the same way, in
+//   orange (1) or red (2), in the same second group.
 // - Drawn on top of the faces, in this order: the domain box's twelve edges ("domain" lines), the samples ("sample"
 //   circles in their halfspace's colour, visible through everything), and on request the labels: "c<k>" at cell
 //   k's interior point ("cell-id"), "p<k>" at the centroid of patch k's largest triangle ("patch-id"), the ids of
@@ -55,12 +56,19 @@ struct Svg3Options {
   std::vector<char> cell_fill;     ///< optional, per cell: 1 = inside a shape; set: draw the shape (see above)
   std::vector<char> highlight_patches;                   ///< optional, per patch: 1 = highlighted
   std::string highlight_legend = "highlighted patches";  ///< what the highlight means, for the legend
+  /// Optional, per cell: 0 unmarked, 1 or 2 marked (e.g. the inside and outside cells of mixed terms). Every patch
+  /// bounding a marked cell is drawn over the faces like a highlight, orange for mark 1 and red for mark 2 (the
+  /// colours of io/svg.hpp's cell_marks), in the mark of its inside cell when that is marked, else of its outside
+  /// cell; classes "mark-inside" and "mark-outside". The legend says what they are (`mark_legend`).
+  std::vector<char> cell_marks;
+  std::string mark_legend[2] = {"inside cells of mixed terms", "outside cells of mixed terms"};
   std::string title;
 };
 
 /// The picture. `arranged` must have been built from `scene` (same halfspaces and samples). Throws
 /// std::invalid_argument when they do not fit together, the options break the bounds above, or `cell_fill` (when
-/// set) or `highlight_patches` (when set) does not have one entry per cell or patch.
+/// set), `highlight_patches` or `cell_marks` (when set) does not have one entry per cell or patch, or a cell mark is
+/// not 0, 1 or 2.
 std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options = {});
 
 /// How many "face" polygons view `view` of arrangement_svg3 draws: the triangles not on the box and not seen

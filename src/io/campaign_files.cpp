@@ -58,13 +58,13 @@ nlohmann::json campaign_to_json(const campaign::CampaignSettings& s, const Campa
             {"time_limit", s.time_limit}}}};
 }
 
-nlohmann::json record_to_json(const SceneRecord& r) {
-  nlohmann::json checks = nlohmann::json::array();
+nlohmann::ordered_json record_to_json(const SceneRecord& r) {
+  nlohmann::ordered_json checks = nlohmann::ordered_json::array();
   for (const campaign::CheckOutcome& c : r.checks)
     checks.push_back({{"check", c.check}, {"status", to_string(c.status)}, {"witness", c.witness}});
-  nlohmann::json j = {{"index", r.index},         {"seed", r.seed},       {"halfspaces", r.halfspaces},
-                      {"cells", r.cells},         {"patches", r.patches}, {"samples", r.samples},
-                      {"degeneracies", r.degeneracies}, {"outcome", to_string(r.outcome)}};
+  nlohmann::ordered_json j = {{"index", r.index},         {"seed", r.seed},       {"halfspaces", r.halfspaces},
+                              {"cells", r.cells},         {"patches", r.patches}, {"samples", r.samples},
+                              {"degeneracies", r.degeneracies}, {"outcome", to_string(r.outcome)}};
   if (!r.note.empty()) j["note"] = r.note;
   if (r.timed_out) j["timed_out"] = true;
   j["checks"] = checks;
@@ -90,14 +90,14 @@ std::string percent(double rate) {
 }
 
 nlohmann::json counts_json(const StatusCounts& c) {
-  const campaign::Interval i = c.held_interval();
+  const campaign::RateInterval i = c.held_interval();
   return {{"held", c.held},         {"failed", c.failed},          {"skipped", c.skipped},
           {"stopped", c.stopped},   {"held_rate", c.held_rate()}, {"wilson95", {i.low, i.high}}};
 }
 
 std::string counts_row(const std::string& label, const StatusCounts& c) {
   std::ostringstream s;
-  const campaign::Interval i = c.held_interval();
+  const campaign::RateInterval i = c.held_interval();
   s << "  " << std::setw(10) << label << std::setw(9) << c.total() << std::setw(9) << c.held << std::setw(8)
     << c.failed << std::setw(9) << c.skipped << std::setw(9) << c.stopped << std::setw(11)
     << (c.held + c.failed ? percent(c.held_rate()) : "-") << "  "

@@ -45,8 +45,9 @@ nlohmann::json campaign_to_json(const campaign::CampaignSettings& settings, cons
 
 /// One results.jsonl line's object: {"index", "seed", "halfspaces", "cells", "patches", "samples", "degeneracies":
 /// [names], "outcome": "checked" | "refused" | "error", "note" (only when not empty), "timed_out" (only when
-/// true), "checks": [{"check", "status", "witness"}]}. Its dump() (no spaces) plus "\n" is the line.
-nlohmann::json record_to_json(const campaign::SceneRecord& record);
+/// true), "checks": [{"check", "status", "witness"}]}, keys in that order. Its dump() (no spaces) plus "\n" is the
+/// line.
+nlohmann::ordered_json record_to_json(const campaign::SceneRecord& record);
 /// The inverse of record_to_json (SceneRecord::scene is left empty). Throws InputError naming the bad field.
 campaign::SceneRecord record_from_json(const nlohmann::json& line);
 

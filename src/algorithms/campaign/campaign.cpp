@@ -316,7 +316,7 @@ void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_
 std::vector<std::uint64_t> shard_indices(std::uint64_t start, std::uint64_t count, std::uint64_t shard,
                                          std::uint64_t shards) {
   if (shards < 1 || shard >= shards) throw InputError("--shard: i/k with 0 <= i < k");
-  if (count > std::numeric_limits<std::uint64_t>::max() - start)
+  if (count > 0 && count - 1 > std::numeric_limits<std::uint64_t>::max() - start)
     throw InputError("--start + --count: beyond the largest index 2^64 - 1");
   std::vector<std::uint64_t> out;
   if (shard >= count) return out;
@@ -328,19 +328,20 @@ std::vector<std::uint64_t> shard_indices(std::uint64_t start, std::uint64_t coun
   return out;
 }
 
-Interval wilson95(long successes, long trials) {
+RateInterval wilson95(long successes, long trials) {
   if (trials <= 0) return {0, 1};
   const double z = 1.959963984540054, n = static_cast<double>(trials), p = successes / n;
   const double denominator = 1 + z * z / n;
   const double centre = (p + z * z / (2 * n)) / denominator;
   const double half = z * std::sqrt(p * (1 - p) / n + z * z / (4 * n * n)) / denominator;
-  return {std::max(0.0, centre - half), std::min(1.0, centre + half)};
+  // The ends are exact at 0 and 1 successes (rounding would give 1e-17 and 1 - 1e-16).
+  return {successes == 0 ? 0.0 : std::max(0.0, centre - half), successes == trials ? 1.0 : std::min(1.0, centre + half)};
 }
 
 double StatusCounts::held_rate() const {
   return held + failed == 0 ? 0 : static_cast<double>(held) / static_cast<double>(held + failed);
 }
-Interval StatusCounts::held_interval() const { return wilson95(held, held + failed); }
+RateInterval StatusCounts::held_interval() const { return wilson95(held, held + failed); }
 
 void StatusCounts::add(CheckStatus s) {
   switch (s) {

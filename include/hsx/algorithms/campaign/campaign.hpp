@@ -133,16 +133,17 @@ void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_
 
 /// The indices of shard `shard` of `shards` among start, start + 1, ..., start + count - 1: those with
 /// (index - start) mod shards == shard, in increasing order. The shards 0..shards-1 partition the range. Throws
-/// InputError unless 0 <= shard < shards, and when start + count overflows 64 bits.
+/// InputError unless 0 <= shard < shards, and when the last index start + count - 1 is beyond 2^64 - 1.
 std::vector<std::uint64_t> shard_indices(std::uint64_t start, std::uint64_t count, std::uint64_t shard,
                                          std::uint64_t shards);
 
 /// A 95% Wilson score interval for a proportion: `successes` of `trials` (0 <= successes <= trials), z = 1.959964.
-/// With 0 trials the interval is [0, 1]. (Floating point: a statistic of counts, not geometry.)
-struct Interval {
+/// With 0 trials the interval is [0, 1]; its low end is exactly 0 when successes == 0 and its high end exactly 1
+/// when successes == trials. (Floating point: a statistic of counts, not geometry.)
+struct RateInterval {
   double low = 0, high = 1;
 };
-Interval wilson95(long successes, long trials);
+RateInterval wilson95(long successes, long trials);
 
 /// Counts of one check's statuses.
 struct StatusCounts {
@@ -151,7 +152,7 @@ struct StatusCounts {
   /// held / (held + failed): the rate among the scenes where the check decided (0 when none did).
   double held_rate() const;
   /// wilson95(held, held + failed).
-  Interval held_interval() const;
+  RateInterval held_interval() const;
   void add(CheckStatus s);
 };
 

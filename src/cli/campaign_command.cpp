@@ -30,6 +30,21 @@ struct CampaignCommandOptions {
   std::string weights;
 };
 
+/// For --seed, --start, --count: a whole number 0 .. 2^64 - 1 written in digits (CLI11 alone would wrap "-1").
+CLI::Validator whole_number() {
+  return CLI::Validator(
+      [](std::string& s) {
+        if (s.empty() || s.size() > 20 || s.find_first_not_of("0123456789") != std::string::npos ||
+            (s.size() == 20 && s > "18446744073709551615"))
+          return std::string("must be a whole number 0 .. 18446744073709551615, not \"" + s + "\"");
+        return std::string();
+      },
+      "N");
+}
+
+/// The most scenes one run plans (its index list is held in memory): split larger campaigns with --start.
+constexpr std::uint64_t kMaxCount = 100'000'000;
+
 /// Exit status 3 when a check fails (as `hsx check`): a counterexample or a bug, never bad input.
 constexpr int kCheckFailed = 3;
 
@@ -111,6 +126,9 @@ int run_campaign(const CampaignCommandOptions& o) {
     return 0;
   }
   if (!o.count_given) throw InputError("--count: how many scenes (give --count N; --list-checks lists the checks)");
+  if (o.count > kMaxCount)
+    throw InputError("--count: at most " + std::to_string(kMaxCount) + " scenes per run (run larger campaigns in parts "
+                     "with --start)");
   if (o.jobs < 1) throw InputError("--jobs: at least 1");
   if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR (the campaign to continue)");
   campaign::CampaignSettings settings = o.settings;
@@ -171,15 +189,17 @@ void add_campaign_command(CLI::App& app) {
       "Run the proposition checkers on random 2D scenes (scene k of seed s is the same on every machine); results "
       "as JSON lines in --out DIR, resumable; exit 3 when a check fails (docs/campaigns.md)");
   cmd->add_option("--seed", o->settings.seed, "the campaign's seed: scene k is random_scene(settings, seed, k) "
-                                              "(default 1)");
+                                              "(default 1)")
+      ->check(whole_number());
   cmd->add_option_function<std::uint64_t>(
       "--count",
       [o](const std::uint64_t& n) {
         o->count = n;
         o->count_given = true;
       },
-      "how many scenes: indices --start .. --start + N - 1 (required)");
-  cmd->add_option("--start", o->start, "the first scene index (default 0)");
+      "how many scenes: indices --start .. --start + N - 1 (required; at most 10^8 per run)")
+      ->check(whole_number());
+  cmd->add_option("--start", o->start, "the first scene index (default 0)")->check(whole_number());
   cmd->add_option("--shard", o->shard,
                   "i/k: only the indices whose offset from --start is i mod k (default 0/1); the k shards together "
                   "are the whole range");

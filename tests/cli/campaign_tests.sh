@@ -7,6 +7,8 @@
 #   the whole campaign's line K;
 # - a campaign killed by SIGTERM (and one with a torn last line) resumed with --resume ends with the bytes of an
 #   uninterrupted run;
+# - a scene on which a check fails (scene 80 of seed 1 at 8 halfspaces: Prop. 5.1) exits 3 and is kept as a scene
+#   file with its note, which `hsx check` reads and fails the same way;
 # - --checks keeps the named checks only; --time-limit counts timed-out scenes instead of dropping them; the
 #   arrangement limits record refused scenes;
 # - bad options, foreign folders and mismatched resumes exit 2 and touch nothing.
@@ -106,8 +108,32 @@ if [ "$(jq -r .outcome refused/results.jsonl | sort -u)" = refused ] &&
   bad "--max-cells 1: scenes not recorded as refused with skipped checks"; fi
 has out "4 refused by the arrangement limits" "--max-cells 1: the table"
 
+# ---- a failing scene is kept (scene 80 of seed 1 at 8 halfspaces: Prop. 5.1 fails at its non-generic junctions) ----
+expect 3 "" -- "$hsx" campaign --seed 1 --halfspaces 8 --start 79 --count 3 --out fails --jobs 2
+has out "hsx campaign --seed 1, scene 80: failed prop51: " "the failing scene's note on stdout"
+has out "3 scenes: 3 checked, 0 refused by the arrangement limits, 0 errors; 0 timed out; 1 with a failed check" \
+  "the table counts the failing scene"
+if [ "$(ls fails/failures)" = scene-80.json ]; then ok; else bad "failures/: $(ls fails/failures)"; fi
+if [ "$(jq -r '.checks[] | select(.check == "prop51") | .status' fails/results.jsonl | tr '\n' ' ')" = "held failed held " ]; then
+  ok; else bad "prop51 statuses of scenes 79..81"; fi
+if jq -r .description fails/failures/scene-80.json | grep -q "^hsx campaign --seed 1, scene 80: failed prop51: state "; then ok; else
+  bad "the kept scene's note: $(jq -r .description fails/failures/scene-80.json | head -c 300)"; fi
+expect 3 "" -- "$hsx" check fails/failures/scene-80.json
+has out "Prop. 5.1 (removable sets)                                             FAIL" "hsx check on the kept scene"
+if [ "$(jq '.failed_scenes' fails/summary.json)" = 1 ] &&
+  [ "$(jq '.checks[] | select(.check == "prop51") | .failed' fails/summary.json)" = 1 ]; then ok; else
+  bad "summary.json does not count the failure"; fi
+# Not selected, the failing check neither fails the scene nor keeps it.
+expect 0 "" -- "$hsx" campaign --seed 1 --halfspaces 8 --start 80 --count 1 --checks prop52,manifold --out notsel
+if [ ! -e notsel/failures ]; then ok; else bad "--checks without prop51 still kept scene 80"; fi
+
 # ---- bad options and folders: exit 2, nothing touched ----
 expect 2 "--count" -- "$hsx" campaign --seed 1
+expect 2 "--seed" -- "$hsx" campaign --count 3 --seed -1
+expect 2 "--count" -- "$hsx" campaign --count -5
+expect 2 "--count: at most" -- "$hsx" campaign --count 100000001
+expect 2 "--start" -- "$hsx" campaign --count 2 --start 18446744073709551615
+expect 2 "--start" -- "$hsx" campaign --count 1 --start 18446744073709551616
 expect 2 "--halfspaces" -- "$hsx" campaign --count 3 --halfspaces 5..2
 expect 2 "--halfspaces" -- "$hsx" campaign --count 3 --halfspaces two
 expect 2 "--halfspaces" -- "$hsx" campaign --count 3 --halfspaces 0..3

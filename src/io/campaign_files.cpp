@@ -4,6 +4,7 @@
 #include <hsx/io/files.hpp>
 #include <hsx/io/scene_json.hpp>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -147,9 +148,26 @@ nlohmann::json summary_to_json(const Summary& s) {
     c["by_halfspaces"] = rows;
     checks.push_back(c);
   }
-  return {{"format", kCampaignSummaryFormat}, {"scenes", s.scenes},       {"checked", s.checked},
-          {"refused", s.refused},             {"errors", s.errors},       {"timed_out", s.timed_out},
-          {"failed_scenes", s.failed_scenes}, {"checks", checks}};
+  nlohmann::json out = {{"format", kCampaignSummaryFormat}, {"scenes", s.scenes},       {"checked", s.checked},
+                        {"refused", s.refused},             {"errors", s.errors},       {"timed_out", s.timed_out},
+                        {"failed_scenes", s.failed_scenes}, {"checks", checks}};
+  if (std::find(s.checks.begin(), s.checks.end(), "beam1") != s.checks.end()) {
+    const auto optimality = [](const StatusCounts& c) {
+      const campaign::RateInterval i = c.held_interval();
+      return nlohmann::json{{"optimal", c.held}, {"sub_optimal", c.failed}, {"rate", c.held_rate()},
+                            {"wilson95", {i.low, i.high}}};
+    };
+    nlohmann::json b = optimality(s.beam1_optimal);
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& [halfspaces, counts] : s.beam1_optimal_by_halfspaces) {
+      nlohmann::json row = optimality(counts);
+      row["halfspaces"] = halfspaces;
+      rows.push_back(row);
+    }
+    b["by_halfspaces"] = rows;
+    out["beam1_optimality"] = b;
+  }
+  return out;
 }
 
 std::string summary_table(const Summary& s) {
@@ -166,6 +184,18 @@ std::string summary_table(const Summary& s) {
     if (it != s.by_check_and_halfspaces.end())
       for (const auto& [halfspaces, counts] : it->second) out << counts_row(std::to_string(halfspaces), counts);
     out << counts_row("all", s.by_check.at(name));
+  }
+  if (std::find(s.checks.begin(), s.checks.end(), "beam1") != s.checks.end()) {
+    out << "\nbeam1 optimality: the K=1 beam's energy equals the optimum, on the scenes where beam1 held\n";
+    out << "  halfspaces  optimal  sub-optimal       rate  95% interval (Wilson)\n";
+    const auto row = [&](const std::string& label, const StatusCounts& c) {
+      const campaign::RateInterval i = c.held_interval();
+      out << "  " << std::setw(10) << label << std::setw(9) << c.held << std::setw(13) << c.failed << std::setw(11)
+          << (c.held + c.failed ? percent(c.held_rate()) : "-") << "  "
+          << (c.held + c.failed ? "[" + percent(i.low) + ", " + percent(i.high) + "]" : "-") << "\n";
+    };
+    for (const auto& [halfspaces, counts] : s.beam1_optimal_by_halfspaces) row(std::to_string(halfspaces), counts);
+    row("all", s.beam1_optimal);
   }
   return out.str();
 }

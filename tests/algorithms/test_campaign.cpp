@@ -363,3 +363,34 @@ TEST_CASE("campaign: a failing scene is kept as a scene file with a one-line not
   const std::string line = slurp(tmp / "c/results.jsonl");
   CHECK(record_from_json(nlohmann::json::parse(line)) == r);
 }
+
+TEST_CASE("campaign: beam K=1 optimality is tallied from beam1's witnesses", "[campaign]") {
+  const CampaignSettings s = small_settings();
+  Summary summary;
+  for (const SceneRecord& r : run_all(s, range(0, 30), 2)) summary.add(r);  // throws on a witness it cannot read
+  CHECK(summary.beam1_optimal.total() == summary.by_check.at("beam1").held);
+  long by_halfspaces = 0;
+  for (const auto& [h, c] : summary.beam1_optimal_by_halfspaces) by_halfspaces += c.total();
+  CHECK(by_halfspaces == summary.beam1_optimal.total());
+
+  SceneRecord r = run_scene(s, 0);
+  REQUIRE(r.checks[3].check == "beam1");
+  Summary one;
+  r.checks[3] = {"beam1", CheckStatus::Held, "sub-optimal: 4 missing / 0"};
+  one.add(r);
+  r.checks[3] = {"beam1", CheckStatus::Held, "optimal: 0 missing / 2"};
+  one.add(r);
+  r.checks[3] = {"beam1", CheckStatus::Stopped, "beam stopped by max-states"};
+  one.add(r);
+  CHECK(one.beam1_optimal.held == 1);
+  CHECK(one.beam1_optimal.failed == 1);
+  CHECK(one.by_check.at("beam1").stopped == 1);
+  r.checks[3] = {"beam1", CheckStatus::Held, "fine"};
+  CHECK_THROWS_AS(one.add(r), std::logic_error);
+  // Without beam1 there is no optimality table.
+  Summary without(parse_check_list("prop52"));
+  CHECK(summary_table(without).find("beam1 optimality") == std::string::npos);
+  CHECK_FALSE(summary_to_json(without).contains("beam1_optimality"));
+  CHECK(summary_table(one).find("beam1 optimality") != std::string::npos);
+  CHECK(summary_to_json(one)["beam1_optimality"]["sub_optimal"] == 1);
+}

@@ -55,6 +55,12 @@ held_table="$(awk '/^prop52:/ {p = 1} p && $1 == "all" {print $3; exit}' j1.txt)
 if [ "$held_lines" = "$held_summary" ] && [ "$held_lines" = "$held_table" ]; then ok; else
   bad "prop52 held: lines $held_lines, summary.json $held_summary, table $held_table"; fi
 has j1.txt "40 scenes: 40 checked" "the table's first line"
+has j1.txt "beam1 optimality: the K=1 beam's energy equals the optimum" "the beam1 optimality table"
+if jq -e '.beam1_optimality.optimal + .beam1_optimality.sub_optimal == (.checks[] | select(.check == "beam1") | .held)' \
+  j1/summary.json >/dev/null; then ok; else bad "beam1_optimality does not count the scenes where beam1 held"; fi
+optimal_lines="$(jq -r '.checks[] | select(.check == "beam1" and .status == "held") | .witness' j1/results.jsonl | grep -c '^optimal:')"
+if [ "$optimal_lines" = "$(jq .beam1_optimality.optimal j1/summary.json)" ]; then ok; else
+  bad "beam1_optimality.optimal is not the lines' optimal witnesses ($optimal_lines)"; fi
 has err "40 scenes run in" "the throughput line on stderr"
 
 # ---- shards and single scenes ----

@@ -53,11 +53,12 @@ campaign::SceneRecord record_from_json(const nlohmann::json& line);
 
 /// summary.json: {"format": "hsx-campaign-summary/1", "scenes", "checked", "refused", "errors", "timed_out",
 /// "failed_scenes", "checks": [{"check", "held", "failed", "skipped", "stopped", "held_rate", "wilson95": [low,
-/// high], "by_halfspaces": [{"halfspaces", the same counts, rate and interval}]}]}; rates are held / (held +
-/// failed), 0 with an interval [0, 1] when no scene decided.
+/// high], "by_halfspaces": [{"halfspaces", the same counts, rate and interval}]}], and when beam1 is tallied
+/// "beam1_optimality": {"optimal", "sub_optimal", "rate", "wilson95", "by_halfspaces": [...]}
+/// (Summary::beam1_optimal)}; rates are held / (held + failed), 0 with an interval [0, 1] when no scene decided.
 nlohmann::json summary_to_json(const campaign::Summary& summary);
 /// The summary as a text table per check (rows by number of halfspaces, then "all"), with a first line of scene
-/// counts. The same bytes for the same summary.
+/// counts, and beam1's optimality table when beam1 is tallied. The same bytes for the same summary.
 std::string summary_table(const campaign::Summary& summary);
 
 /// The one-line note of a kept scene: which checks failed (or the error), the first failure's witness (cut at

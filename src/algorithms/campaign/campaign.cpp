@@ -372,6 +372,15 @@ void Summary::add(const SceneRecord& record) {
     if (it == by_check.end()) throw std::logic_error("campaign summary: check \"" + c.check + "\" not tallied");
     it->second.add(c.status);
     by_check_and_halfspaces[c.check][record.halfspaces].add(c.status);
+    if (c.check == "beam1" && c.status == CheckStatus::Held) {
+      const bool optimal = starts_with(c.witness, "optimal:");
+      if (!optimal && !starts_with(c.witness, "sub-optimal:"))
+        throw std::logic_error("campaign summary: beam1's witness \"" + c.witness +
+                               "\" says neither optimal nor sub-optimal");
+      const CheckStatus s = optimal ? CheckStatus::Held : CheckStatus::Failed;
+      beam1_optimal.add(s);
+      beam1_optimal_by_halfspaces[record.halfspaces].add(s);
+    }
   }
 }
 

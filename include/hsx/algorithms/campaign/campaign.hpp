@@ -164,8 +164,16 @@ struct Summary {
   std::map<std::string, StatusCounts> by_check;
   std::map<std::string, std::map<int, StatusCounts>> by_check_and_halfspaces;
 
+  /// Beam K = 1's optimality on the scenes where beam1 held, by its witness (check_all's beam check writes
+  /// "optimal: E" when the beam's energy equals the optimum, "sub-optimal: E" when it is larger): `held` counts the
+  /// optimal scenes, `failed` the sub-optimal ones (a rate, not a failure of anything). Empty unless beam1 is
+  /// tallied.
+  StatusCounts beam1_optimal;
+  std::map<int, StatusCounts> beam1_optimal_by_halfspaces;
+
   explicit Summary(std::vector<std::string> checks = {});
-  /// Adds a record: its outcome, and each of its checks (a check not among `checks` is a logic_error).
+  /// Adds a record: its outcome, and each of its checks (a check not among `checks`, or a held beam1 whose witness
+  /// says neither optimal nor sub-optimal, is a logic_error).
   void add(const SceneRecord& record);
 };
 

@@ -205,8 +205,8 @@ void add_campaign_command(CLI::App& app) {
                   "are the whole range");
   cmd->add_option("--jobs", o->jobs, "threads (default 1); the output is the same bytes for any number");
   cmd->add_option("--checks", o->checks,
-                  "comma-separated check names, or all (default); see --list-checks. check_all runs every check; "
-                  "the ones named are recorded, counted, and make a scene a failure");
+                  "comma-separated check names, or all (default); see --list-checks. Only the named checks are "
+                  "computed (each as in a full run), recorded, counted, and able to fail a scene");
   cmd->add_flag("--list-checks", o->list_checks, "print the check names and what each checks, then exit");
   cmd->add_option("--out", o->out_dir,
                   "folder for campaign.json, results.jsonl (one line per scene), failures/ and summary.json: a new "

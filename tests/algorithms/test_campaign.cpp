@@ -125,13 +125,43 @@ TEST_CASE("campaign: a scene's record is check_all's results on random_scene, na
     CHECK_FALSE(r.failed());
     CHECK_FALSE(r.scene);  // kept only for failures
   }
-  // A selection keeps those checks only, in catalogue order, with the same outcomes.
+  // A selection computes and keeps those checks only, in catalogue order, with the outcomes of a full run.
   const SceneRecord all = run_scene(s, 1);
   s.checks = parse_check_list("manifold,existence");
   const SceneRecord some = run_scene(s, 1);
   REQUIRE(some.checks.size() == 2);
   CHECK(some.checks[0] == all.checks[0]);
   CHECK(some.checks[1] == all.checks[8]);
+}
+
+TEST_CASE("campaign: each check alone gives what it gives in a full run", "[campaign]") {
+  CampaignSettings s = small_settings();
+  s.scene.min_halfspaces = 4;
+  s.scene.max_halfspaces = 6;
+  for (std::uint64_t index = 0; index < 6; ++index) {
+    s.checks.clear();
+    const SceneRecord all = run_scene(s, index);
+    REQUIRE(all.checks.size() == check_catalogue().size());
+    for (std::size_t k = 0; k < check_catalogue().size(); ++k) {
+      s.checks = {check_catalogue()[k].name};
+      const SceneRecord one = run_scene(s, index);
+      REQUIRE(one.checks.size() == 1);
+      CHECK(one.checks[0] == all.checks[k]);
+    }
+  }
+  // bsh::check_all directly: a selection in another order still comes in check_all's order.
+  const Arranged2 a = arrange(random_scene(s.scene, s.seed, 2).scene);
+  const std::vector<bsh::CheckResult> full = bsh::check_all(a.complex, bsh::CheckOptions{});
+  bsh::CheckOptions options;
+  options.only = {bsh::Check::Manifold, bsh::Check::Prop51, bsh::Check::Certificates};
+  const std::vector<bsh::CheckResult> some = bsh::check_all(a.complex, options);
+  REQUIRE(some.size() == 3);
+  CHECK(some[0].name == full[2].name);
+  CHECK(some[0].witness == full[2].witness);
+  CHECK(some[1].witness == full[7].witness);
+  CHECK(some[2].name == full[8].name);
+  options.only = {bsh::Check::Existence};
+  REQUIRE(bsh::check_all(a.complex, options).size() == 1);
 }
 
 TEST_CASE("campaign: the records do not depend on the number of threads", "[campaign]") {

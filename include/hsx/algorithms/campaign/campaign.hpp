@@ -3,8 +3,9 @@
 // Scene k of a campaign with seed s is random_scene(settings.scene, s, k) (geometry/random_scene.hpp: the same on
 // every machine), arranged by arrange() (complex/from_arrangement2.hpp) within settings.limits, then checked by
 // bsh::check_all with the campaign's limits. The checks have stable short names (check_catalogue(), the order of
-// check_all's results); a campaign records the ones it was asked for, each as held / failed / skipped / stopped
-// with check_all's witness, never silently dropped. A scene the arrangement limits refuse is recorded as refused
+// check_all's results); a campaign computes and records the ones it was asked for (bsh::CheckOptions::only: each
+// gives the result it gives in a full run), each as held / failed / skipped / stopped with check_all's witness,
+// never silently dropped. A scene the arrangement limits refuse is recorded as refused
 // (every selected check skipped, with the reason); an exception from the library on a generated scene is a bug
 // and is recorded as an error (the message kept, every selected check skipped, the scene counted and kept as a
 // failure), so it is never lost.

@@ -130,6 +130,7 @@ int run_campaign(const CampaignCommandOptions& o) {
     throw InputError("--count: at most " + std::to_string(kMaxCount) + " scenes per run (run larger campaigns in parts "
                      "with --start)");
   if (o.jobs < 1) throw InputError("--jobs: at least 1");
+  if (o.out_dir == "-") throw InputError("--out: a folder, not - (standard output holds the table)");
   if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR (the campaign to continue)");
   campaign::CampaignSettings settings = o.settings;
   std::tie(settings.scene.min_halfspaces, settings.scene.max_halfspaces) = parse_range(o.halfspaces, "--halfspaces", 1);

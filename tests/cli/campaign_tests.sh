@@ -113,6 +113,10 @@ if [ "$(jq -r .outcome refused/results.jsonl | sort -u)" = refused ] &&
   [ "$(jq -r '.checks[].status' refused/results.jsonl | sort -u)" = skipped ]; then ok; else
   bad "--max-cells 1: scenes not recorded as refused with skipped checks"; fi
 has out "4 refused by the arrangement limits" "--max-cells 1: the table"
+# 1000 halfspaces: the generator's own arrangement (to choose samples) is refused; recorded, not an error.
+expect 0 "" -- "$hsx" campaign --count 1 --halfspaces 1000 --out huge
+if [ "$(jq -r .outcome huge/results.jsonl)" = refused ] && jq -r .note huge/results.jsonl | grep -q "^choosing its samples"; then
+  ok; else bad "1000 halfspaces: $(head -c 300 huge/results.jsonl)"; fi
 
 # ---- a failing scene is kept (scene 80 of seed 1 at 8 halfspaces: Prop. 5.1 fails at its non-generic junctions) ----
 expect 3 "" -- "$hsx" campaign --seed 1 --halfspaces 8 --start 79 --count 3 --out fails --jobs 2
@@ -153,6 +157,7 @@ expect 2 "--degeneracy-weights" -- "$hsx" campaign --count 3 --degeneracy-weight
 expect 2 "" -- "$hsx" campaign --count 3 --time-limit -1
 expect 2 "generator settings" -- "$hsx" campaign --count 3 --denominator 0
 expect 2 "" -- "$hsx" campaign --count 3 --out ""
+expect 2 "--out: a folder, not -" -- "$hsx" campaign --count 3 --out -
 mkdir theirs && echo "their notes" >theirs/notes.txt
 expect 2 "not empty and holds no campaign" -- "$hsx" campaign --count 3 --out theirs
 expect 2 "not empty and holds no campaign" -- "$hsx" campaign --count 3 --out theirs --resume

@@ -181,7 +181,10 @@ void validate(const CampaignSettings& s) {
   if (!(s.time_limit >= 0) || !std::isfinite(s.time_limit)) throw InputError("--time-limit: a finite number >= 0");
   if (s.limits.max_cells < 0 || s.limits.max_side_entries < 0) throw InputError("arrangement limits: must be >= 0");
   try {
-    (void)random_scene(s.scene, s.seed, 0);  // the generator's own validation of its settings
+    // The generator's own validation of its settings, without the arrangement that choosing samples builds.
+    RandomSceneSettings g = s.scene;
+    g.max_samples = std::min(g.max_samples, 0);
+    (void)random_scene(g, s.seed, 0);
   } catch (const std::invalid_argument& e) {
     throw InputError(std::string("generator settings: ") + e.what());
   }
@@ -197,6 +200,12 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index) {
   std::optional<RandomScene> generated;
   try {
     generated = random_scene(s.scene, s.seed, index);
+  } catch (const InputError& e) {  // choosing samples arranges the scene: the arrangement limits refused it
+    r.outcome = SceneOutcome::Refused;
+    r.note = std::string("choosing its samples (under the default arrangement limits, which the campaign's do not "
+                         "change): ") + e.what();
+    all_checks(r, checks, CheckStatus::Skipped, "not run: the scene was refused: " + r.note);
+    return r;
   } catch (const std::exception& e) {
     r.outcome = SceneOutcome::Error;
     r.note = std::string("the generator threw: ") + e.what();

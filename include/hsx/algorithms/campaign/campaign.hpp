@@ -69,7 +69,9 @@ struct CheckOutcome {
 /// What became of one scene.
 enum class SceneOutcome {
   Checked,  ///< arranged and checked (each check's own status says how it went)
-  Refused,  ///< the arrangement limits refused it (`note` says which); its checks are Skipped
+  /// the arrangement limits refused it (`note` says which; choosing samples arranges the scene once more, inside
+  /// random_scene, under the default ArrangementLimits); its checks are Skipped
+  Refused,
   Error     ///< the library threw on it (`note` has the message): a bug; its checks are Skipped, the scene failed()
 };
 /// "checked", "refused", "error".

@@ -77,5 +77,6 @@ void add_nhtree_command(CLI::App& app);
 void add_nhsurvey_command(CLI::App& app);
 void add_reference_command(CLI::App& app);
 void add_grade_command(CLI::App& app);
+void add_campaign_command(CLI::App& app);
 
 }  // namespace hsx::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   hsx::cli::add_nhtree_command(app);
   hsx::cli::add_nhsurvey_command(app);
   hsx::cli::add_reference_command(app);
+  hsx::cli::add_campaign_command(app);
   hsx::cli::add_bench_command(app);
   try {
     app.parse(argc, argv);

@@ -463,9 +463,15 @@ std::vector<CheckResult> check_all(const Complex& complex, long brute_force_limi
 
 std::vector<CheckResult> check_all(const Complex& complex, const CheckOptions& options) {
   const CheckBudget budget(options);
+  const auto want = [&](Check c) {
+    return options.only.empty() || std::find(options.only.begin(), options.only.end(), c) != options.only.end();
+  };
   std::vector<CheckResult> out;
   const Problem problem(complex);
-  out.push_back(check_existence(problem));
+  if (want(Check::Existence)) out.push_back(check_existence(problem));
+  const bool need_best = std::any_of(options.only.begin(), options.only.end(),
+                                     [](Check c) { return c != Check::Existence; }) || options.only.empty();
+  if (!need_best) return out;
 
   ExtractOptions best_options = budget.search(Method::BestFirst);
   best_options.record_states = true;
@@ -474,30 +480,41 @@ std::vector<CheckResult> check_all(const Complex& complex, const CheckOptions& o
 
   // The reference optimum for the checks below: the oracle's when it ran, else best-first's.
   Labelling reference = best.labelling;
-  out.push_back(check_prop52(problem, best, budget, reference));
-  out.push_back(check_prop51_on_states(problem, best, reference));
+  if (want(Check::Prop52) || want(Check::Prop51)) {
+    CheckResult prop52 = check_prop52(problem, best, budget, reference);
+    if (want(Check::Prop52)) out.push_back(std::move(prop52));
+  }
+  if (want(Check::Prop51)) out.push_back(check_prop51_on_states(problem, best, reference));
 
   std::optional<ExtractResult> beam;
-  if (budget.spent()) {
-    out.push_back(skipped_for_time("Beam K=1 (admissible, energy >= optimum)"));
-  } else {
-    beam = extract(problem, budget.search(Method::Beam));
-    out.push_back(check_beam(problem, *beam, best, options.compare));
+  if (want(Check::Beam) || want(Check::Prop41Beam) || want(Check::Certificates)) {
+    if (budget.spent()) {
+      if (want(Check::Beam)) out.push_back(skipped_for_time("Beam K=1 (admissible, energy >= optimum)"));
+    } else {
+      beam = extract(problem, budget.search(Method::Beam));
+      if (want(Check::Beam)) out.push_back(check_beam(problem, *beam, best, options.compare));
+    }
   }
 
   // Prop. 4.1 on the optimum and on the beam result (any orientation-preserving boundary will do).
   const std::string prop41 = "Prop. 4.1 (one sample per patch reproduces b)";
-  out.push_back(budget.spent() ? skipped_for_time(prop41)
-                               : check_prop41(complex, best.labelling, budget.search(Method::BestFirst)));
-  out.back().name += " on the optimum";
-  out.push_back(!beam || budget.spent() ? skipped_for_time(prop41)
-                                        : check_prop41(complex, beam->labelling, budget.search(Method::BestFirst)));
-  out.back().name += " on the beam result";
+  if (want(Check::Prop41Optimum)) {
+    out.push_back(budget.spent() ? skipped_for_time(prop41)
+                                 : check_prop41(complex, best.labelling, budget.search(Method::BestFirst)));
+    out.back().name += " on the optimum";
+  }
+  if (want(Check::Prop41Beam)) {
+    out.push_back(!beam || budget.spent() ? skipped_for_time(prop41)
+                                          : check_prop41(complex, beam->labelling, budget.search(Method::BestFirst)));
+    out.back().name += " on the beam result";
+  }
 
-  out.push_back(check_uniqueness(best));
-  out.push_back(check_certificates(complex, best, beam ? &*beam : nullptr));
-  out.push_back(check_manifold_parity(problem, best.labelling));
-  out.back().name += " on the optimum";
+  if (want(Check::Uniqueness)) out.push_back(check_uniqueness(best));
+  if (want(Check::Certificates)) out.push_back(check_certificates(complex, best, beam ? &*beam : nullptr));
+  if (want(Check::Manifold)) {
+    out.push_back(check_manifold_parity(problem, best.labelling));
+    out.back().name += " on the optimum";
+  }
   return out;
 }
 

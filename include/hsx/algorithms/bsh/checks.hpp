@@ -39,8 +39,27 @@ CheckResult check_manifold_parity(const Problem& problem, const Labelling& label
 /// The complex with its samples replaced by one sample on each patch of `labelling`'s boundary.
 Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling);
 
+/// The checks of check_all, in the order of its results.
+enum class Check {
+  Existence,      ///< Sec. 4.1
+  Prop52,         ///< Prop. 5.2 (best-first = brute force, or = exact)
+  Prop51,         ///< Prop. 5.1 on every expanded state
+  Beam,           ///< beam K=1 admissible, energy >= optimum
+  Prop41Optimum,  ///< Prop. 4.1 on the optimum
+  Prop41Beam,     ///< Prop. 4.1 on the beam result
+  Uniqueness,     ///< Sec. 4.2
+  Certificates,   ///< Eqs. 2-4
+  Manifold        ///< Sec. 3.1 on the optimum
+};
+inline constexpr int kCheckCount = 9;
+
 /// The limits of check_all, as extract's (ExtractOptions says which are deterministic).
 struct CheckOptions {
+  /// The checks to run (empty: all). check_all returns the selected ones only, in its order, and computes only
+  /// what they need; a selected check gives the result it gives in a full run (the best-first search, the oracle
+  /// and the beam search run whenever a selected check needs them: the oracle for Prop52 and Prop51, the beam for
+  /// Beam, Prop41Beam and Certificates), except that a time limit may run out at another point.
+  std::vector<Check> only;
   long brute_force_limit = 200000;  ///< labellings the oracle may enumerate (more: Prop. 5.2 skipped)
   CompareOptions compare;
   double time_limit = 0;   ///< seconds for all checks together (0: none); checks left when it runs out are skipped
@@ -55,6 +74,7 @@ struct CheckOptions {
 /// is small enough), Prop. 5.1 on every state best-first expanded, beam K=1 feasibility and energy >= optimum,
 /// Prop. 4.1 on the optimum and on the beam result, uniqueness or a reported tie (4.2), every graph cut
 /// certified, manifold parity. A check the limits cut short is Stopped, one they leave no room for Skipped.
+/// With options.only, the selected checks only (CheckOptions::only).
 std::vector<CheckResult> check_all(const Complex& complex, const CheckOptions& options);
 /// The same with only the oracle's limit and comparison options.
 std::vector<CheckResult> check_all(const Complex& complex, long brute_force_limit = 200000,

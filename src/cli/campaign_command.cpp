@@ -1,0 +1,262 @@
+// hsx campaign: the proposition checkers on many random 2D scenes (algorithms/campaign/campaign.hpp), with the
+// results as JSON lines in a folder that a killed run resumes (io/campaign_files.hpp). docs/campaigns.md.
+#include "cli/commands.hpp"
+#include <hsx/algorithms/campaign/campaign.hpp>
+#include <hsx/io/campaign_files.hpp>
+
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace hsx::cli {
+namespace {
+
+struct CampaignCommandOptions {
+  campaign::CampaignSettings settings;
+  std::uint64_t start = 0;
+  std::uint64_t count = 0;
+  bool count_given = false;
+  std::string shard = "0/1";
+  int jobs = 1;
+  std::string checks = "all";
+  bool list_checks = false;
+  std::string out_dir;
+  bool resume = false;
+  std::string halfspaces = "1..6";
+  std::string degeneracies = "0..2";
+  std::string kinds = "halfplane,disk,polygon";
+  std::string weights;
+};
+
+/// For --seed, --start, --count: a whole number 0 .. 2^64 - 1 written in digits (CLI11 alone would wrap "-1").
+CLI::Validator whole_number() {
+  return CLI::Validator(
+      [](std::string& s) {
+        if (s.empty() || s.size() > 20 || s.find_first_not_of("0123456789") != std::string::npos ||
+            (s.size() == 20 && s > "18446744073709551615"))
+          return std::string("must be a whole number 0 .. 18446744073709551615, not \"" + s + "\"");
+        return std::string();
+      },
+      "N");
+}
+
+/// The most scenes one run plans (its index list is held in memory): split larger campaigns with --start.
+constexpr std::uint64_t kMaxCount = 100'000'000;
+
+/// Exit status 3 when a check fails (as `hsx check`): a counterexample or a bug, never bad input.
+constexpr int kCheckFailed = 3;
+
+/// "A..B" or "A" (A = B), with lo <= A <= B.
+std::pair<int, int> parse_range(const std::string& text, const std::string& option, int lo) {
+  const auto number = [&](const std::string& s) {
+    std::size_t used = 0;
+    long v = 0;
+    try {
+      v = std::stol(s, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != s.size() || v < lo || v > 1000000)
+      throw InputError(option + ": \"" + text + "\" is not a range A..B of whole numbers >= " + std::to_string(lo));
+    return static_cast<int>(v);
+  };
+  const std::size_t dots = text.find("..");
+  const int a = number(dots == std::string::npos ? text : text.substr(0, dots));
+  const int b = dots == std::string::npos ? a : number(text.substr(dots + 2));
+  if (a > b) throw InputError(option + ": \"" + text + "\": the range's first number is larger than its last");
+  return {a, b};
+}
+
+void parse_shard(const std::string& text, CampaignPlan& plan) {
+  const std::size_t slash = text.find('/');
+  const auto number = [&](const std::string& s) {
+    if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 18)
+      throw InputError("--shard: \"" + text + "\" is not i/k (whole numbers, 0 <= i < k)");
+    return static_cast<std::uint64_t>(std::stoull(s));
+  };
+  if (slash == std::string::npos) throw InputError("--shard: \"" + text + "\" is not i/k (0 <= i < k)");
+  plan.shard = number(text.substr(0, slash));
+  plan.shards = number(text.substr(slash + 1));
+  if (plan.shards < 1 || plan.shard >= plan.shards)
+    throw InputError("--shard: \"" + text + "\": need 0 <= i < k");
+}
+
+void parse_kinds(const std::string& text, RandomSceneSettings& g) {
+  g.halfplanes = g.disks = g.polygons = false;
+  std::stringstream in(text);
+  std::string kind;
+  while (std::getline(in, kind, ',')) {
+    bool* flag = kind == "halfplane" ? &g.halfplanes : kind == "disk" ? &g.disks : kind == "polygon" ? &g.polygons : nullptr;
+    if (!flag) throw InputError("--kinds: halfplane, disk and/or polygon, comma-separated, got \"" + kind + "\"");
+    if (*flag) throw InputError("--kinds: \"" + kind + "\" is named twice");
+    *flag = true;
+  }
+  if (!g.halfplanes && !g.disks && !g.polygons) throw InputError("--kinds: name at least one kind");
+}
+
+/// NAME=W,...: the named patterns' weights; patterns not named keep weight 1.
+void parse_weights(const std::string& text, RandomSceneSettings& g) {
+  if (text.empty()) return;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const std::size_t eq = item.find('=');
+    const std::string name = item.substr(0, eq);
+    int k = 0;
+    while (k < kDegeneracyCount && name != to_string(static_cast<Degeneracy>(k))) ++k;
+    if (eq == std::string::npos || k == kDegeneracyCount) {
+      std::string known;
+      for (int d = 0; d < kDegeneracyCount; ++d) known += std::string(d ? ", " : "") + to_string(static_cast<Degeneracy>(d));
+      throw InputError("--degeneracy-weights: NAME=WEIGHT items, comma-separated, NAME one of " + known + "; got \"" +
+                       item + "\"");
+    }
+    const std::string w = item.substr(eq + 1);
+    if (w.empty() || w.size() > 6 || w.find_first_not_of("0123456789") != std::string::npos)
+      throw InputError("--degeneracy-weights: \"" + item + "\": the weight is a whole number 0..999999");
+    g.degeneracy_weight[static_cast<std::size_t>(k)] = std::stoi(w);
+  }
+}
+
+int run_campaign(const CampaignCommandOptions& o) {
+  if (o.list_checks) {
+    for (const campaign::CheckInfo& c : campaign::check_catalogue())
+      std::cout << std::left << std::setw(16) << c.name << c.description << "\n";
+    return 0;
+  }
+  if (!o.count_given) throw InputError("--count: how many scenes (give --count N; --list-checks lists the checks)");
+  if (o.count > kMaxCount)
+    throw InputError("--count: at most " + std::to_string(kMaxCount) + " scenes per run (run larger campaigns in parts "
+                     "with --start)");
+  if (o.jobs < 1) throw InputError("--jobs: at least 1");
+  if (o.out_dir == "-") throw InputError("--out: a folder, not - (standard output holds the table)");
+  if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR (the campaign to continue)");
+  campaign::CampaignSettings settings = o.settings;
+  std::tie(settings.scene.min_halfspaces, settings.scene.max_halfspaces) = parse_range(o.halfspaces, "--halfspaces", 1);
+  std::tie(settings.scene.min_degeneracies, settings.scene.max_degeneracies) =
+      parse_range(o.degeneracies, "--degeneracies", 0);
+  parse_kinds(o.kinds, settings.scene);
+  parse_weights(o.weights, settings.scene);
+  settings.checks = campaign::parse_check_list(o.checks);
+  campaign::validate(settings);
+  CampaignPlan plan;
+  plan.start = o.start;
+  plan.count = o.count;
+  parse_shard(o.shard, plan);
+  const std::vector<std::uint64_t> indices = plan.indices();
+
+  std::unique_ptr<CampaignFolder> folder;
+  if (!o.out_dir.empty())
+    folder = std::make_unique<CampaignFolder>(o.out_dir, campaign_to_json(settings, plan), o.resume, indices);
+  campaign::Summary summary(settings.checks);
+  const auto report = [&](const campaign::SceneRecord& r) {
+    if (r.failed()) std::cout << failure_note(r) << "\n";
+  };
+  std::size_t done = 0;
+  if (folder) {
+    for (const campaign::SceneRecord& r : folder->records()) {
+      summary.add(r);
+      report(r);
+    }
+    done = folder->records().size();
+    if (o.resume)
+      std::cerr << "hsx campaign: resumed " << o.out_dir << ": " << done << " of " << indices.size()
+                << " scenes were done" << (folder->cut_torn_line() ? " (a torn last line was cut off)" : "") << "\n";
+  }
+  const std::vector<std::uint64_t> todo(indices.begin() + static_cast<std::ptrdiff_t>(done), indices.end());
+  const auto begin = std::chrono::steady_clock::now();
+  campaign::run_scenes(settings, todo, o.jobs, [&](campaign::SceneRecord&& r) {
+    if (folder) folder->append(r);
+    summary.add(r);
+    report(r);
+  });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  if (folder) folder->write_summary(summary);
+  std::cout << summary_table(summary);
+  std::cerr << "hsx campaign: " << todo.size() << " scenes run in " << std::fixed << std::setprecision(2) << seconds
+            << " s (" << std::setprecision(1) << (seconds > 0 ? todo.size() / seconds : 0) << " scenes/s, " << o.jobs
+            << " job" << (o.jobs == 1 ? "" : "s") << ")\n";
+  return summary.failed_scenes > 0 ? kCheckFailed : 0;
+}
+
+}  // namespace
+
+void add_campaign_command(CLI::App& app) {
+  auto o = std::make_shared<CampaignCommandOptions>();
+  o->settings.scene.max_samples = 6;
+  CLI::App* cmd = app.add_subcommand(
+      "campaign",
+      "Run the proposition checkers on random 2D scenes (scene k of seed s is the same on every machine); results "
+      "as JSON lines in --out DIR, resumable; exit 3 when a check fails (docs/campaigns.md)");
+  cmd->add_option("--seed", o->settings.seed, "the campaign's seed: scene k is random_scene(settings, seed, k) "
+                                              "(default 1)")
+      ->check(whole_number());
+  cmd->add_option_function<std::uint64_t>(
+      "--count",
+      [o](const std::uint64_t& n) {
+        o->count = n;
+        o->count_given = true;
+      },
+      "how many scenes: indices --start .. --start + N - 1 (required; at most 10^8 per run)")
+      ->check(whole_number());
+  cmd->add_option("--start", o->start, "the first scene index (default 0)")->check(whole_number());
+  cmd->add_option("--shard", o->shard,
+                  "i/k: only the indices whose offset from --start is i mod k (default 0/1); the k shards together "
+                  "are the whole range");
+  cmd->add_option("--jobs", o->jobs, "threads (default 1); the output is the same bytes for any number");
+  cmd->add_option("--checks", o->checks,
+                  "comma-separated check names, or all (default); see --list-checks. Only the named checks are "
+                  "computed (each as in a full run), recorded, counted, and able to fail a scene");
+  cmd->add_flag("--list-checks", o->list_checks, "print the check names and what each checks, then exit");
+  cmd->add_option("--out", o->out_dir,
+                  "folder for campaign.json, results.jsonl (one line per scene), failures/ and summary.json: a new "
+                  "or empty folder, or with --resume one holding this campaign")
+      ->check(output_path());
+  cmd->add_flag("--resume", o->resume,
+                "continue the campaign in --out: skip the scenes recorded, cut a torn last line, run the rest");
+  cmd->add_option("--time-limit", o->settings.time_limit,
+                  "seconds per scene for arrangement and checks (0: none, default); a scene that reaches it is "
+                  "counted as timed out and its cut checks reported as stopped (or skipped when no time was left); "
+                  "which ones depends on the machine's speed and load")
+      ->check(seconds());
+  // The generator (geometry/random_scene.hpp's RandomSceneSettings).
+  cmd->add_option("--halfspaces", o->halfspaces, "number of halfspaces as A..B or N (default 1..6)");
+  cmd->add_option("--kinds", o->kinds, "halfspace kinds: halfplane, disk, polygon, comma-separated (default all)");
+  cmd->add_option("--complement-percent", o->settings.scene.complement_percent,
+                  "percent chance that a new halfspace is complemented (default 25)");
+  cmd->add_option("--denominator", o->settings.scene.denominator,
+                  "the coordinate grid is multiples of 1/D (default 2)");
+  cmd->add_option("--coordinate-bound", o->settings.scene.coordinate_bound,
+                  "grid coordinates lie in [-B, B] (default 3)");
+  cmd->add_option("--max-radius", o->settings.scene.max_radius, "disk radii in (0, R] (default 3)");
+  cmd->add_option("--degeneracies", o->degeneracies,
+                  "number of forced degeneracy patterns as A..B or N (default 0..2)");
+  cmd->add_option("--degeneracy-weights", o->weights,
+                  "NAME=W,...: relative weights of the patterns (default 1 each; 0: never), NAME as in "
+                  "geometry/random_scene.hpp (RepeatedHalfspace, ConcurrentLines, ...)");
+  cmd->add_option("--samples", o->settings.scene.max_samples,
+                  "up to N samples per scene, each on a patch (default 6; 0: none)");
+  cmd->add_option("--near-percent", o->settings.scene.near_percent,
+                  "percent chance that a sample is given as a `near` point snapped to its boundary (default 33)");
+  // The checks' limits (bsh::CheckOptions).
+  cmd->add_option("--max-labellings,--brute-force-limit", o->settings.brute_force_limit,
+                  "largest number of labellings the oracle may enumerate (default 200000)");
+  cmd->add_option("--max-states", o->settings.max_states,
+                  "per search: stop after expanding N states (0: no limit; deterministic)");
+  cmd->add_option("--max-graph-cuts", o->settings.max_graph_cuts,
+                  "per search: stop after N graph cuts (0: no limit; deterministic)");
+  cmd->add_option("--precision", o->settings.precision_bits,
+                  "precision cap in bits for certified comparisons (default 2048)");
+  cmd->add_option("--max-cells", o->settings.limits.max_cells,
+                  "refuse (record as refused) a scene whose arrangement has more cells (default " +
+                      std::to_string(o->settings.limits.max_cells) + "; 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--max-side-table", o->settings.limits.max_side_entries,
+                  "refuse a scene whose cells x halfspaces exceeds this (default " +
+                      std::to_string(o->settings.limits.max_side_entries) + "; 0: no limit)")
+      ->check(CLI::NonNegativeNumber);
+  run_with_status(cmd, o, &run_campaign);
+}
+
+}  // namespace hsx::cli

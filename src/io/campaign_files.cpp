@@ -1,0 +1,314 @@
+// A campaign's files: see campaign_files.hpp.
+#include <hsx/io/campaign_files.hpp>
+
+#include <hsx/io/files.hpp>
+#include <hsx/io/scene_json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace hsx {
+namespace fs = std::filesystem;
+using campaign::CheckStatus;
+using campaign::SceneOutcome;
+using campaign::SceneRecord;
+using campaign::StatusCounts;
+using campaign::Summary;
+
+std::vector<std::uint64_t> CampaignPlan::indices() const {
+  return campaign::shard_indices(start, count, shard, shards);
+}
+
+nlohmann::json campaign_to_json(const campaign::CampaignSettings& s, const CampaignPlan& plan) {
+  const RandomSceneSettings& g = s.scene;
+  nlohmann::json weights = nlohmann::json::object();
+  for (int k = 0; k < kDegeneracyCount; ++k)
+    weights[to_string(static_cast<Degeneracy>(k))] = g.degeneracy_weight[static_cast<std::size_t>(k)];
+  nlohmann::json checks = nlohmann::json::array();
+  for (const std::string& c : s.checks.empty() ? campaign::parse_check_list("all") : s.checks) checks.push_back(c);
+  return {{"format", kCampaignFormat},
+          {"seed", s.seed},
+          {"plan", {{"start", plan.start}, {"count", plan.count}, {"shard", plan.shard}, {"shards", plan.shards}}},
+          {"generator",
+           {{"min_halfspaces", g.min_halfspaces},
+            {"max_halfspaces", g.max_halfspaces},
+            {"halfplanes", g.halfplanes},
+            {"disks", g.disks},
+            {"polygons", g.polygons},
+            {"complement_percent", g.complement_percent},
+            {"denominator", g.denominator},
+            {"coordinate_bound", g.coordinate_bound},
+            {"max_radius", g.max_radius},
+            {"min_degeneracies", g.min_degeneracies},
+            {"max_degeneracies", g.max_degeneracies},
+            {"degeneracy_weights", weights},
+            {"max_samples", g.max_samples},
+            {"near_percent", g.near_percent}}},
+          {"checks", checks},
+          {"limits",
+           {{"max_cells", s.limits.max_cells},
+            {"max_side_entries", s.limits.max_side_entries},
+            {"brute_force_limit", s.brute_force_limit},
+            {"max_states", s.max_states},
+            {"max_graph_cuts", s.max_graph_cuts},
+            {"precision_bits", s.precision_bits},
+            {"time_limit", s.time_limit}}}};
+}
+
+nlohmann::ordered_json record_to_json(const SceneRecord& r) {
+  nlohmann::ordered_json checks = nlohmann::ordered_json::array();
+  for (const campaign::CheckOutcome& c : r.checks)
+    checks.push_back({{"check", c.check}, {"status", to_string(c.status)}, {"witness", c.witness}});
+  nlohmann::ordered_json j = {{"index", r.index},         {"seed", r.seed},       {"halfspaces", r.halfspaces},
+                              {"cells", r.cells},         {"patches", r.patches}, {"samples", r.samples},
+                              {"degeneracies", r.degeneracies}, {"outcome", to_string(r.outcome)}};
+  if (!r.note.empty()) j["note"] = r.note;
+  if (r.timed_out) j["timed_out"] = true;
+  j["checks"] = checks;
+  return j;
+}
+
+namespace {
+
+template <class T>
+T field(const nlohmann::json& j, const char* name) {
+  if (!j.is_object() || !j.contains(name)) throw InputError(std::string("missing field \"") + name + "\"");
+  try {
+    return j.at(name).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw InputError(std::string("field \"") + name + "\" has the wrong type");
+  }
+}
+
+std::string percent(double rate) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << 100 * rate << "%";
+  return s.str();
+}
+
+nlohmann::json counts_json(const StatusCounts& c) {
+  const campaign::RateInterval i = c.held_interval();
+  return {{"held", c.held},         {"failed", c.failed},          {"skipped", c.skipped},
+          {"stopped", c.stopped},   {"held_rate", c.held_rate()}, {"wilson95", {i.low, i.high}}};
+}
+
+std::string counts_row(const std::string& label, const StatusCounts& c) {
+  std::ostringstream s;
+  const campaign::RateInterval i = c.held_interval();
+  s << "  " << std::setw(10) << label << std::setw(9) << c.total() << std::setw(9) << c.held << std::setw(8)
+    << c.failed << std::setw(9) << c.skipped << std::setw(9) << c.stopped << std::setw(11)
+    << (c.held + c.failed ? percent(c.held_rate()) : "-") << "  "
+    << (c.held + c.failed ? "[" + percent(i.low) + ", " + percent(i.high) + "]" : "-") << "\n";
+  return s.str();
+}
+
+}  // namespace
+
+SceneRecord record_from_json(const nlohmann::json& j) {
+  SceneRecord r;
+  r.index = field<std::uint64_t>(j, "index");
+  r.seed = field<std::uint64_t>(j, "seed");
+  r.halfspaces = field<int>(j, "halfspaces");
+  r.cells = field<long>(j, "cells");
+  r.patches = field<long>(j, "patches");
+  r.samples = field<int>(j, "samples");
+  r.degeneracies = field<std::vector<std::string>>(j, "degeneracies");
+  const auto outcome = campaign::scene_outcome_from_string(field<std::string>(j, "outcome"));
+  if (!outcome) throw InputError("field \"outcome\": checked, refused or error");
+  r.outcome = *outcome;
+  if (j.contains("note")) r.note = field<std::string>(j, "note");
+  if (j.contains("timed_out")) r.timed_out = field<bool>(j, "timed_out");
+  const nlohmann::json checks = field<nlohmann::json>(j, "checks");
+  if (!checks.is_array()) throw InputError("field \"checks\" is not a list");
+  for (const nlohmann::json& c : checks) {
+    const auto status = campaign::check_status_from_string(field<std::string>(c, "status"));
+    if (!status) throw InputError("a check's \"status\": held, failed, skipped or stopped");
+    r.checks.push_back({field<std::string>(c, "check"), *status, field<std::string>(c, "witness")});
+  }
+  return r;
+}
+
+nlohmann::json summary_to_json(const Summary& s) {
+  nlohmann::json checks = nlohmann::json::array();
+  for (const std::string& name : s.checks) {
+    nlohmann::json c = counts_json(s.by_check.at(name));
+    c["check"] = name;
+    nlohmann::json rows = nlohmann::json::array();
+    const auto it = s.by_check_and_halfspaces.find(name);
+    if (it != s.by_check_and_halfspaces.end())
+      for (const auto& [halfspaces, counts] : it->second) {
+        nlohmann::json row = counts_json(counts);
+        row["halfspaces"] = halfspaces;
+        rows.push_back(row);
+      }
+    c["by_halfspaces"] = rows;
+    checks.push_back(c);
+  }
+  nlohmann::json out = {{"format", kCampaignSummaryFormat}, {"scenes", s.scenes},       {"checked", s.checked},
+                        {"refused", s.refused},             {"errors", s.errors},       {"timed_out", s.timed_out},
+                        {"failed_scenes", s.failed_scenes}, {"checks", checks}};
+  if (std::find(s.checks.begin(), s.checks.end(), "beam1") != s.checks.end()) {
+    const auto optimality = [](const StatusCounts& c) {
+      const campaign::RateInterval i = c.held_interval();
+      return nlohmann::json{{"optimal", c.held}, {"sub_optimal", c.failed}, {"rate", c.held_rate()},
+                            {"wilson95", {i.low, i.high}}};
+    };
+    nlohmann::json b = optimality(s.beam1_optimal);
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& [halfspaces, counts] : s.beam1_optimal_by_halfspaces) {
+      nlohmann::json row = optimality(counts);
+      row["halfspaces"] = halfspaces;
+      rows.push_back(row);
+    }
+    b["by_halfspaces"] = rows;
+    out["beam1_optimality"] = b;
+  }
+  return out;
+}
+
+std::string summary_table(const Summary& s) {
+  std::ostringstream out;
+  out << s.scenes << " scenes: " << s.checked << " checked, " << s.refused << " refused by the arrangement limits, "
+      << s.errors << " errors; " << s.timed_out << " timed out; " << s.failed_scenes << " with a failed check\n";
+  const auto& catalogue = campaign::check_catalogue();
+  for (const std::string& name : s.checks) {
+    const auto info = std::find_if(catalogue.begin(), catalogue.end(),
+                                   [&](const campaign::CheckInfo& c) { return name == c.name; });
+    out << "\n" << name << (info != catalogue.end() ? std::string(": ") + info->description : "") << "\n";
+    out << "  halfspaces   scenes     held  failed  skipped  stopped  held rate  95% interval (Wilson)\n";
+    const auto it = s.by_check_and_halfspaces.find(name);
+    if (it != s.by_check_and_halfspaces.end())
+      for (const auto& [halfspaces, counts] : it->second) out << counts_row(std::to_string(halfspaces), counts);
+    out << counts_row("all", s.by_check.at(name));
+  }
+  if (std::find(s.checks.begin(), s.checks.end(), "beam1") != s.checks.end()) {
+    out << "\nbeam1 optimality: the K=1 beam's energy equals the optimum, on the scenes where beam1 held\n";
+    out << "  halfspaces  optimal  sub-optimal       rate  95% interval (Wilson)\n";
+    const auto row = [&](const std::string& label, const StatusCounts& c) {
+      const campaign::RateInterval i = c.held_interval();
+      out << "  " << std::setw(10) << label << std::setw(9) << c.held << std::setw(13) << c.failed << std::setw(11)
+          << (c.held + c.failed ? percent(c.held_rate()) : "-") << "  "
+          << (c.held + c.failed ? "[" + percent(i.low) + ", " + percent(i.high) + "]" : "-") << "\n";
+    };
+    for (const auto& [halfspaces, counts] : s.beam1_optimal_by_halfspaces) row(std::to_string(halfspaces), counts);
+    row("all", s.beam1_optimal);
+  }
+  return out.str();
+}
+
+std::string failure_note(const SceneRecord& r) {
+  std::string what;
+  const campaign::CheckOutcome* first = nullptr;
+  for (const campaign::CheckOutcome& c : r.checks)
+    if (c.status == CheckStatus::Failed) {
+      what += (what.empty() ? "" : ", ") + c.check;
+      if (!first) first = &c;
+    }
+  std::string note = "hsx campaign --seed " + std::to_string(r.seed) + ", scene " + std::to_string(r.index) + ": ";
+  if (r.outcome == SceneOutcome::Error) note += "error: " + r.note;
+  else note += "failed " + what + ": " + (first ? first->witness : std::string());
+  if (note.size() > 400) note = note.substr(0, 397) + "...";
+  for (char& c : note)
+    if (c == '\n' || c == '\r') c = ' ';
+  return note + " (regenerate: hsx campaign --seed " + std::to_string(r.seed) + " --start " + std::to_string(r.index) +
+         " --count 1 with this campaign's generator options, campaign.json)";
+}
+
+CampaignFolder::CampaignFolder(const std::string& dir, const nlohmann::json& manifest, bool resume,
+                               const std::vector<std::uint64_t>& plan_indices)
+    : dir_(dir) {
+  if (dir.empty()) throw InputError("--out: an empty path");
+  std::error_code ec;
+  const fs::path path(dir);
+  const fs::path manifest_path = path / "campaign.json", results_path = path / "results.jsonl";
+  bool fresh = true;
+  if (fs::exists(path, ec)) {
+    if (!fs::is_directory(path, ec)) throw InputError("--out: " + dir + " exists and is not a folder");
+    if (fs::exists(manifest_path, ec)) {
+      if (!resume)
+        throw InputError("--out: " + dir + " holds a campaign already (campaign.json): add --resume to continue it, "
+                         "or give a new folder");
+      nlohmann::json existing;
+      try {
+        existing = nlohmann::json::parse(read_file(manifest_path.string()));
+      } catch (const nlohmann::json::exception& e) {
+        throw InputError(manifest_path.string() + ": not a campaign file: " + e.what());
+      }
+      if (existing != manifest)
+        throw InputError("--resume: " + manifest_path.string() +
+                         " was written for other settings (seed, plan, generator, checks or limits); resume with "
+                         "the same options, or give a new folder");
+      fresh = false;
+    } else if (!fs::is_empty(path, ec)) {
+      throw InputError("--out: " + dir + " is not empty and holds no campaign (campaign.json); hsx writes only to a "
+                       "new or empty folder");
+    }
+  } else {
+    const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    if (!fs::is_directory(parent, ec))
+      throw InputError("--out: the folder " + parent.string() + " (where " + dir + " would be made) does not exist");
+    if (!fs::create_directory(path, ec) && ec)
+      throw OutputError("--out: cannot make the folder " + dir + ": " + ec.message());
+  }
+  if (fresh) {
+    write_file_atomically(manifest_path.string(), manifest.dump(2) + "\n");
+  } else if (fs::exists(results_path, ec)) {
+    const std::string text = read_file(results_path.string(), std::size_t(64) << 30);
+    const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+    std::size_t at = 0;
+    long line_number = 0;
+    while (at < complete) {
+      const std::size_t end = text.find('\n', at);
+      ++line_number;
+      const std::string where = results_path.string() + ": line " + std::to_string(line_number) + ": ";
+      SceneRecord r;
+      try {
+        r = record_from_json(nlohmann::json::parse(text.substr(at, end - at)));
+      } catch (const nlohmann::json::exception& e) {
+        throw InputError(where + "not a JSON record (" + e.what() + "); only the last line may be torn");
+      } catch (const InputError& e) {
+        throw InputError(where + e.what());
+      }
+      const std::size_t k = records_.size();
+      if (k >= plan_indices.size() || r.index != plan_indices[k])
+        throw InputError(where + "scene " + std::to_string(r.index) + " is not the plan's scene number " +
+                         std::to_string(k + 1) + " (the file is not this campaign's)");
+      records_.push_back(std::move(r));
+      at = end + 1;
+    }
+    if (complete < text.size()) {
+      fs::resize_file(results_path, complete, ec);
+      if (ec) throw OutputError(results_path.string() + ": cannot cut its torn last line: " + ec.message());
+      cut_torn_line_ = true;
+    }
+  }
+  results_.open(results_path, std::ios::out | std::ios::app | std::ios::binary);
+  if (!results_) throw OutputError(results_path.string() + ": cannot open it for writing: " + std::strerror(errno));
+}
+
+void CampaignFolder::append(const SceneRecord& record) {
+  if (record.failed()) {
+    if (!record.scene) throw std::logic_error("CampaignFolder::append: a failed record without its scene");
+    std::error_code ec;
+    const fs::path failures = fs::path(dir_) / "failures";
+    if (!fs::is_directory(failures, ec) && !fs::create_directory(failures, ec) && ec)
+      throw OutputError(failures.string() + ": cannot make the folder: " + ec.message());
+    Scene2 scene = *record.scene;
+    scene.description = failure_note(record);
+    write_file_atomically((failures / ("scene-" + std::to_string(record.index) + ".json")).string(),
+                          write_scene2(scene).dump(2) + "\n");
+  }
+  results_ << record_to_json(record).dump() << '\n';
+  results_.flush();
+  if (!results_) throw OutputError(dir_ + "/results.jsonl: cannot write to it (a full disk?)");
+}
+
+void CampaignFolder::write_summary(const Summary& summary) {
+  write_file_atomically((fs::path(dir_) / "summary.json").string(), summary_to_json(summary).dump(2) + "\n");
+}
+
+}  // namespace hsx

@@ -1,0 +1,426 @@
+// Tests of campaigns (algorithms/campaign/campaign.hpp, io/campaign_files.hpp): the records are check_all's
+// results under stable names; the same records for any number of threads; shards partition a range; a campaign
+// resumed after a torn last line writes the same bytes as one never interrupted; the folder policy; Wilson
+// intervals against known values; failing scenes kept as loadable scene files.
+#include <hsx/algorithms/bsh/checks.hpp>
+#include <hsx/algorithms/campaign/campaign.hpp>
+#include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/io/campaign_files.hpp>
+#include <hsx/io/files.hpp>
+#include <hsx/io/scene_json.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+using namespace hsx;
+using namespace hsx::campaign;
+
+namespace {
+
+struct TempDir {
+  std::string path;
+  TempDir() {
+    char name[] = "/tmp/hsx-campaign-XXXXXX";
+    path = ::mkdtemp(name);
+  }
+  ~TempDir() { std::filesystem::remove_all(path); }
+  std::string operator/(const std::string& name) const { return path + "/" + name; }
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// Small scenes with samples: a few milliseconds each.
+CampaignSettings small_settings() {
+  CampaignSettings s;
+  s.seed = 7;
+  s.scene.min_halfspaces = 2;
+  s.scene.max_halfspaces = 5;
+  s.scene.max_samples = 6;
+  return s;
+}
+
+std::vector<SceneRecord> run_all(const CampaignSettings& s, const std::vector<std::uint64_t>& indices, int jobs) {
+  std::vector<SceneRecord> out;
+  run_scenes(s, indices, jobs, [&](SceneRecord&& r) { out.push_back(std::move(r)); });
+  return out;
+}
+
+std::vector<std::uint64_t> range(std::uint64_t start, std::uint64_t count) {
+  return shard_indices(start, count, 0, 1);
+}
+
+/// Runs `indices` of `s` into the folder `dir` (new, or resumed), returns the folder's records afterwards.
+void run_into(const std::string& dir, const CampaignSettings& s, const CampaignPlan& plan, bool resume,
+              std::size_t stop_after = std::size_t(-1)) {
+  const std::vector<std::uint64_t> indices = plan.indices();
+  CampaignFolder folder(dir, campaign_to_json(s, plan), resume, indices);
+  Summary summary(s.checks);
+  for (const SceneRecord& r : folder.records()) summary.add(r);
+  const std::size_t done = folder.records().size();
+  const std::size_t end = std::min(indices.size(), stop_after);
+  const std::vector<std::uint64_t> todo(indices.begin() + static_cast<std::ptrdiff_t>(std::min(done, end)),
+                                        indices.begin() + static_cast<std::ptrdiff_t>(end));
+  run_scenes(s, todo, 2, [&](SceneRecord&& r) {
+    folder.append(r);
+    summary.add(r);
+  });
+  if (end == indices.size()) folder.write_summary(summary);
+}
+
+}  // namespace
+
+TEST_CASE("campaign: the catalogue's names, and --checks lists", "[campaign]") {
+  std::vector<std::string> names;
+  for (const CheckInfo& c : check_catalogue()) names.push_back(c.name);
+  CHECK(names == std::vector<std::string>{"existence", "prop52", "prop51", "beam1", "prop41-optimum", "prop41-beam",
+                                          "uniqueness", "certificates", "manifold"});
+  CHECK(parse_check_list("all") == names);
+  CHECK(parse_check_list("") == names);
+  CHECK(parse_check_list("manifold,prop52") == std::vector<std::string>{"prop52", "manifold"});
+  CHECK_THROWS_AS(parse_check_list("prop52,prop99"), InputError);
+  CHECK_THROWS_AS(parse_check_list("prop52,prop52"), InputError);
+  CHECK_THROWS_AS(parse_check_list("prop52,"), InputError);
+  CHECK_THROWS_AS(parse_check_list(",prop52"), InputError);
+  for (CheckStatus s : {CheckStatus::Held, CheckStatus::Failed, CheckStatus::Skipped, CheckStatus::Stopped})
+    CHECK(check_status_from_string(to_string(s)) == s);
+  CHECK_FALSE(check_status_from_string("pass"));
+}
+
+TEST_CASE("campaign: a scene's record is check_all's results on random_scene, named", "[campaign]") {
+  CampaignSettings s = small_settings();
+  for (std::uint64_t index : {0u, 1u, 2u, 3u}) {
+    const SceneRecord r = run_scene(s, index);
+    const RandomScene g = random_scene(s.scene, s.seed, index);
+    const Arranged2 a = arrange(g.scene);
+    const std::vector<bsh::CheckResult> expected = bsh::check_all(a.complex);
+    REQUIRE(r.outcome == SceneOutcome::Checked);
+    CHECK(r.index == index);
+    CHECK(r.seed == s.seed);
+    CHECK(r.halfspaces == static_cast<int>(g.scene.halfspaces.size()));
+    CHECK(r.samples == static_cast<int>(g.scene.samples.size()));
+    CHECK(r.cells == static_cast<long>(a.complex.cells.size()));
+    CHECK(r.patches == static_cast<long>(a.complex.patches.size()));
+    CHECK(r.degeneracies.size() == g.degeneracies.size());
+    REQUIRE(r.checks.size() == expected.size());
+    for (std::size_t k = 0; k < expected.size(); ++k) {
+      CHECK(r.checks[k].check == check_catalogue()[k].name);
+      CHECK(r.checks[k].witness == expected[k].witness);
+      CHECK(std::string(to_string(r.checks[k].status)) ==
+            (expected[k].status == bsh::CheckResult::Pass ? "held" : expected[k].status == bsh::CheckResult::Fail
+                                                                          ? "failed"
+                                                                          : expected[k].status == bsh::CheckResult::Skipped
+                                                                                ? "skipped"
+                                                                                : "stopped"));
+    }
+    CHECK_FALSE(r.failed());
+    CHECK_FALSE(r.scene);  // kept only for failures
+  }
+  // A selection computes and keeps those checks only, in catalogue order, with the outcomes of a full run.
+  const SceneRecord all = run_scene(s, 1);
+  s.checks = parse_check_list("manifold,existence");
+  const SceneRecord some = run_scene(s, 1);
+  REQUIRE(some.checks.size() == 2);
+  CHECK(some.checks[0] == all.checks[0]);
+  CHECK(some.checks[1] == all.checks[8]);
+}
+
+TEST_CASE("campaign: each check alone gives what it gives in a full run", "[campaign]") {
+  CampaignSettings s = small_settings();
+  s.scene.min_halfspaces = 4;
+  s.scene.max_halfspaces = 6;
+  for (std::uint64_t index = 0; index < 6; ++index) {
+    s.checks.clear();
+    const SceneRecord all = run_scene(s, index);
+    REQUIRE(all.checks.size() == check_catalogue().size());
+    for (std::size_t k = 0; k < check_catalogue().size(); ++k) {
+      s.checks = {check_catalogue()[k].name};
+      const SceneRecord one = run_scene(s, index);
+      REQUIRE(one.checks.size() == 1);
+      CHECK(one.checks[0] == all.checks[k]);
+    }
+  }
+  // bsh::check_all directly: a selection in another order still comes in check_all's order.
+  const Arranged2 a = arrange(random_scene(s.scene, s.seed, 2).scene);
+  const std::vector<bsh::CheckResult> full = bsh::check_all(a.complex, bsh::CheckOptions{});
+  bsh::CheckOptions options;
+  options.only = {bsh::Check::Manifold, bsh::Check::Prop51, bsh::Check::Certificates};
+  const std::vector<bsh::CheckResult> some = bsh::check_all(a.complex, options);
+  REQUIRE(some.size() == 3);
+  CHECK(some[0].name == full[2].name);
+  CHECK(some[0].witness == full[2].witness);
+  CHECK(some[1].witness == full[7].witness);
+  CHECK(some[2].name == full[8].name);
+  options.only = {bsh::Check::Existence};
+  REQUIRE(bsh::check_all(a.complex, options).size() == 1);
+}
+
+TEST_CASE("campaign: the records do not depend on the number of threads", "[campaign]") {
+  const CampaignSettings s = small_settings();
+  const std::vector<std::uint64_t> indices = range(10, 40);
+  const std::vector<SceneRecord> one = run_all(s, indices, 1);
+  REQUIRE(one.size() == indices.size());
+  for (std::size_t k = 0; k < one.size(); ++k) CHECK(one[k].index == indices[k]);
+  CHECK(run_all(s, indices, 2) == one);
+  CHECK(run_all(s, indices, 3) == one);
+  // An exception from the sink stops the run and reaches the caller.
+  int seen = 0;
+  CHECK_THROWS_AS(run_scenes(s, indices, 2,
+                             [&](SceneRecord&&) {
+                               if (++seen == 5) throw std::runtime_error("sink full");
+                             }),
+                  std::runtime_error);
+  CHECK(seen == 5);
+  CHECK_THROWS_AS(run_all(s, indices, 0), InputError);
+}
+
+TEST_CASE("campaign: shards partition the range, and their records are the whole campaign's", "[campaign]") {
+  CHECK(shard_indices(5, 7, 0, 3) == std::vector<std::uint64_t>{5, 8, 11});
+  CHECK(shard_indices(5, 7, 1, 3) == std::vector<std::uint64_t>{6, 9});
+  CHECK(shard_indices(5, 7, 2, 3) == std::vector<std::uint64_t>{7, 10});
+  CHECK(shard_indices(0, 2, 4, 5).empty());
+  CHECK(shard_indices(~std::uint64_t(0) - 2, 3, 0, 2) ==
+        std::vector<std::uint64_t>{~std::uint64_t(0) - 2, ~std::uint64_t(0)});
+  CHECK_THROWS_AS(shard_indices(0, 10, 3, 3), InputError);
+  CHECK_THROWS_AS(shard_indices(0, 10, 0, 0), InputError);
+  CHECK_THROWS_AS(shard_indices(~std::uint64_t(0), 2, 0, 1), InputError);
+
+  const CampaignSettings s = small_settings();
+  const std::vector<SceneRecord> whole = run_all(s, range(0, 24), 2);
+  std::vector<SceneRecord> merged(whole.size());
+  std::set<std::uint64_t> seen;
+  for (std::uint64_t shard = 0; shard < 4; ++shard)
+    for (SceneRecord& r : run_all(s, shard_indices(0, 24, shard, 4), 1)) {
+      CHECK(seen.insert(r.index).second);
+      merged[r.index] = std::move(r);
+    }
+  CHECK(seen.size() == whole.size());
+  CHECK(merged == whole);
+}
+
+TEST_CASE("campaign: a refused scene and a spent time limit are recorded, not dropped", "[campaign]") {
+  CampaignSettings s = small_settings();
+  s.limits.max_cells = 1;
+  const SceneRecord refused = run_scene(s, 3);
+  CHECK(refused.outcome == SceneOutcome::Refused);
+  CHECK_FALSE(refused.note.empty());
+  REQUIRE(refused.checks.size() == check_catalogue().size());
+  for (const CheckOutcome& c : refused.checks) {
+    CHECK(c.status == CheckStatus::Skipped);
+    CHECK(c.witness.find("refused") != std::string::npos);
+  }
+  CHECK_FALSE(refused.failed());
+
+  s = small_settings();
+  s.time_limit = 1e-9;
+  const SceneRecord late = run_scene(s, 3);
+  CHECK(late.outcome == SceneOutcome::Checked);
+  CHECK(late.timed_out);
+  long cut = 0;
+  for (const CheckOutcome& c : late.checks) {
+    CHECK(c.status != CheckStatus::Failed);
+    cut += c.status == CheckStatus::Stopped || c.status == CheckStatus::Skipped;
+  }
+  CHECK(cut >= 5);
+  Summary summary;
+  summary.add(late);
+  summary.add(refused);
+  CHECK(summary.scenes == 2);
+  CHECK(summary.timed_out == 1);
+  CHECK(summary.refused == 1);
+  CHECK(summary.by_check.at("prop41-optimum").total() == 2);
+}
+
+TEST_CASE("campaign: Wilson intervals", "[campaign]") {
+  const auto near = [](double a, double b) { return std::abs(a - b) < 5e-5; };
+  RateInterval i = wilson95(0, 10);
+  CHECK(i.low == 0);
+  CHECK(near(i.high, 0.27753));
+  i = wilson95(10, 10);
+  CHECK(near(i.low, 0.72247));
+  CHECK(i.high == 1);
+  i = wilson95(5, 10);
+  CHECK(near(i.low, 0.23659));
+  CHECK(near(i.high, 0.76341));
+  i = wilson95(81, 263);  // Wilson's textbook case (Newcombe 1998, method 3: 0.2553 to 0.3662)
+  CHECK(near(i.low, 0.25527));
+  CHECK(near(i.high, 0.36619));
+  i = wilson95(0, 0);
+  CHECK((i.low == 0 && i.high == 1));
+  StatusCounts c;
+  c.add(CheckStatus::Held);
+  c.add(CheckStatus::Failed);
+  c.add(CheckStatus::Skipped);
+  c.add(CheckStatus::Stopped);
+  CHECK(c.total() == 4);
+  CHECK(c.held_rate() == 0.5);
+}
+
+TEST_CASE("campaign: records round-trip through their JSON lines", "[campaign]") {
+  CampaignSettings s = small_settings();
+  s.time_limit = 1e-9;
+  for (const SceneRecord& r : {run_scene(small_settings(), 2), run_scene(s, 2)}) {
+    const SceneRecord back = record_from_json(nlohmann::json::parse(record_to_json(r).dump()));
+    CHECK(back == r);
+  }
+  CHECK_THROWS_AS(record_from_json(nlohmann::json::parse(R"({"index": 1})")), InputError);
+  nlohmann::json j = nlohmann::json::parse(record_to_json(run_scene(small_settings(), 2)).dump());
+  j["checks"][0]["status"] = "pass";
+  CHECK_THROWS_AS(record_from_json(j), InputError);
+  CHECK(record_to_json(run_scene(small_settings(), 2)).dump().rfind("{\"index\":2,\"seed\":7,", 0) == 0);
+}
+
+TEST_CASE("campaign: a resumed campaign writes the bytes of an uninterrupted one", "[campaign]") {
+  const CampaignSettings s = small_settings();
+  CampaignPlan plan;
+  plan.start = 3;
+  plan.count = 20;
+  TempDir tmp;
+  run_into(tmp / "whole", s, plan, false);
+  const std::string whole = slurp(tmp / "whole/results.jsonl");
+  const std::string summary = slurp(tmp / "whole/summary.json");
+  REQUIRE(std::count(whole.begin(), whole.end(), '\n') == 20);
+
+  SECTION("killed after 7 scenes, in the middle of the 8th line") {
+    run_into(tmp / "part", s, plan, false, 7);
+    const std::string part = slurp(tmp / "part/results.jsonl");
+    REQUIRE(whole.compare(0, part.size(), part) == 0);
+    const std::size_t next_end = whole.find('\n', part.size());
+    std::ofstream(tmp / "part/results.jsonl", std::ios::app) << whole.substr(part.size(), (next_end - part.size()) / 2);
+    {
+      CampaignFolder folder(tmp / "part", campaign_to_json(s, plan), true, plan.indices());
+      CHECK(folder.records().size() == 7);
+      CHECK(folder.cut_torn_line());
+    }
+    CHECK(slurp(tmp / "part/results.jsonl") == part);  // the torn line is gone
+    run_into(tmp / "part", s, plan, true);
+    CHECK(slurp(tmp / "part/results.jsonl") == whole);
+    CHECK(slurp(tmp / "part/summary.json") == summary);
+    CHECK(slurp(tmp / "part/campaign.json") == slurp(tmp / "whole/campaign.json"));
+  }
+  SECTION("killed before its first line; resumed twice") {
+    run_into(tmp / "part", s, plan, false, 0);
+    run_into(tmp / "part", s, plan, true, 11);
+    run_into(tmp / "part", s, plan, true);
+    run_into(tmp / "part", s, plan, true);  // nothing left to run
+    CHECK(slurp(tmp / "part/results.jsonl") == whole);
+    CHECK(slurp(tmp / "part/summary.json") == summary);
+  }
+  SECTION("--resume of a folder that does not exist starts it") {
+    run_into(tmp / "new", s, plan, true);
+    CHECK(slurp(tmp / "new/results.jsonl") == whole);
+  }
+}
+
+TEST_CASE("campaign: the folder policy", "[campaign]") {
+  const CampaignSettings s = small_settings();
+  CampaignPlan plan;
+  plan.count = 4;
+  const nlohmann::json manifest = campaign_to_json(s, plan);
+  TempDir tmp;
+  // Not empty, not a campaign: refused, and nothing in it touched.
+  std::filesystem::create_directory(tmp / "theirs");
+  std::ofstream(tmp / "theirs/results.jsonl") << "their data\n";
+  CHECK_THROWS_AS(CampaignFolder(tmp / "theirs", manifest, false, plan.indices()), InputError);
+  CHECK_THROWS_AS(CampaignFolder(tmp / "theirs", manifest, true, plan.indices()), InputError);
+  CHECK(slurp(tmp / "theirs/results.jsonl") == "their data\n");
+  CHECK_FALSE(std::filesystem::exists(tmp / "theirs/campaign.json"));
+  // A file, a missing parent.
+  std::ofstream(tmp / "file") << "x";
+  CHECK_THROWS_AS(CampaignFolder(tmp / "file", manifest, false, plan.indices()), InputError);
+  CHECK_THROWS_AS(CampaignFolder(tmp / "no/such/folder", manifest, false, plan.indices()), InputError);
+  CHECK_FALSE(std::filesystem::exists(tmp / "no"));
+  // An empty folder is taken.
+  std::filesystem::create_directory(tmp / "empty");
+  { CampaignFolder folder(tmp / "empty", manifest, false, plan.indices()); }
+  CHECK(std::filesystem::exists(tmp / "empty/campaign.json"));
+  // A campaign: only resumed, and only with its own settings.
+  run_into(tmp / "ours", s, plan, false);
+  CHECK_THROWS_AS(CampaignFolder(tmp / "ours", manifest, false, plan.indices()), InputError);
+  CampaignSettings other = s;
+  other.seed = 8;
+  CHECK_THROWS_AS(CampaignFolder(tmp / "ours", campaign_to_json(other, plan), true, plan.indices()), InputError);
+  CampaignPlan other_plan = plan;
+  other_plan.shard = 1;
+  other_plan.shards = 2;
+  CHECK_THROWS_AS(CampaignFolder(tmp / "ours", campaign_to_json(s, other_plan), true, other_plan.indices()),
+                  InputError);
+  // A damaged line that is not the last is refused, not skipped.
+  const std::string text = slurp(tmp / "ours/results.jsonl");
+  std::ofstream(tmp / "ours/results.jsonl", std::ios::trunc) << "{not json\n" << text.substr(text.find('\n') + 1);
+  CHECK_THROWS_WITH(CampaignFolder(tmp / "ours", manifest, true, plan.indices()),
+                    Catch::Contains("line 1") && Catch::Contains("not a JSON record"));
+  // Lines of other scenes than the plan's are refused.
+  std::ofstream(tmp / "ours/results.jsonl", std::ios::trunc) << text.substr(text.find('\n') + 1);
+  CHECK_THROWS_WITH(CampaignFolder(tmp / "ours", manifest, true, plan.indices()),
+                    Catch::Contains("not the plan's scene number 1"));
+}
+
+TEST_CASE("campaign: a failing scene is kept as a scene file with a one-line note", "[campaign]") {
+  const CampaignSettings s = small_settings();
+  CampaignPlan plan;
+  plan.count = 1;
+  // A record whose prop51 failed (a made-up failure: the random scenes hold every check), with its scene.
+  SceneRecord r = run_scene(s, 0);
+  r.checks[2].status = CheckStatus::Failed;
+  r.checks[2].witness = "state {0}: the island\nis not removable";
+  REQUIRE(r.failed());
+  r.scene = random_scene(s.scene, s.seed, 0).scene;
+  TempDir tmp;
+  {
+    CampaignFolder folder(tmp / "c", campaign_to_json(s, plan), false, plan.indices());
+    folder.append(r);
+    SceneRecord bare = r;
+    bare.scene.reset();
+    CHECK_THROWS_AS(folder.append(bare), std::logic_error);
+  }
+  const Scene2 kept = read_scene_file(tmp / "c/failures/scene-0.json");
+  CHECK(kept.halfspaces.size() == r.scene->halfspaces.size());
+  CHECK(kept.samples.size() == r.scene->samples.size());
+  CHECK(kept.description.rfind("hsx campaign --seed 7, scene 0: failed prop51: state {0}: the island is not", 0) == 0);
+  CHECK(kept.description.find('\n') == std::string::npos);
+  // The kept scene's arrangement is the campaign's.
+  CHECK(static_cast<long>(arrange(kept).complex.cells.size()) == r.cells);
+  const std::string line = slurp(tmp / "c/results.jsonl");
+  CHECK(record_from_json(nlohmann::json::parse(line)) == r);
+}
+
+TEST_CASE("campaign: beam K=1 optimality is tallied from beam1's witnesses", "[campaign]") {
+  const CampaignSettings s = small_settings();
+  Summary summary;
+  for (const SceneRecord& r : run_all(s, range(0, 30), 2)) summary.add(r);  // throws on a witness it cannot read
+  CHECK(summary.beam1_optimal.total() == summary.by_check.at("beam1").held);
+  long by_halfspaces = 0;
+  for (const auto& [h, c] : summary.beam1_optimal_by_halfspaces) by_halfspaces += c.total();
+  CHECK(by_halfspaces == summary.beam1_optimal.total());
+
+  SceneRecord r = run_scene(s, 0);
+  REQUIRE(r.checks[3].check == "beam1");
+  Summary one;
+  r.checks[3] = {"beam1", CheckStatus::Held, "sub-optimal: 4 missing / 0"};
+  one.add(r);
+  r.checks[3] = {"beam1", CheckStatus::Held, "optimal: 0 missing / 2"};
+  one.add(r);
+  r.checks[3] = {"beam1", CheckStatus::Stopped, "beam stopped by max-states"};
+  one.add(r);
+  CHECK(one.beam1_optimal.held == 1);
+  CHECK(one.beam1_optimal.failed == 1);
+  CHECK(one.by_check.at("beam1").stopped == 1);
+  r.checks[3] = {"beam1", CheckStatus::Held, "fine"};
+  CHECK_THROWS_AS(one.add(r), std::logic_error);
+  // Without beam1 there is no optimality table.
+  Summary without(parse_check_list("prop52"));
+  CHECK(summary_table(without).find("beam1 optimality") == std::string::npos);
+  CHECK_FALSE(summary_to_json(without).contains("beam1_optimality"));
+  CHECK(summary_table(one).find("beam1 optimality") != std::string::npos);
+  CHECK(summary_to_json(one)["beam1_optimality"]["sub_optimal"] == 1);
+}

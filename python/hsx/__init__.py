@@ -27,6 +27,7 @@ from . import _hsx
 from ._hsx import (CancelToken, Cell, CheckResult, Complex, Conversion, CsgTree, Describability, Energy, Grade,
                    InputError, Junction, Measure, NhTree, Order, Patch, Result, SampleSite, Samples, Ties, Undecided,
                    compare)
+from ._campaign import Campaign, CampaignRecord, campaign, campaign_checks
 from ._scene import (Box, Cone, Cylinder, Disk, HalfPlane, Mesh, Plane, Polygon, Sample, Scene, Scene3, Sphere, Torus,
                      exact)
 
@@ -35,7 +36,8 @@ __all__ = ["CancelToken", "Cell", "CheckResult", "Complex", "Conversion", "CsgTr
            "Ties", "Undecided", "compare", "Disk", "HalfPlane", "Polygon", "Plane", "Box", "Sphere", "Cylinder", "Cone",
            "Torus", "Mesh", "Sample", "Scene", "Scene3", "exact", "arrange",
            "load", "extract", "grade", "check", "solid", "describe", "csg", "samples", "convert", "nhtree",
-           "random_scene", "random_scenes", "METHODS", "DEGENERACIES"]
+           "random_scene", "random_scenes", "METHODS", "DEGENERACIES", "Campaign", "CampaignRecord", "campaign",
+           "campaign_checks", "export_graphcut"]
 
 METHODS = ("graphcut", "beam", "best-first", "brute-force", "exact")
 DEGENERACIES = _hsx.DEGENERACIES
@@ -128,10 +130,36 @@ def extract(scene_or_complex, method: str = "beam", *, beam_width: int = 1, max_
 
 def grade(scene_or_complex, labelling, *, oracle: str = "best-first", time_limit: float = 0,
           progress: Optional[Callable[[dict], Any]] = None, cancel: Optional[CancelToken] = None) -> Grade:
-    """Grades a labelling computed elsewhere (one 0/1 or bool per cell, in the complex's cell order) exactly:
-    validity (Def. 3.1, 3.2), its energy and the gap to the optimum computed by ``oracle``."""
+    """Grades a labelling computed elsewhere exactly (`hsx grade`): validity (Def. 3.1, 3.2), its energy and the
+    gap to the optimum computed by ``oracle``.
+
+    ``labelling``: one 0/1 or bool per cell in the complex's cell order (a sequence or numpy array), or a document
+    as `hsx grade` reads it (io/labelling.hpp): a dict (the BSH authors' ``{"labels": [...]}`` or an hsx-result/1,
+    whose complex_id must match), JSON text (a string starting with "{" or "["), or the path of a file holding
+    either or a plain list of 0/1 tokens."""
     cx = arrange(scene_or_complex)
-    return _hsx._grade(cx, labelling, oracle, time_limit, progress, cancel)
+    return _hsx._grade(cx, _labelling(cx, labelling), oracle, time_limit, progress, cancel)
+
+
+def _labelling(cx: Complex, labelling):
+    """grade()'s labelling as per-cell flags (a sequence is passed on as it is)."""
+    if isinstance(labelling, dict):
+        return _hsx._labelling_text(cx, json.dumps(labelling), "labelling")
+    if isinstance(labelling, str) and labelling.lstrip().startswith(("{", "[")):
+        return _hsx._labelling_text(cx, labelling, "labelling")
+    if isinstance(labelling, (str, os.PathLike)):
+        return _hsx._labelling_file(cx, os.fspath(labelling))
+    return labelling
+
+
+def export_graphcut(scene_or_complex, weight_scale: int = _hsx.DEFAULT_GRAPHCUT_WEIGHT_SCALE) -> dict:
+    """The complex as the BSH authors' graph-cut input (`hsx arrange --export bsh-graphcut FILE`, io/labelling.hpp):
+    num_cells, patches (adj_cell_0 outside, adj_cell_1 inside, weight = round(measure * weight_scale) at least 1,
+    implicit_id, num_samples, adj_patches) and hsx's extra fields (format, complex_id, weight_scale, outer_cells,
+    per patch measure, measure_exact, support). Their tool's {"labels": [...]} answer goes to grade(). Raises
+    InputError when weight_scale < 1 or a weight would exceed 2^53."""
+    cx = arrange(scene_or_complex)
+    return json.loads(_hsx._export_graphcut(cx, weight_scale))
 
 
 def check(scene_or_complex, *, max_labellings: int = 200000, time_limit: float = 0, max_states: int = 0,

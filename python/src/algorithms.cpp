@@ -5,6 +5,7 @@
 
 #include <hsx/algorithms/bsh/sample_scene.hpp>
 #include <hsx/algorithms/bsh/samples.hpp>
+#include <hsx/io/labelling.hpp>
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/scene_json.hpp>
 #include <hsx/io/svg.hpp>
@@ -322,6 +323,24 @@ void bind_grade(py::module_& m) {
         },
         py::arg("complex"), py::arg("labelling"), py::arg("oracle"), py::arg("time_limit"), py::arg("progress"),
         py::arg("cancel"));
+  // io/labelling.hpp: a labelling written elsewhere (an hsx-result/1, the BSH authors' {"labels": [...]}, a JSON
+  // list or a plain 0/1 list) as a per-cell numpy bool array; and the authors' graph-cut input.
+  m.def("_labelling_text",
+        [](const ComplexHandle& h, const std::string& text, const std::string& source) {
+          return bool_array(hsx::read_labelling_text(text, source, h.complex()).cells);
+        },
+        py::arg("complex"), py::arg("text"), py::arg("source"));
+  m.def("_labelling_file",
+        [](const ComplexHandle& h, const std::string& path) {
+          return bool_array(hsx::read_labelling_file(path, h.complex()).cells);
+        },
+        py::arg("complex"), py::arg("path"));
+  m.def("_export_graphcut",
+        [](const ComplexHandle& h, std::int64_t weight_scale) {
+          return hsx::bsh_graphcut_to_json(h.complex(), weight_scale).dump();
+        },
+        py::arg("complex"), py::arg("weight_scale"));
+  m.attr("DEFAULT_GRAPHCUT_WEIGHT_SCALE") = hsx::kDefaultGraphcutWeightScale;
 }
 
 void bind_check(py::module_& m) {

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <hsx/hsx.hpp>
+#include <hsx/geometry/random_scene.hpp>
 #include <hsx/io/mesh_export.hpp>
 #include <hsx/io/svg.hpp>
 #include <hsx/io/svg3.hpp>
@@ -55,6 +56,12 @@ std::vector<char> flags_from(py::handle sequence, std::size_t size, const std::s
 // ---- complex.cpp ----
 /// The picture of `input` (io/svg.hpp) with `options`, as a str; None for an input without a scene.
 py::object svg_picture(const InputPtr& input, const hsx::SvgOptions& options);
+/// RandomSceneSettings from hsx.random_scene's keyword arguments (`kw`: min_halfspaces, max_halfspaces,
+/// halfplanes, disks, polygons, complement_percent, denominator, coordinate_bound, max_radius, min_degeneracies,
+/// max_degeneracies, max_samples, near_percent, degeneracy_weights = {name: weight}); unset fields keep their
+/// defaults. Throws py::type_error for an unknown key and InputError for an unknown degeneracy name. The ranges are
+/// checked by random_scene itself (campaign::validate for a campaign).
+hsx::RandomSceneSettings random_settings(const py::dict& kw);
 /// The method named `name` ("best_first" is read as "best-first"); `what` names the argument in the error.
 hsx::bsh::Method method_named(std::string name, const std::string& what);
 
@@ -109,6 +116,7 @@ void bind_algorithms(py::module_& m);
 void bind_cancel(py::module_& m);
 void bind_nhrep(py::module_& m);
 void bind_csg_module(py::module_& m);
+void bind_campaign(py::module_& m);
 
 }  // namespace hsxpy
 

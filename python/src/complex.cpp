@@ -182,6 +182,8 @@ void bind_views(py::module_& m) {
       .def("__repr__", [](const SampleView& v) { return "<hsx.SampleSite " + std::to_string(v.index) + ">"; });
 }
 
+}  // namespace
+
 // ---- random scenes (geometry/random_scene.hpp) ----
 
 hsx::RandomSceneSettings random_settings(const py::dict& kw) {
@@ -220,6 +222,8 @@ hsx::RandomSceneSettings random_settings(const py::dict& kw) {
   }
   return s;
 }
+
+namespace {
 
 void bind_random(py::module_& m) {
   m.def("_random_scene", [](std::uint64_t seed, std::uint64_t index, const py::dict& settings) {

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_hsx, m) {
   hsxpy::bind_algorithms(m);
   hsxpy::bind_csg_module(m);
   hsxpy::bind_nhrep(m);
+  hsxpy::bind_campaign(m);
 }

@@ -1,0 +1,120 @@
+"""Campaigns from Python (hsx.campaign, hsx.campaign_checks): the records equal `hsx campaign --out`'s
+results.jsonl lines, come in index order and are the same for any number of jobs; bad settings are InputError;
+Ctrl-C stops a campaign with KeyboardInterrupt; failing scenes come back as hsx.Scene."""
+import json
+import os
+import signal
+import subprocess
+import threading
+import time
+
+import pytest
+
+import hsx
+
+# A small campaign: scenes of 2..4 halfspaces, the cheap checks and one that needs a search.
+SMALL = dict(seed=7, count=12, start=3, checks="existence,prop52,beam1,uniqueness")
+
+
+def test_campaign_checks_is_the_catalogue(hsx_program):
+    checks = hsx.campaign_checks()
+    names = [name for name, _ in checks]
+    assert names[:3] == ["existence", "prop52", "prop51"] and "manifold" in names
+    assert all(isinstance(d, str) and d for _, d in checks)
+    listed = subprocess.run([hsx_program, "campaign", "--list-checks"], capture_output=True, text=True)
+    assert listed.returncode == 0, listed.stderr
+    for name in names:
+        assert name in listed.stdout
+
+
+def test_records_equal_the_cli_results(hsx_program, tmp_path):
+    out = tmp_path / "camp"
+    cli = subprocess.run([hsx_program, "campaign", "--seed", "7", "--count", "12", "--start", "3", "--checks",
+                          SMALL["checks"], "--halfspaces", "2..4", "--out", str(out)],
+                         capture_output=True, text=True)
+    assert cli.returncode in (0, 1), cli.stderr  # 1: some scene failed a check (still recorded)
+    lines = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines()]
+    records = list(hsx.campaign(**SMALL, min_halfspaces=2, max_halfspaces=4))
+    assert len(records) == len(lines) == 12
+    assert [r.index for r in records] == list(range(3, 15))
+    for r, line in zip(records, lines):
+        assert r.to_json() == line
+        assert r.seed == 7 and 2 <= r.halfspaces <= 4
+        assert list(r.checks) == ["existence", "prop52", "beam1", "uniqueness"]
+        assert all(status in ("held", "failed", "skipped", "stopped") for status, _ in r.checks.values())
+        assert r.failed == (r.outcome == "error" or any(s == "failed" for s, _ in r.checks.values()))
+    assert any(r.outcome == "checked" and r.cells > 0 for r in records)
+
+
+def test_order_and_determinism_for_one_and_two_jobs():
+    one = list(hsx.campaign(seed=11, count=16, jobs=1, checks="existence,prop52,beam1"))
+    two = list(hsx.campaign(seed=11, count=16, jobs=2, checks="existence,prop52,beam1"))
+    assert [r.index for r in two] == list(range(16))
+    assert one == two
+    assert [r.to_json() for r in one] == [r.to_json() for r in two]
+    # another seed gives other scenes
+    other = list(hsx.campaign(seed=12, count=16, checks="existence,prop52,beam1"))
+    assert [r.to_json() for r in other] != [r.to_json() for r in one]
+
+
+def test_scene_of_a_record_is_the_generated_scene():
+    settings = dict(min_halfspaces=2, max_halfspaces=3, disks=False)
+    r = next(iter(hsx.campaign(seed=5, count=1, start=2, checks="existence", **settings)))
+    s = r.scene()
+    assert isinstance(s, hsx.Scene)
+    # the campaign's scenes have up to 6 samples by default, as `hsx campaign --samples`
+    assert s.to_json() == hsx.random_scene(5, 2, max_samples=6, **settings).to_json()
+    assert s.to_json() != hsx.random_scene(5, 2, **settings).to_json()
+    assert len(s.to_dict()["halfspaces"]) == r.halfspaces
+    assert len(hsx.arrange(s).cells) == r.cells
+
+
+def test_refused_scenes_and_kept_failures():
+    # max_cells 1 refuses every scene: recorded as refused, every selected check skipped with the reason
+    records = list(hsx.campaign(seed=3, count=3, checks=["prop52", "existence"], max_cells=1))
+    for r in records:
+        assert r.outcome == "refused" and r.note
+        assert list(r.checks) == ["existence", "prop52"]  # catalogue order whatever the order given
+        assert all(status == "skipped" for status, _ in r.checks.values())
+        assert not r.failed
+
+
+def test_bad_settings_are_input_errors():
+    with pytest.raises(hsx.InputError, match="nosuch"):
+        hsx.campaign(seed=1, count=2, checks="existence,nosuch")
+    with pytest.raises(hsx.InputError, match="jobs"):
+        hsx.campaign(seed=1, count=2, jobs=0)
+    with pytest.raises(hsx.InputError, match="time_limit"):
+        hsx.campaign(seed=1, count=2, time_limit=-1)
+    with pytest.raises(hsx.InputError):
+        hsx.campaign(seed=1, count=2, min_halfspaces=5, max_halfspaces=2)
+    with pytest.raises(TypeError, match="unknown setting"):
+        hsx.campaign(seed=1, count=2, no_such_setting=3)
+    assert list(hsx.campaign(seed=1, count=0)) == []
+
+
+def test_close_stops_the_campaign():
+    with hsx.campaign(seed=2, count=10000, checks="existence", jobs=2) as run:
+        first = next(run)
+        assert first.index == 0
+    assert list(run) == []
+
+
+def test_ctrl_c_stops_a_campaign():
+    if threading.current_thread() is not threading.main_thread():
+        pytest.skip("signals reach the main thread only")
+    run = hsx.campaign(seed=4, count=100000, jobs=2)
+    seen = []
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        for r in run:
+            seen.append(r.index)
+    timer.join()
+    assert time.monotonic() - start < 10
+    assert seen == list(range(len(seen))) and len(seen) < 100000
+    run.close()  # already stopped when the interrupt came while waiting for a record; otherwise stops it now
+    assert list(run) == []
+    # the module works normally afterwards
+    assert [r.index for r in hsx.campaign(seed=4, count=2, checks="existence")] == [0, 1]

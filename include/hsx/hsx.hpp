@@ -60,7 +60,8 @@ bsh::Grade grade_labelling(const Complex& complex, const bsh::Labelling& labelli
 std::vector<char> solid_from_csg(const Complex& complex, const std::string& expression);
 
 /// Buchele-Crawford's BHC tree for `solid` (per cell of `input.complex()`, 1 inside), verified on every cell.
-/// When `input` is a scene, half-planes are preferred for partitioning, as the paper prefers planes. When the solid
+/// When `input` is a scene, half-planes (2D) or planes (3D) are preferred for partitioning, as the paper prefers
+/// planes and as `hsx csg` does (csg::build_tree without separators gives the same tree). When the solid
 /// is not describable by the halfspaces, `describable` is false and `witness` is the mixed term where BHC stopped.
 csg::BhcResult csg_tree(const LoadedInput& input, const std::vector<char>& solid);
 

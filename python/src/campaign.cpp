@@ -207,6 +207,11 @@ void bind_campaign(py::module_& m) {
         [](std::uint64_t seed, std::uint64_t start, std::uint64_t count, const std::string& checks, int jobs,
            double time_limit, const py::dict& options, const py::dict& generator) {
           if (jobs < 1) throw hsx::InputError("jobs: at least 1");
+          // As `hsx campaign --count`: the indices are listed up front (8 bytes each).
+          constexpr std::uint64_t kMaxCount = 100'000'000;
+          if (count > kMaxCount)
+            throw hsx::InputError("count: at most " + std::to_string(kMaxCount) +
+                                  " scenes per call (run larger campaigns in parts with start=)");
           campaign::CampaignSettings s = campaign_settings(seed, checks, time_limit, options, generator);
           std::vector<std::uint64_t> indices = count == 0 ? std::vector<std::uint64_t>{}
                                                           : campaign::shard_indices(start, count, 0, 1);

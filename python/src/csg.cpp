@@ -54,6 +54,13 @@ py::object describe_svg(const DescribeHandle& h, bool labels) {
   return svg_picture(h.input, o);
 }
 
+/// The complex the tree is over: the refined scene's when separators were added, the input's otherwise.
+const hsx::Complex& tree_complex(const CsgHandle& h) {
+  return h.tree->separated    ? h.tree->separated->arranged.complex
+         : h.tree->separated3 ? h.tree->separated3->arranged.complex
+                              : h.input->complex();
+}
+
 void bind_csg(py::module_& m) {
   m.def("_solid_from_csg",
         [](const ComplexHandle& h, const std::string& expression) {
@@ -95,8 +102,7 @@ void bind_csg(py::module_& m) {
       .def_property_readonly("text",
                              [](const CsgHandle& h) -> py::object {
                                if (!h.tree->bhc.tree) return py::none();
-                               const hsx::Complex& c = h.tree->separated ? h.tree->separated->arranged.complex
-                                                                        : h.input->complex();
+                               const hsx::Complex& c = tree_complex(h);
                                return py::str(csg::to_text(*h.tree->bhc.tree, c.halfspace_names));
                              },
                              "The tree in hsx's CSG text, None when not describable")
@@ -115,8 +121,7 @@ void bind_csg(py::module_& m) {
                              })
       .def_property_readonly("mixed",
                              [](const CsgHandle& h) {
-                               const hsx::Complex& c = h.tree->separated ? h.tree->separated->arranged.complex
-                                                                        : h.input->complex();
+                               const hsx::Complex& c = tree_complex(h);
                                py::list l;
                                for (const auto& t : h.tree->describability.mixed) l.append(mixed_term(c, t));
                                return l;
@@ -124,22 +129,28 @@ void bind_csg(py::module_& m) {
                              "When not describable: the mixed terms")
       .def_property_readonly("separated_scene_json",
                              [](const CsgHandle& h) -> py::object {
+                               if (h.tree->separated3)
+                                 return py::str(hsx::write_scene3(h.tree->separated3->scene).dump(2) + "\n");
                                if (!h.tree->separated) return py::none();
                                return py::str(hsx::write_scene2(h.tree->separated->scene).dump(2) + "\n");
                              },
                              "With separators=True and a solid not describable by the scene: the scene with the "
-                             "separating half-planes added")
+                             "separating half-planes (2D) or planes (3D) added")
       .def("__bool__", [](const CsgHandle& h) { return h.tree->has_verified_tree(); });
   m.def("_csg", [](const ComplexHandle& h, py::handle solid, bool separators, int max_separators) {
     const std::vector<char> cells = flags_from(solid, h.complex().cells.size(), "solid");
     if (max_separators < 0) throw hsx::InputError("max_separators: must be >= 0");
-    if (!h.input->scene && separators)
-      throw hsx::InputError("separators: needs a scene (separating half-planes are geometry), not a complex");
+    if (!h.input->scene && !h.input->scene3 && separators)
+      throw hsx::InputError("separators: needs a scene (separating half-planes and planes are geometry), not a "
+                            "complex");
     py::gil_scoped_release release;
     const InputPtr& in = h.input;
+    // As `hsx csg`: BHC preferring half-planes (2D) or planes (3D), plain BHC on a complex without geometry.
     auto tree = std::make_shared<csg::SolidTree>(
-        in->scene ? csg::build_tree(*in->scene, *in->arranged, cells, csg::SolidTreeOptions{separators, max_separators})
-                  : csg::build_tree(in->complex(), cells));
+        in->scene    ? csg::build_tree(*in->scene, *in->arranged, cells, csg::SolidTreeOptions{separators, max_separators})
+        : in->scene3 ? csg::build_tree(*in->scene3, *in->arranged3, cells,
+                                       csg::SolidTreeOptions{separators, max_separators})
+                     : csg::build_tree(in->complex(), cells));
     return CsgHandle{h.input, tree};
   });
 }

@@ -90,6 +90,10 @@ def test_bad_settings_are_input_errors():
         hsx.campaign(seed=1, count=2, min_halfspaces=5, max_halfspaces=2)
     with pytest.raises(TypeError, match="unknown setting"):
         hsx.campaign(seed=1, count=2, no_such_setting=3)
+    with pytest.raises(hsx.InputError, match="count"):
+        hsx.campaign(seed=1, count=10 ** 8 + 1)
+    with pytest.raises(hsx.InputError, match="count"):
+        hsx.campaign(seed=1, count=-1)
     assert list(hsx.campaign(seed=1, count=0)) == []
 
 

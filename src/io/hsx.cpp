@@ -37,7 +37,9 @@ csg::BhcResult csg_tree(const LoadedInput& input, const std::vector<char>& solid
     throw InputError("the solid has " + std::to_string(solid.size()) + " cell flags, the complex " +
                      std::to_string(complex.cells.size()) + " cells");
   csg::BhcOptions options;
+  // As `hsx csg` (csg::build_tree): half-planes preferred in 2D, planes in 3D.
   if (input.scene) options.planar = csg::planar_halfspaces(*input.scene);
+  else if (input.scene3) options.planar = csg::planar_halfspaces(*input.scene3);
   return csg::bhc(complex, solid, options);
 }
 

@@ -1,6 +1,7 @@
 // The front door (<hsx/hsx.hpp>) on the bundled scenes: each call agrees with the layer functions it stands for,
 // and bad input is an InputError.
 #include <hsx/hsx.hpp>
+#include <hsx/algorithms/csg/solid_tree.hpp>
 #include <hsx/io/csg_text.hpp>
 
 #include <catch2/catch.hpp>
@@ -51,6 +52,21 @@ TEST_CASE("facade: CSG solids, BHC trees and NH-Rep trees", "[facade]") {
   const nhrep::BuildResult nh = nhrep_tree(*in.arranged, solid);
   CHECK(nhrep::check_tree(nh).empty());
   CHECK_THROWS_AS(nhrep_tree(*in.arranged, std::vector<char>(c.cells.size() + 1, 0)), InputError);
+}
+
+TEST_CASE("facade: csg_tree prefers planes in 3D, as hsx csg (csg::build_tree) does", "[facade][csg3]") {
+  const LoadedInput in = load_input(std::string(HSX_SOURCE_DIR) + "/data/scenes3d/bhc_bracket.json");
+  REQUIRE(in.scene3);
+  const Complex& c = in.complex();
+  const std::vector<char> solid = solid_from_csg(
+      c, "X0 & Y0 & Y1 & Z0 & ((X1 & Z1 & Ch1) | (U1 & Z2 & Ch2) | (G0 & G1 & Gd) | Boss) & ~H1 & ~H2 & ~H3 & "
+         "~(S0 & S1 & Sz)");
+  const csg::BhcResult tree = csg_tree(in, solid);
+  REQUIRE(tree.describable);
+  CHECK(tree.verified);
+  const csg::SolidTree cli = csg::build_tree(*in.scene3, *in.arranged3, solid, csg::SolidTreeOptions{});
+  REQUIRE(cli.has_verified_tree());
+  CHECK(csg::to_text(*tree.tree, c.halfspace_names) == csg::to_text(*cli.bhc.tree, c.halfspace_names));
 }
 
 TEST_CASE("facade: NH-Rep tree of a bundled mesh", "[facade]") {

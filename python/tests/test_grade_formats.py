@@ -98,6 +98,23 @@ def test_3d_csg_tree_equals_the_cli(hsx_program, source_dir, tmp_path):
     assert tree.text == cli["text"]
 
 
+def test_3d_csg_prefers_planes_as_the_cli(hsx_program, tmp_path):
+    # inside B, S xor P needs a partition where the sphere S and the plane P split as many faces: `hsx csg` takes
+    # the plane first; plain BHC (a complex without geometry) takes S, the lower index
+    scene = hsx.Scene3([hsx.Sphere((0, 0, 0), 2, "S", segments=8), hsx.Plane((0, 0, 1), 0, "P"),
+                        hsx.Box((-3, -3, -3), (3, 3, 3), "B")], domain=((-4, -4, -4), (4, 4, 4)))
+    path = tmp_path / "xor.json"
+    path.write_text(scene.to_json())
+    out = tmp_path / "xor_csg.json"
+    expression = "B & (S & ~P | ~S & P)"
+    p = run(hsx_program, "csg", path, "--csg", expression, "--json", out)
+    assert p.returncode == 0, p.stderr
+    cx = hsx.arrange(scene)
+    tree = hsx.csg(cx, expression)
+    assert tree.verified and tree.text == json.loads(out.read_text())["text"] == "B & (P & ~S | ~P & S)"
+    assert hsx.csg(hsx.load(cx.to_json()), expression).text == "B & (S & ~P | ~S & P)"
+
+
 def test_3d_separators_as_the_cli(hsx_program, source_dir, tmp_path):
     # split_box: the left half of B & ~C is not describable by B and C; one separating plane makes it describable
     scene = source_dir / "data" / "scenes3d" / "split_box.json"

@@ -67,6 +67,28 @@ TEST_CASE("facade: csg_tree prefers planes in 3D, as hsx csg (csg::build_tree) d
   const csg::SolidTree cli = csg::build_tree(*in.scene3, *in.arranged3, solid, csg::SolidTreeOptions{});
   REQUIRE(cli.has_verified_tree());
   CHECK(csg::to_text(*tree.tree, c.halfspace_names) == csg::to_text(*cli.bhc.tree, c.halfspace_names));
+
+
+  // A sphere S, a plane P and a box B: inside B, S xor P needs a partition where S and P split as many faces, so
+  // the preference decides: P (planar) first, where plain BHC would take S (the lower index).
+  const LoadedInput xor_in = load_input_text(
+      R"({"format": "hsx-scene/1", "dimension": 3, "domain": {"min": [-4, -4, -4], "max": [4, 4, 4]},
+          "halfspaces": [{"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 2,
+                          "tessellation": {"segments": 8}},
+                         {"name": "P", "kind": "plane", "normal": [0, 0, 1], "offset": 0},
+                         {"name": "B", "kind": "box", "min": [-3, -3, -3], "max": [3, 3, 3]}]})",
+      "xor.json");
+  const Complex& xc = xor_in.complex();
+  const std::vector<char> xor_solid = solid_from_csg(xc, "B & (S & ~P | ~S & P)");
+  const csg::BhcResult xor_tree = csg_tree(xor_in, xor_solid);
+  REQUIRE(xor_tree.describable);
+  CHECK(xor_tree.verified);
+  CHECK(csg::to_text(*xor_tree.tree, xc.halfspace_names) == "B & (P & ~S | ~P & S)");
+  const csg::SolidTree xor_cli = csg::build_tree(*xor_in.scene3, *xor_in.arranged3, xor_solid, csg::SolidTreeOptions{});
+  CHECK(csg::to_text(*xor_cli.bhc.tree, xc.halfspace_names) == "B & (P & ~S | ~P & S)");
+  const csg::BhcResult plain = csg::bhc(xc, xor_solid);  // no preference: S first
+  REQUIRE(plain.describable);
+  CHECK(csg::to_text(*plain.tree, xc.halfspace_names) == "B & (S & ~P | ~S & P)");
 }
 
 TEST_CASE("facade: NH-Rep tree of a bundled mesh", "[facade]") {

@@ -5,9 +5,9 @@
 // bounded queue (at most 4 x jobs records wait there, so a slow consumer holds the campaign back instead of
 // letting it run ahead without bound). __next__ waits for the next record with the GIL released, taking the GIL
 // every 20 ms to let the interpreter run its signal handlers (PyErr_CheckSignals, as cancel.cpp's Guard does for
-// a search): Ctrl-C stops the campaign (the sink refuses the next record, so run_scenes stops; the threads finish
-// the scene they are on, which run_scene cannot cut short unless the campaign has a time limit) and raises
-// KeyboardInterrupt. Closing or dropping the iterator stops it the same way.
+// a search): Ctrl-C stops the campaign (the sink refuses the next record, so run_scenes stops, and run_scenes'
+// cancel hook cuts the scenes in progress short at their next check; an arrangement in progress is not
+// interrupted) and raises KeyboardInterrupt. Closing or dropping the iterator stops it the same way.
 #include "bindings.hpp"
 
 #include <hsx/algorithms/campaign/campaign.hpp>
@@ -80,6 +80,7 @@ class CampaignRun {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       stop_ = true;
+      cancel_ = true;  // with stop_ set first: a record the cancel cut short is refused by the sink
     }
     space_cv_.notify_all();
     if (worker_.joinable()) worker_.join();
@@ -101,7 +102,7 @@ class CampaignRun {
           queue_.push_back(std::move(r));
           lock.unlock();
           ready_cv_.notify_all();
-        });
+        }, [this] { return cancel_.load(std::memory_order_relaxed); });
       } catch (const StopRequested&) {
       } catch (...) {
         error = std::current_exception();
@@ -127,6 +128,7 @@ class CampaignRun {
   std::deque<campaign::SceneRecord> queue_;
   bool done_ = false;
   bool stop_ = false;
+  std::atomic<bool> cancel_{false};  // run_scenes' cancel hook: the scenes in progress end at their next check
   std::exception_ptr error_;
   std::thread worker_;
 };

@@ -122,3 +122,34 @@ def test_ctrl_c_stops_a_campaign():
     assert list(run) == []
     # the module works normally afterwards
     assert [r.index for r in hsx.campaign(seed=4, count=2, checks="existence")] == [0, 1]
+
+
+def test_ctrl_c_cuts_the_scenes_in_progress_short():
+    # scenes 2 and 3 of seed 4 with 8 halfspaces: their checks run for minutes (measured: scene 2 over 120 s; with
+    # --time-limit 2 `hsx campaign` stops it at 2 s, so the time is in the checks, which the cancel hook reaches)
+    if threading.current_thread() is not threading.main_thread():
+        pytest.skip("signals reach the main thread only")
+    run = hsx.campaign(seed=4, start=2, count=2, min_halfspaces=8, max_halfspaces=8, jobs=2)
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    start = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        next(run)  # the interrupt comes while this waits (scene 2 runs for minutes)
+    timer.join()
+    assert time.monotonic() - start < 10
+    assert list(run) == []  # stopped for good, without close()
+
+
+def test_gil_released_while_waiting():
+    # while a thread waits for a slow scene, the main thread runs Python code
+    run = hsx.campaign(seed=4, start=2, count=1, min_halfspaces=8, max_halfspaces=8, time_limit=1.5)
+    got = []
+    t = threading.Thread(target=lambda: got.extend(run))
+    t.start()
+    spins, start = 0, time.monotonic()
+    while time.monotonic() - start < 0.5:
+        spins += 1
+    t.join()
+    assert spins > 10000
+    assert len(got) == 1 and got[0].index == 2 and got[0].timed_out
+    assert any(status in ("stopped", "skipped") for status, _ in got[0].checks.values())

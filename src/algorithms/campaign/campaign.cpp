@@ -190,7 +190,7 @@ void validate(const CampaignSettings& s) {
   }
 }
 
-SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index) {
+SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
   const std::vector<std::string> checks = selected(s);
   const Clock::time_point start = Clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -233,6 +233,7 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index) {
     options.compare.max_bits = s.precision_bits;
     options.max_states = s.max_states;
     options.max_graph_cuts = s.max_graph_cuts;
+    options.cancel = cancel;
     // The scene's time limit covers its arrangement too: the checks get what is left (at least a nanosecond, so
     // that a spent limit skips them instead of meaning "no limit").
     if (s.time_limit > 0) options.time_limit = std::max(s.time_limit - elapsed(), 1e-9);
@@ -267,12 +268,12 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index) {
 }
 
 void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_t>& indices, int jobs,
-                const std::function<void(SceneRecord&&)>& sink) {
+                const std::function<void(SceneRecord&&)>& sink, const std::function<bool()>& cancel) {
   validate(settings);
   if (jobs < 1) throw InputError("--jobs: at least 1");
   const std::size_t n = indices.size();
   if (jobs == 1 || n <= 1) {
-    for (std::uint64_t i : indices) sink(run_scene(settings, i));
+    for (std::uint64_t i : indices) sink(run_scene(settings, i, cancel));
     return;
   }
   // Positions [written, written + window) may be worked on; position p waits in slots[p % window].
@@ -293,7 +294,7 @@ void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_
       std::optional<SceneRecord> record;
       std::exception_ptr error;
       try {
-        record = run_scene(settings, indices[p]);
+        record = run_scene(settings, indices[p], cancel);
       } catch (...) {
         error = std::current_exception();
       }

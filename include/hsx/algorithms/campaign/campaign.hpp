@@ -125,14 +125,22 @@ void validate(const CampaignSettings& settings);
 
 /// Scene `index` of the campaign: generated, arranged and checked. Never throws for a scene (a refusal or a
 /// library exception becomes the record's outcome); throws InputError only for invalid settings (validate).
-SceneRecord run_scene(const CampaignSettings& settings, std::uint64_t index);
+/// - `cancel`: empty, or asked where the time limit is (bsh::CheckOptions::cancel; thread-safe, it may be called
+///   from several scenes at once); once it returns true the running check stops and the rest are skipped, so the
+///   record is no longer the scene's reproducible one: a caller that cancels drops it. (The arrangement itself is
+///   not interrupted.) Not part of the campaign's identity.
+SceneRecord run_scene(const CampaignSettings& settings, std::uint64_t index,
+                      const std::function<bool()>& cancel = {});
 
 /// Runs the scenes `indices` on `jobs` threads (>= 1) and calls `sink` with each record, on the calling thread,
 /// in the order of `indices`, as soon as it and every record before it are done (at most about 4 x jobs records
 /// wait for their turn). An exception from `sink` stops the run (the threads finish their current scene) and is
 /// rethrown. Throws InputError for invalid settings or jobs < 1.
+/// - `cancel`: run_scene's, for every scene (empty: none). Cancelling does not stop run_scenes by itself: the sink
+///   decides (it throws to stop, e.g. the Python module's campaign iterator on Ctrl-C), and the scenes in progress
+///   then end at their next check of `cancel` instead of running to their end.
 void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_t>& indices, int jobs,
-                const std::function<void(SceneRecord&&)>& sink);
+                const std::function<void(SceneRecord&&)>& sink, const std::function<bool()>& cancel = {});
 
 /// The indices of shard `shard` of `shards` among start, start + 1, ..., start + count - 1: those with
 /// (index - start) mod shards == shard, in increasing order. The shards 0..shards-1 partition the range. Throws

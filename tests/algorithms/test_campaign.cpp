@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -181,6 +183,30 @@ TEST_CASE("campaign: the records do not depend on the number of threads", "[camp
                   std::runtime_error);
   CHECK(seen == 5);
   CHECK_THROWS_AS(run_all(s, indices, 0), InputError);
+}
+
+TEST_CASE("campaign: the cancel hook cuts a scene's checks short; unset or false it changes nothing", "[campaign]") {
+  const CampaignSettings s = small_settings();
+  for (std::uint64_t i : {10u, 11u, 12u}) {
+    CHECK(run_scene(s, i, [] { return false; }) == run_scene(s, i));
+    int asked = 0;
+    const SceneRecord cut = run_scene(s, i, [&] { return ++asked > 0; });
+    if (cut.outcome != SceneOutcome::Checked) continue;
+    CHECK(asked > 0);  // the checks asked it
+    CHECK(std::any_of(cut.checks.begin(), cut.checks.end(), [](const CheckOutcome& c) {
+      return c.status == CheckStatus::Stopped || c.status == CheckStatus::Skipped;
+    }));
+  }
+  // Scene 2 of seed 4 with 8 halfspaces checks for minutes (the Python suite's Ctrl-C test uses it); cancelled
+  // from the start it takes well under a second.
+  CampaignSettings slow;
+  slow.seed = 4;
+  slow.scene.min_halfspaces = slow.scene.max_halfspaces = 8;
+  slow.scene.max_samples = 6;
+  const auto start = std::chrono::steady_clock::now();
+  const SceneRecord r = run_scene(slow, 2, [] { return true; });
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 10);
+  CHECK(r.outcome == SceneOutcome::Checked);
 }
 
 TEST_CASE("campaign: shards partition the range, and their records are the whole campaign's", "[campaign]") {

@@ -41,7 +41,7 @@ class CampaignRun {
 
   /// The next record; std::nullopt at the end. With the GIL held on entry and on return.
   std::optional<campaign::SceneRecord> next() {
-    if (!started_) start();
+    if (!started_ && !stop_) start();  // (no worker yet: nothing else reads stop_) closed before the first record
     std::unique_lock<std::mutex> lock(mutex_, std::defer_lock);
     while (true) {
       {

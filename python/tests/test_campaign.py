@@ -102,6 +102,9 @@ def test_close_stops_the_campaign():
         first = next(run)
         assert first.index == 0
     assert list(run) == []
+    never = hsx.campaign(seed=2, count=10, checks="existence")
+    never.close()  # before the first record: nothing runs
+    assert list(never) == []
 
 
 def test_ctrl_c_stops_a_campaign():

@@ -1,5 +1,6 @@
 // hsx campaign: the proposition checkers on many random 2D scenes (algorithms/campaign/campaign.hpp), with the
 // results as JSON lines in a folder that a killed run resumes (io/campaign_files.hpp). docs/campaigns.md.
+#include "cli/campaign_against.hpp"
 #include "cli/commands.hpp"
 #include <hsx/algorithms/campaign/campaign.hpp>
 #include <hsx/io/campaign_files.hpp>
@@ -28,6 +29,9 @@ struct CampaignCommandOptions {
   std::string degeneracies = "0..2";
   std::string kinds = "halfplane,disk,polygon";
   std::string weights;
+  bool against_given = false;                           ///< --against was given (even empty: refused)
+  std::string against, against_input = "bsh-graphcut";  ///< --against, --against-input
+  double against_time_limit = 0;                        ///< --against-time-limit
 };
 
 /// For --seed, --start, --count: a whole number 0 .. 2^64 - 1 written in digits (CLI11 alone would wrap "-1").
@@ -119,6 +123,31 @@ void parse_weights(const std::string& text, RandomSceneSettings& g) {
   }
 }
 
+/// --against: the solver it runs (InputError naming the option when bad; nullopt without --against).
+std::optional<ExternalSolver> against_solver(const CampaignCommandOptions& o) {
+  if (!o.against_given) return std::nullopt;  // --against-input and --against-time-limit need --against (CLI11)
+  ExternalSolver solver;
+  solver.command = o.against;
+  const auto input = external_input_from_string(o.against_input);
+  if (!input) throw InputError("--against-input: unknown format \"" + o.against_input + "\" (bsh-graphcut or complex)");
+  solver.input = *input;
+  solver.time_limit = o.against_time_limit;
+  try {
+    check_external_solver(solver);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--against: ") + e.what());
+  }
+  return solver;
+}
+
+/// campaign.json: the settings and plan, and --against's command and input kind when given.
+nlohmann::json campaign_manifest(const campaign::CampaignSettings& settings, const CampaignPlan& plan,
+                                 const std::optional<ExternalSolver>& against) {
+  nlohmann::json j = campaign_to_json(settings, plan);
+  if (against) j["against"] = against_to_json(*against);
+  return j;
+}
+
 int run_campaign(const CampaignCommandOptions& o) {
   if (o.list_checks) {
     for (const campaign::CheckInfo& c : campaign::check_catalogue())
@@ -139,6 +168,8 @@ int run_campaign(const CampaignCommandOptions& o) {
   parse_kinds(o.kinds, settings.scene);
   parse_weights(o.weights, settings.scene);
   settings.checks = campaign::parse_check_list(o.checks);
+  const std::optional<ExternalSolver> against = against_solver(o);
+  if (against) settings.extra.push_back(against_check(*against, settings));
   campaign::validate(settings);
   CampaignPlan plan;
   plan.start = o.start;
@@ -148,8 +179,8 @@ int run_campaign(const CampaignCommandOptions& o) {
 
   std::unique_ptr<CampaignFolder> folder;
   if (!o.out_dir.empty())
-    folder = std::make_unique<CampaignFolder>(o.out_dir, campaign_to_json(settings, plan), o.resume, indices);
-  campaign::Summary summary(settings.checks);
+    folder = std::make_unique<CampaignFolder>(o.out_dir, campaign_manifest(settings, plan, against), o.resume, indices);
+  campaign::Summary summary(campaign::recorded_checks(settings));
   const auto report = [&](const campaign::SceneRecord& r) {
     if (r.failed()) std::cout << failure_note(r) << "\n";
   };
@@ -220,6 +251,23 @@ void add_campaign_command(CLI::App& app) {
                   "counted as timed out and its cut checks reported as stopped (or skipped when no time was left); "
                   "which ones depends on the machine's speed and load")
       ->check(seconds());
+  CLI::Option* against = cmd->add_option_function<std::string>(
+      "--against",
+      [o](const std::string& command) {
+        o->against = command;
+        o->against_given = true;
+      },
+                  "grade another program on every scene: this shell command, with {input} and {output} standing for "
+                  "the files it reads and writes (as hsx grade --run); recorded as the check \"against\" (held: "
+                  "optimal; failed: suboptimal, invalid or no answer; stopped: undecided), with its own table");
+  cmd->add_option("--against-input", o->against_input,
+                  "--against: what {input} holds: bsh-graphcut (default) or complex (hsx-complex/1)")
+      ->needs(against);
+  cmd->add_option("--against-time-limit", o->against_time_limit,
+                  "--against: kill the program after S seconds (0: no limit, default); a killed program's verdict is "
+                  "no answer")
+      ->check(seconds())
+      ->needs(against);
   // The generator (geometry/random_scene.hpp's RandomSceneSettings).
   cmd->add_option("--halfspaces", o->halfspaces, "number of halfspaces as A..B or N (default 1..6)");
   cmd->add_option("--kinds", o->kinds, "halfspace kinds: halfplane, disk, polygon, comma-separated (default all)");

@@ -35,8 +35,8 @@ CheckOutcome grade_answer(const Complex& c, const bsh::Labelling& theirs, const 
   const bsh::Problem problem(c);
   bsh::Grade g = bsh::grade(problem, theirs, oracle);
   if (!g.optimum.optimal && g.optimum.stopped_by.empty()) {
-    // Best-first is not proven complete at non-generic junctions, and its oracle was too large: the exact branch
-    // and bound (complete everywhere) under the same limits decides instead.
+    // Best-first left unproven by no limit (non-generic junctions and an oracle too large, or a graph cut whose
+    // measures did not separate): the exact branch and bound under the same limits decides instead.
     bsh::ExtractOptions exact = oracle;
     exact.method = bsh::Method::Exact;
     g = bsh::grade(problem, theirs, exact);

@@ -9,18 +9,11 @@
 set -u
 HSX="${1:?usage: mpi_campaign_tests.sh HSX MPIEXEC}"
 MPIEXEC="${2:?usage: mpi_campaign_tests.sh HSX MPIEXEC}"
-TMP="$(mktemp -d "${TMPDIR:-/tmp}/hsx-mpi-tests.XXXXXX")"
-trap 'rm -rf "$TMP"' EXIT
+source "$(dirname "${BASH_SOURCE[0]}")/testlib.sh"
+testlib_init mpi-campaign
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI runs as root
 MPI=("$MPIEXEC" -np 2 --oversubscribe)
 
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  failed=$((failed + 1))
-  echo "FAIL: $*" >&2
-}
 same() {  # same A B WHAT
   if diff -r "$1" "$2" >"$TMP/diff.txt" 2>&1; then pass; else fail "$3 differ: $(head -c 600 "$TMP/diff.txt")"; fi
 }
@@ -62,5 +55,4 @@ status=$?
 [[ "$(ls "$TMP/foreign")" == notes.txt && "$(cat "$TMP/foreign/notes.txt")" == mine ]] && pass ||
   fail "the foreign folder was changed: $(ls "$TMP/foreign")"
 
-echo "$passed passed, $failed failed"
-[[ $failed == 0 ]]
+testlib_finish

@@ -4,6 +4,7 @@
 // --csv and --json write the same figures.
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/bsh/graph_cut.hpp>
+#include <hsx/algorithms/campaign/campaign.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
@@ -12,6 +13,7 @@
 #include <hsx/geometry/random_scene3.hpp>
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/bsh_config.hpp>
+#include <hsx/io/campaign_files.hpp>
 #include <hsx/geometry/mesh3.hpp>
 #include <hsx/geometry/random_scene.hpp>
 #include <hsx/io/files.hpp>
@@ -54,6 +56,10 @@ struct BenchOptions {
   long nef_max_triangles = 20000;   ///< Nef is skipped above this many input triangles
   int threads = 0;
   bool phases = false;              ///< 3D mode: also report the median time of each arrangement phase
+  bool campaign = false;            ///< campaign mode: scenes per second of `hsx campaign`, 1 and 2 threads
+  std::vector<int> campaign_halfspaces{4, 8};  ///< campaign mode: one row per scene size
+  long campaign_scenes = 40;        ///< campaign mode: scenes per run
+  double campaign_time_limit = 2;   ///< campaign mode: seconds per scene
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -695,6 +701,76 @@ void run_bench3(const BenchOptions& o, OutputFiles& files) {
   publish(report, o, files);
 }
 
+// ---- campaign throughput (issue 15, section 4) ----
+
+/// `scenes` scenes of `halfspaces` halfspaces (seed 1, every check, the CLI's default generator otherwise) run
+/// through the campaign runner on 1 and on 2 threads, each run timed; the records of the two compared.
+BenchRow bench_campaign(int halfspaces, const BenchOptions& o, const RepeatOptions& repeat) {
+  campaign::CampaignSettings settings;
+  settings.scene.max_samples = 6;  // as `hsx campaign`
+  settings.scene.min_halfspaces = settings.scene.max_halfspaces = halfspaces;
+  settings.seed = 1;
+  settings.time_limit = o.campaign_time_limit;
+  settings.limits = o.limits;
+  settings.checks = campaign::parse_check_list("all");
+  campaign::validate(settings);
+  std::vector<std::uint64_t> indices(static_cast<std::size_t>(o.campaign_scenes));
+  for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = k;
+  BenchRow row;
+  row.input = std::to_string(halfspaces) + " halfspaces";
+  row.sizes = {halfspaces, o.campaign_scenes};
+  std::vector<std::string> lines[2];
+  for (int jobs : {1, 2}) {
+    StageResult stage;
+    stage.timing = time_repeatedly(
+        [&] {
+          std::vector<std::string>& out = lines[jobs - 1];
+          out.clear();
+          campaign::run_scenes(settings, indices, jobs,
+                               [&](campaign::SceneRecord&& r) { out.push_back(record_to_json(r).dump()); });
+        },
+        repeat);
+    row.stages.push_back(stage);
+  }
+  long timed_out[2] = {0, 0};  // in the last run of each: where a limit cut a scene, the records may differ
+  for (int k : {0, 1})
+    for (const std::string& line : lines[k]) timed_out[k] += line.find("\"timed_out\":true") != std::string::npos;
+  const double one = row.stages[0].timing->median, two = row.stages[1].timing->median;
+  row.notes = {printf_string("%.1f", one > 0 ? static_cast<double>(o.campaign_scenes) / one : 0),
+               printf_string("%.2fx", two > 0 ? one / two : 0),
+               std::to_string(timed_out[0]) + "/" + std::to_string(timed_out[1]),
+               timed_out[0] + timed_out[1] ? "-" : lines[0] == lines[1] ? "yes" : "NO"};
+  return row;
+}
+
+void run_campaign_bench(const BenchOptions& o, OutputFiles& files) {
+  if (o.campaign_scenes < 1) throw InputError("--campaign-scenes: at least 1");
+  if (!std::isfinite(o.campaign_time_limit) || o.campaign_time_limit < 0)
+    throw InputError("--campaign-time-limit: a finite number of seconds >= 0");
+  Report report;
+  report.mode = "campaign";
+  report.input_name = "scenes";
+  report.size_names = {"halfsp", "scenes"};
+  report.stage_names = {"jobs 1", "jobs 2"};
+  report.with_ratio = {0, 1};
+  report.reference = 0;
+  report.note_names = {"scenes/s", "speed-up", "timed out", "same"};
+  report.repeat = repeat_options(o);
+  for (int h : o.campaign_halfspaces) {
+    if (h < 1) throw InputError("--campaign-halfspaces: every size must be at least 1");
+    report.rows.push_back(bench_campaign(h, o, report.repeat));
+  }
+  report.footer = {
+      "each run: the scenes 0..N-1 of seed 1 generated, arranged and given every check (hsx campaign --checks all), "
+      "at most --campaign-time-limit seconds per scene; scenes/s: on one thread (median run); speed-up: jobs 1 / "
+      "jobs 2; timed out: scenes cut by the time limit in the last run of each (which ones depends on the machine's "
+      "load); same: the two runs' records are the same bytes (compared when no scene timed out)",
+      "issue 15's goals: >= 100 scenes/s per core at 8 halfspaces, >= 1.9x on 2 cores; MPI against threads is two "
+      "processes: time `mpirun -np 2 hsx campaign ... --jobs 1` against `hsx campaign ... --jobs 2` "
+      "(docs/campaigns-cluster.md)"};
+  publish(report, o, files);
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
@@ -742,8 +818,20 @@ void add_bench_command(CLI::App& app) {
           ->check(CLI::NonNegativeNumber),
       cmd->add_flag("--phases", o->phases,
                     "--3d: also report the median time of each phase of the arrangement (and of its complex)")};
+  const std::vector<CLI::Option*> only_campaign = {
+      cmd->add_option("--campaign-halfspaces", o->campaign_halfspaces,
+                      "--campaign: one row per scene size (default 4,8)")
+          ->delimiter(','),
+      cmd->add_option("--campaign-scenes", o->campaign_scenes, "--campaign: scenes per run (default 40)"),
+      cmd->add_option("--campaign-time-limit", o->campaign_time_limit,
+                      "--campaign: seconds per scene (default 2; 0: none)")
+          ->check(seconds())};
+  cmd->add_flag("--campaign", o->campaign,
+                "time hsx campaign's runner (every check) on 1 and 2 threads, scenes per second, instead");
   add_arrangement_limits(cmd, o->limits);
-  cmd->callback([o, dirs, brute_force, time_limit, only_3d] {
+  cmd->callback([o, dirs, brute_force, time_limit, only_3d, only_campaign] {
+    for (CLI::Option* option : only_campaign)
+      if (!o->campaign && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --campaign");
     for (CLI::Option* option : only_3d)
       if (!o->three_d && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --3d");
     for (CLI::Option* option : {dirs, brute_force, time_limit})
@@ -752,10 +840,15 @@ void add_bench_command(CLI::App& app) {
     OutputFiles files;  // checked before the measurements, written at the end
     files.expect(o->csv_path, "--csv");
     files.expect(o->json_path, "--json");
-    if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) > 1)
-      throw InputError("bench: --cuts, --3d and --meshes exclude each other");
+    if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) + int(o->campaign) > 1)
+      throw InputError("bench: --cuts, --3d, --meshes and --campaign exclude each other");
+    if (o->campaign)
+      for (CLI::Option* option : {dirs, brute_force, time_limit})
+        if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --campaign");
     if (!o->cuts && !o->cut_inputs.empty()) throw InputError("bench: --cut-inputs needs --cuts");
-    if (o->cuts)
+    if (o->campaign)
+      run_campaign_bench(*o, files);
+    else if (o->cuts)
       run_cut_bench(*o, files);
     else if (o->three_d)
       run_bench3(*o, files);

@@ -1,13 +1,17 @@
 // hsx campaign: the proposition checkers on many random 2D scenes (algorithms/campaign/campaign.hpp), with the
 // results as JSON lines in a folder that a killed run resumes (io/campaign_files.hpp). docs/campaigns.md.
+#include "cli/campaign_against.hpp"
 #include "cli/commands.hpp"
+#include "cli/distribute.hpp"
 #include <hsx/algorithms/campaign/campaign.hpp>
 #include <hsx/io/campaign_files.hpp>
+#include <hsx/io/scene_json.hpp>
 
 #include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace hsx::cli {
@@ -28,6 +32,9 @@ struct CampaignCommandOptions {
   std::string degeneracies = "0..2";
   std::string kinds = "halfplane,disk,polygon";
   std::string weights;
+  bool against_given = false;                           ///< --against was given (even empty: refused)
+  std::string against, against_input = "bsh-graphcut";  ///< --against, --against-input
+  double against_time_limit = 0;                        ///< --against-time-limit
 };
 
 /// For --seed, --start, --count: a whole number 0 .. 2^64 - 1 written in digits (CLI11 alone would wrap "-1").
@@ -119,6 +126,59 @@ void parse_weights(const std::string& text, RandomSceneSettings& g) {
   }
 }
 
+/// --against: the solver it runs (InputError naming the option when bad; nullopt without --against).
+std::optional<ExternalSolver> against_solver(const CampaignCommandOptions& o) {
+  if (!o.against_given) return std::nullopt;  // --against-input and --against-time-limit need --against (CLI11)
+  ExternalSolver solver;
+  solver.command = o.against;
+  const auto input = external_input_from_string(o.against_input);
+  if (!input) throw InputError("--against-input: unknown format \"" + o.against_input + "\" (bsh-graphcut or complex)");
+  solver.input = *input;
+  solver.time_limit = o.against_time_limit;
+  try {
+    check_external_solver(solver);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--against: ") + e.what());
+  }
+  return solver;
+}
+
+/// campaign.json: the settings and plan, and --against's command and input kind when given.
+nlohmann::json campaign_manifest(const campaign::CampaignSettings& settings, const CampaignPlan& plan,
+                                 const std::optional<ExternalSolver>& against) {
+  nlohmann::json j = campaign_to_json(settings, plan);
+  if (against) j["against"] = against_to_json(*against);
+  return j;
+}
+
+/// A record as one MPI message: its results.jsonl line, then for a failed record the scene (hsx-scene/1) that
+/// failures/ keeps; decode_record is the inverse.
+std::string encode_record(const campaign::SceneRecord& r) {
+  std::string text = record_to_json(r).dump() + "\n";
+  if (r.scene) text += write_scene2(*r.scene).dump();
+  return text;
+}
+
+campaign::SceneRecord decode_record(const std::string& text) {
+  const std::size_t end = text.find('\n');
+  campaign::SceneRecord r = record_from_json(nlohmann::json::parse(text.substr(0, end)));
+  if (end + 1 < text.size()) r.scene = read_scene_text(std::string_view(text).substr(end + 1));
+  return r;
+}
+
+/// The scenes `todo`, each record to `sink` in the order of `todo`: here on `jobs` threads, or under mpirun
+/// (`mpi` set) split over the ranks, every record reaching rank 0's sink (cli/distribute.hpp).
+void run_all(const campaign::CampaignSettings& settings, const std::vector<std::uint64_t>& todo, int jobs,
+             const MpiRun* mpi, const std::function<void(campaign::SceneRecord&&)>& sink) {
+  if (!mpi) return campaign::run_scenes(settings, todo, jobs, sink);
+  mpi->distribute(
+      todo,
+      [&](const std::vector<std::uint64_t>& mine, const std::function<void(std::string&&)>& out) {
+        campaign::run_scenes(settings, mine, jobs, [&](campaign::SceneRecord&& r) { out(encode_record(r)); });
+      },
+      [&](std::string&& message) { sink(decode_record(message)); });
+}
+
 int run_campaign(const CampaignCommandOptions& o) {
   if (o.list_checks) {
     for (const campaign::CheckInfo& c : campaign::check_catalogue())
@@ -139,6 +199,8 @@ int run_campaign(const CampaignCommandOptions& o) {
   parse_kinds(o.kinds, settings.scene);
   parse_weights(o.weights, settings.scene);
   settings.checks = campaign::parse_check_list(o.checks);
+  const std::optional<ExternalSolver> against = against_solver(o);
+  if (against) settings.extra.push_back(against_check(*against, settings));
   campaign::validate(settings);
   CampaignPlan plan;
   plan.start = o.start;
@@ -146,10 +208,22 @@ int run_campaign(const CampaignCommandOptions& o) {
   parse_shard(o.shard, plan);
   const std::vector<std::uint64_t> indices = plan.indices();
 
+  // Under mpirun every rank parses the same options; rank 0 alone owns the folder and the output and tells the
+  // others whether to go on, then which scenes are left to do.
+  std::optional<MpiRun> mpi;
+  if (launched_by_mpi()) mpi.emplace();
+  const bool root = !mpi || mpi->rank() == 0;
   std::unique_ptr<CampaignFolder> folder;
-  if (!o.out_dir.empty())
-    folder = std::make_unique<CampaignFolder>(o.out_dir, campaign_to_json(settings, plan), o.resume, indices);
-  campaign::Summary summary(settings.checks);
+  if (root && !o.out_dir.empty()) {
+    try {
+      folder = std::make_unique<CampaignFolder>(o.out_dir, campaign_manifest(settings, plan, against), o.resume, indices);
+    } catch (...) {
+      if (mpi) mpi->broadcast(false);
+      throw;
+    }
+  }
+  if (mpi && !mpi->broadcast(true)) return 2;  // rank 0 refused the folder and says why
+  campaign::Summary summary(campaign::recorded_checks(settings));
   const auto report = [&](const campaign::SceneRecord& r) {
     if (r.failed()) std::cout << failure_note(r) << "\n";
   };
@@ -164,19 +238,22 @@ int run_campaign(const CampaignCommandOptions& o) {
       std::cerr << "hsx campaign: resumed " << o.out_dir << ": " << done << " of " << indices.size()
                 << " scenes were done" << (folder->cut_torn_line() ? " (a torn last line was cut off)" : "") << "\n";
   }
-  const std::vector<std::uint64_t> todo(indices.begin() + static_cast<std::ptrdiff_t>(done), indices.end());
+  std::vector<std::uint64_t> todo(indices.begin() + static_cast<std::ptrdiff_t>(done), indices.end());
+  if (mpi) todo = mpi->broadcast(todo);
   const auto begin = std::chrono::steady_clock::now();
-  campaign::run_scenes(settings, todo, o.jobs, [&](campaign::SceneRecord&& r) {
+  run_all(settings, todo, o.jobs, mpi ? &*mpi : nullptr, [&](campaign::SceneRecord&& r) {
     if (folder) folder->append(r);
     summary.add(r);
     report(r);
   });
+  if (!root) return 0;  // rank 0 writes the summary and gives the exit status
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   if (folder) folder->write_summary(summary);
   std::cout << summary_table(summary);
   std::cerr << "hsx campaign: " << todo.size() << " scenes run in " << std::fixed << std::setprecision(2) << seconds
             << " s (" << std::setprecision(1) << (seconds > 0 ? todo.size() / seconds : 0) << " scenes/s, " << o.jobs
-            << " job" << (o.jobs == 1 ? "" : "s") << ")\n";
+            << " job" << (o.jobs == 1 ? "" : "s") << (mpi ? " per process, " + std::to_string(mpi->size()) + " MPI processes" : "")
+            << ")\n";
   return summary.failed_scenes > 0 ? kCheckFailed : 0;
 }
 
@@ -220,6 +297,23 @@ void add_campaign_command(CLI::App& app) {
                   "counted as timed out and its cut checks reported as stopped (or skipped when no time was left); "
                   "which ones depends on the machine's speed and load")
       ->check(seconds());
+  CLI::Option* against = cmd->add_option_function<std::string>(
+      "--against",
+      [o](const std::string& command) {
+        o->against = command;
+        o->against_given = true;
+      },
+                  "grade another program on every scene: this shell command, with {input} and {output} standing for "
+                  "the files it reads and writes (as hsx grade --run); recorded as the check \"against\" (held: "
+                  "optimal; failed: suboptimal, invalid or no answer; stopped: undecided), with its own table");
+  cmd->add_option("--against-input", o->against_input,
+                  "--against: what {input} holds: bsh-graphcut (default) or complex (hsx-complex/1)")
+      ->needs(against);
+  cmd->add_option("--against-time-limit", o->against_time_limit,
+                  "--against: kill the program after S seconds (0: no limit, default); a killed program's verdict is "
+                  "no answer")
+      ->check(seconds())
+      ->needs(against);
   // The generator (geometry/random_scene.hpp's RandomSceneSettings).
   cmd->add_option("--halfspaces", o->halfspaces, "number of halfspaces as A..B or N (default 1..6)");
   cmd->add_option("--kinds", o->kinds, "halfspace kinds: halfplane, disk, polygon, comma-separated (default all)");

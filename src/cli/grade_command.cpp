@@ -161,7 +161,9 @@ std::string summary(const GradeCommandOptions& o, const Complex& c, LabellingFor
   for (const auto& island : g.islands) out << "\n  " << c.halfspace_names[island.halfspace] << ":" << patch_list(c, island.patches);
   out << "\nenergy " << energy_text(g.energy, c.dimension) << "\n";
   out << "optimum " << energy_text(g.optimum.energy, c.dimension) << " (" << bsh::to_string(g.optimum.method)
-      << (g.optimum.optimal ? ", proven optimal" : ", NOT proven optimal: stopped by " + g.optimum.stopped_by) << ")\n";
+      << (g.optimum.optimal                 ? std::string(", proven optimal")
+          : g.optimum.stopped_by.empty() ? ", NOT proven optimal: " + g.optimum.optimality_note
+                                         : ", NOT proven optimal: stopped by " + g.optimum.stopped_by) << ")\n";
   out << "gap " << g.missing_samples_gap << " missing samples, " << (c.dimension == 3 ? "area " : "length ")
       << measure_text(g.measure_gap) << " (" << order_name(g.versus_optimum) << ")\n";
   out << "boundary differs: theirs only" << patch_list(c, d.theirs_only) << "; optimum only"
@@ -172,7 +174,8 @@ std::string summary(const GradeCommandOptions& o, const Complex& c, LabellingFor
     out << " (its energy is below the optimum's: it buys that by breaking sample-connectedness)";
   if (v == "undecided")
     out << (g.optimum.optimal ? " (the energies did not separate at the precision cap: --precision)"
-                              : " (the reference search was stopped by a limit)");
+                              : g.optimum.stopped_by.empty() ? " (the reference is not proven optimal: --method exact)"
+                                                             : " (the reference search was stopped by a limit)");
   out << "\n";
   return out.str();
 }

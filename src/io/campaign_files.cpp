@@ -167,6 +167,25 @@ nlohmann::json summary_to_json(const Summary& s) {
     b["by_halfspaces"] = rows;
     out["beam1_optimality"] = b;
   }
+  if (s.against) {
+    const Summary::AgainstTally& t = *s.against;
+    const StatusCounts decided{t.optimal, t.suboptimal + t.invalid + t.no_answer, 0, 0};
+    const campaign::RateInterval i = decided.held_interval();
+    const auto gap = [](const std::pair<long, double>& g) {
+      return nlohmann::json{{"missing_samples", g.first}, {"measure", g.second}};
+    };
+    long sample_gaps = 0;
+    for (const auto& g : t.gaps) sample_gaps += g.first > 0;
+    nlohmann::json gaps = {{"suboptimal", static_cast<long>(t.gaps.size())}, {"with_missing_samples", sample_gaps}};
+    if (!t.gaps.empty()) {
+      gaps["median"] = gap(t.gaps[(t.gaps.size() - 1) / 2]);
+      gaps["max"] = gap(t.gaps.back());
+    }
+    out["against"] = {{"valid", t.valid()},         {"optimal", t.optimal},     {"suboptimal", t.suboptimal},
+                      {"invalid", t.invalid},       {"no_answer", t.no_answer}, {"undecided", t.undecided},
+                      {"not_run", t.not_run},       {"optimal_rate", decided.held_rate()},
+                      {"wilson95", {i.low, i.high}}, {"gap", gaps}};
+  }
   return out;
 }
 
@@ -178,7 +197,11 @@ std::string summary_table(const Summary& s) {
   for (const std::string& name : s.checks) {
     const auto info = std::find_if(catalogue.begin(), catalogue.end(),
                                    [&](const campaign::CheckInfo& c) { return name == c.name; });
-    out << "\n" << name << (info != catalogue.end() ? std::string(": ") + info->description : "") << "\n";
+    out << "\n" << name
+        << (info != catalogue.end()         ? std::string(": ") + info->description
+            : name == campaign::kAgainstCheck ? std::string(": their program's answer graded (held: optimal)")
+                                              : std::string())
+        << "\n";
     out << "  halfspaces   scenes     held  failed  skipped  stopped  held rate  95% interval (Wilson)\n";
     const auto it = s.by_check_and_halfspaces.find(name);
     if (it != s.by_check_and_halfspaces.end())
@@ -196,6 +219,27 @@ std::string summary_table(const Summary& s) {
     };
     for (const auto& [halfspaces, counts] : s.beam1_optimal_by_halfspaces) row(std::to_string(halfspaces), counts);
     row("all", s.beam1_optimal);
+  }
+  if (s.against) {
+    const Summary::AgainstTally& t = *s.against;
+    out << "\nagainst: their answers graded (by halfspaces: the against rows above, held = optimal)\n";
+    out << "  valid  optimal  suboptimal  invalid  no answer  undecided  not run\n";
+    out << "  " << std::setw(5) << t.valid() << std::setw(9) << t.optimal << std::setw(12) << t.suboptimal
+        << std::setw(9) << t.invalid << std::setw(11) << t.no_answer << std::setw(11) << t.undecided << std::setw(9)
+        << t.not_run << "\n";
+    if (!t.gaps.empty()) {
+      const auto gap = [](const std::pair<long, double>& g) {
+        std::ostringstream text;
+        text << g.first << " missing sample" << (g.first == 1 ? "" : "s") << ", measure " << std::setprecision(6)
+             << g.second;
+        return text.str();
+      };
+      long sample_gaps = 0;
+      for (const auto& g : t.gaps) sample_gaps += g.first > 0;
+      out << "  energy gap of the " << t.gaps.size() << " suboptimal answers (" << sample_gaps
+          << " missing more samples): median " << gap(t.gaps[(t.gaps.size() - 1) / 2]) << "; max "
+          << gap(t.gaps.back()) << "\n";
+    }
   }
   return out.str();
 }
@@ -240,7 +284,7 @@ CampaignFolder::CampaignFolder(const std::string& dir, const nlohmann::json& man
       }
       if (existing != manifest)
         throw InputError("--resume: " + manifest_path.string() +
-                         " was written for other settings (seed, plan, generator, checks or limits); resume with "
+                         " was written for other settings (seed, plan, generator, checks, limits or --against); resume with "
                          "the same options, or give a new folder");
       fresh = false;
     } else if (!fs::is_empty(path, ec)) {

@@ -12,8 +12,10 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
+#include <memory>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -449,4 +451,122 @@ TEST_CASE("campaign: beam K=1 optimality is tallied from beam1's witnesses", "[c
   CHECK_FALSE(summary_to_json(without).contains("beam1_optimality"));
   CHECK(summary_table(one).find("beam1 optimality") != std::string::npos);
   CHECK(summary_to_json(one)["beam1_optimality"]["sub_optimal"] == 1);
+}
+
+TEST_CASE("campaign: extra checks run on every arranged scene, after the catalogue's, on the worker threads",
+          "[campaign][against]") {
+  CampaignSettings s = small_settings();
+  s.checks = parse_check_list("existence");
+  auto calls = std::make_shared<std::atomic<int>>(0);
+  ExtraCheck cells;
+  cells.name = "cells";
+  cells.run = [calls](std::uint64_t index, const Scene2& scene, const Arranged2& arranged) {
+    ++*calls;
+    // Fails on odd indices, so that failing extra checks are kept like the catalogue's.
+    return CheckOutcome{"ignored", index % 2 ? CheckStatus::Failed : CheckStatus::Held,
+                        std::to_string(index) + ": " + std::to_string(arranged.complex.cells.size()) + " cells, " +
+                            std::to_string(scene.halfspaces.size()) + " halfspaces"};
+  };
+  s.extra.push_back(cells);
+  CHECK(recorded_checks(s) == std::vector<std::string>{"existence", "cells"});
+  const std::vector<SceneRecord> one = run_all(s, range(0, 12), 1);
+  CHECK(*calls == 12);
+  for (const SceneRecord& r : one) {
+    REQUIRE(r.checks.size() == 2);
+    CHECK(r.checks[0].check == "existence");
+    CHECK(r.checks[1].check == "cells");  // the name, whatever the function wrote
+    CHECK(r.checks[1].witness == std::to_string(r.index) + ": " + std::to_string(r.cells) + " cells, " +
+                                     std::to_string(r.halfspaces) + " halfspaces");
+    CHECK(r.failed() == (r.index % 2 == 1));
+    CHECK(r.scene.has_value() == r.failed());
+  }
+  CHECK(run_all(s, range(0, 12), 2) == one);
+  CHECK(run_all(s, range(0, 12), 3) == one);
+  Summary summary(recorded_checks(s));
+  for (const SceneRecord& r : one) summary.add(r);
+  CHECK(summary.by_check.at("cells").held == 6);
+  CHECK(summary.by_check.at("cells").failed == 6);
+  CHECK(summary.failed_scenes == 6);
+  CHECK_FALSE(summary.against.has_value());
+
+  // A refused scene: the extra check is skipped with the others, and its function is not called.
+  CampaignSettings refusing = s;
+  refusing.limits.max_cells = 1;
+  *calls = 0;
+  const SceneRecord refused = run_scene(refusing, 1);
+  CHECK(*calls == 0);
+  REQUIRE(refused.checks.size() == 2);
+  CHECK(refused.checks[1].check == "cells");
+  CHECK(refused.checks[1].status == CheckStatus::Skipped);
+
+  // What the function throws stops the campaign.
+  CampaignSettings throwing = s;
+  throwing.extra[0].run = [](std::uint64_t index, const Scene2&, const Arranged2&) -> CheckOutcome {
+    if (index == 5) throw std::runtime_error("no temporary folder");
+    return {"", CheckStatus::Held, ""};
+  };
+  CHECK_THROWS_AS(run_all(throwing, range(0, 12), 2), std::runtime_error);
+  CHECK_THROWS_AS(run_scene(throwing, 5), std::runtime_error);
+
+  // Names: not the catalogue's, not twice, not empty; a function.
+  CampaignSettings bad = s;
+  bad.extra[0].name = "beam1";
+  CHECK_THROWS_AS(validate(bad), InputError);
+  bad.extra[0].name = "";
+  CHECK_THROWS_AS(validate(bad), InputError);
+  bad = s;
+  bad.extra.push_back(cells);
+  CHECK_THROWS_AS(validate(bad), InputError);
+  bad = s;
+  bad.extra[0].run = nullptr;
+  CHECK_THROWS_AS(validate(bad), InputError);
+  CHECK_NOTHROW(validate(s));
+}
+
+TEST_CASE("campaign: the against check's verdicts and gaps are tallied from its witnesses", "[campaign][against]") {
+  SceneRecord r;
+  r.halfspaces = 3;
+  const auto with = [&](CheckStatus status, const std::string& witness) {
+    r.checks = {{"existence", CheckStatus::Held, "ok"}, {kAgainstCheck, status, witness}};
+    return r;
+  };
+  Summary s({"existence", kAgainstCheck});
+  REQUIRE(s.against.has_value());
+  s.add(with(CheckStatus::Held, "optimal: 0 missing samples, boundary length 4 = 4"));
+  s.add(with(CheckStatus::Failed, "suboptimal: gap 0 missing samples, measure 2.5; energy ..."));
+  s.add(with(CheckStatus::Failed, "suboptimal: gap 1 missing samples, measure -4; energy ..."));
+  s.add(with(CheckStatus::Failed, "suboptimal: gap 0 missing samples, measure 0.125; energy ..."));
+  s.add(with(CheckStatus::Failed, "invalid: not sample-connected (1 island without a sample); ..."));
+  s.add(with(CheckStatus::Failed, "no answer: exit status 9"));
+  s.add(with(CheckStatus::Stopped, "undecided: the reference search was stopped by max-states; ..."));
+  s.add(with(CheckStatus::Skipped, "not run: the scene was refused: too many cells"));
+  const Summary::AgainstTally& t = *s.against;
+  CHECK(t.optimal == 1);
+  CHECK(t.suboptimal == 3);
+  CHECK(t.invalid == 1);
+  CHECK(t.no_answer == 1);
+  CHECK(t.undecided == 1);
+  CHECK(t.not_run == 1);
+  CHECK(t.valid() == 5);
+  CHECK(t.gaps == std::vector<std::pair<long, double>>{{0, 0.125}, {0, 2.5}, {1, -4}});
+  CHECK(s.by_check.at(kAgainstCheck).held == 1);
+  CHECK(s.by_check.at(kAgainstCheck).failed == 5);
+  const nlohmann::json j = summary_to_json(s)["against"];
+  CHECK(j["valid"] == 5);
+  CHECK(j["no_answer"] == 1);
+  CHECK(j["gap"]["median"]["measure"] == 2.5);
+  CHECK(j["gap"]["max"]["missing_samples"] == 1);
+  CHECK(j["gap"]["with_missing_samples"] == 1);
+  CHECK(j["optimal_rate"] == 1.0 / 6);
+  const std::string table = summary_table(s);
+  CHECK(table.find("median 0 missing samples, measure 2.5; max 1 missing sample, measure -4") != std::string::npos);
+  // Witnesses outside the grammar are a bug of whoever wrote them.
+  CHECK_THROWS_AS(s.add(with(CheckStatus::Held, "suboptimal: gap 0 missing samples, measure 1; x")), std::logic_error);
+  CHECK_THROWS_AS(s.add(with(CheckStatus::Failed, "suboptimal: gap x missing samples, measure 1; x")),
+                  std::logic_error);
+  CHECK_THROWS_AS(s.add(with(CheckStatus::Failed, "worse")), std::logic_error);
+  CHECK_THROWS_AS(s.add(with(CheckStatus::Stopped, "optimal: 4")), std::logic_error);
+  // Without the against check there is no against table.
+  CHECK(summary_table(Summary(parse_check_list("prop52"))).find("their answers graded") == std::string::npos);
+  CHECK_FALSE(summary_to_json(Summary(parse_check_list("prop52"))).contains("against"));
 }

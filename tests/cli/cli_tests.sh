@@ -337,6 +337,25 @@ if ((rc == 2)) && grep -q -- "--cut-inputs needs --cuts" "$TMP/stderr.txt"; then
 "$HSX" bench --cuts --cut-scenes 0 >/dev/null 2>"$TMP/stderr.txt"
 rc=$?
 if ((rc == 2)) && grep -q -- "--cut-scenes" "$TMP/stderr.txt"; then pass; else fail "bench --cuts --cut-scenes 0 alone: exit $rc"; fi
+# ---- bench --campaign: the campaign runner's scenes per second on 1 and 2 threads, the records compared ----
+if "$HSX" bench --campaign --campaign-halfspaces 2,3 --campaign-scenes 10 --campaign-time-limit 0 --repetitions 1 \
+  --min-time 0 --json "$TMP/bench-campaign.json" >/dev/null 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = d["rows"]
+assert d["mode"] == "campaign" and [r["halfsp"] for r in rows] == [2, 3], rows
+for r in rows:
+    assert [s["stage"] for s in r["stages"]] == ["jobs 1", "jobs 2"], r
+    assert r["same"] == "yes" and r["timed out"] == "0/0" and float(r["scenes/s"]) > 0, r
+' "$TMP/bench-campaign.json"; then
+  pass
+else
+  fail "bench --campaign: $(head -c 300 "$TMP/stderr.txt")"
+fi
+"$HSX" bench --campaign --campaign-scenes 0 >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--campaign-scenes: at least 1" "$TMP/stderr.txt"; then pass; else fail "bench --campaign --campaign-scenes 0: exit $rc"; fi
 # ---- arrange/extract --labels: cell and patch ids in the picture ----
 if "$HSX" arrange "$ROOT/data/scenes/lens.json" --svg "$TMP/labels.svg" --labels -q &&
   grep -q 'class="cell-id"' "$TMP/labels.svg" && grep -q 'class="patch-id"' "$TMP/labels.svg"; then

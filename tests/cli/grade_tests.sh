@@ -14,25 +14,8 @@ set -u
 HSX="${1:?usage: grade_tests.sh HSX NAIVE_GRAPHCUT ROOT}"
 NAIVE="${2:?usage: grade_tests.sh HSX NAIVE_GRAPHCUT ROOT}"
 ROOT="${3:?usage: grade_tests.sh HSX NAIVE_GRAPHCUT ROOT}"
-TMP="$(mktemp -d "${TMPDIR:-/tmp}/hsx-grade-tests.XXXXXX")"
-trap 'rm -rf "$TMP"' EXIT
-
-passed=0
-failed=0
-pass() { passed=$((passed + 1)); }
-fail() {
-  failed=$((failed + 1))
-  echo "FAIL: $*" >&2
-}
-
-# expect_status STATUS DESCRIPTION COMMAND...: the command exits with STATUS.
-expect_status() {
-  local want="$1" what="$2"
-  shift 2
-  "$@" >"$TMP/out.txt" 2>"$TMP/err.txt"
-  local got=$?
-  if [[ $got == "$want" ]]; then pass; else fail "$what: exit $got, expected $want ($(head -c 300 "$TMP/err.txt"))"; fi
-}
+source "$(dirname "${BASH_SOURCE[0]}")/testlib.sh"
+testlib_init grade
 
 # json_field FILE EXPRESSION: prints a Python expression over the document d.
 json_field() { python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
@@ -163,5 +146,4 @@ expect_status 2 "an incomplete reference method" "$HSX" grade "$STAR" "$TMP/star
 mkdir "$TMP/dir.json"
 expect_status 2 "--json into a directory" "$HSX" grade "$STAR" "$TMP/star.plain.txt" --json "$TMP/dir.json"
 
-echo "$passed passed, $failed failed"
-[[ $failed == 0 ]]
+testlib_finish

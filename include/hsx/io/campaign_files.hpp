@@ -2,7 +2,8 @@
 //
 // The folder (CampaignFolder) holds, and hsx writes nothing else in it:
 //   campaign.json   the settings and the plan (format "hsx-campaign/1"), written first; a resumed campaign must
-//                   match it exactly
+//                   match it exactly (with --against, the CLI adds "against": {"command", "input",
+//                   "weight_scale"}, so a resume with another program is refused)
 //   results.jsonl   one JSON line per scene (record_to_json), in the plan's index order, each line flushed as it
 //                   is written; a line is complete when its newline is written
 //   failures/       scene-<index>.json: each scene with a failed check or an error, as an hsx-scene/1 file
@@ -55,10 +56,15 @@ campaign::SceneRecord record_from_json(const nlohmann::json& line);
 /// "failed_scenes", "checks": [{"check", "held", "failed", "skipped", "stopped", "held_rate", "wilson95": [low,
 /// high], "by_halfspaces": [{"halfspaces", the same counts, rate and interval}]}], and when beam1 is tallied
 /// "beam1_optimality": {"optimal", "sub_optimal", "rate", "wilson95", "by_halfspaces": [...]}
-/// (Summary::beam1_optimal)}; rates are held / (held + failed), 0 with an interval [0, 1] when no scene decided.
+/// (Summary::beam1_optimal)}, and when the against check is tallied "against": {"valid", "optimal", "suboptimal",
+/// "invalid", "no_answer", "undecided", "not_run", "optimal_rate" (optimal / (optimal + suboptimal + invalid + no
+/// answer)), "wilson95", "gap": {"suboptimal", "with_missing_samples" (gaps with M > 0), and when there is one
+/// "median" (the lower median) and "max", each {"missing_samples", "measure"} in lexicographic order}}
+/// (Summary::against); rates are held / (held + failed), 0 with an interval [0, 1] when no scene decided.
 nlohmann::json summary_to_json(const campaign::Summary& summary);
 /// The summary as a text table per check (rows by number of halfspaces, then "all"), with a first line of scene
-/// counts, and beam1's optimality table when beam1 is tallied. The same bytes for the same summary.
+/// counts, beam1's optimality table when beam1 is tallied, and the against verdicts and gap (median, max) when
+/// against is tallied. The same bytes for the same summary.
 std::string summary_table(const campaign::Summary& summary);
 
 /// The one-line note of a kept scene: which checks failed (or the error), the first failure's witness (cut at

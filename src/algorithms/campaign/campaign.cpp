@@ -85,10 +85,32 @@ bool is_selected(const std::vector<std::string>& checks, const std::string& name
   return std::find(checks.begin(), checks.end(), name) != checks.end();
 }
 
-/// Every selected check with one status and witness (a refused or failing scene).
+/// Every recorded check with one status and witness (a refused or failing scene).
 void all_checks(SceneRecord& r, const std::vector<std::string>& checks, CheckStatus status, const std::string& why) {
   r.checks.clear();
   for (const std::string& c : checks) r.checks.push_back({c, status, why});
+}
+
+/// The "suboptimal: gap M missing samples, measure D; ..." witness's (M, D); nullopt when it is not of that form.
+std::optional<std::pair<long, double>> against_gap(const std::string& witness) {
+  const std::string head = "suboptimal: gap ", mid = " missing samples, measure ";
+  if (!starts_with(witness, head)) return std::nullopt;
+  const std::size_t m_end = witness.find(mid, head.size());
+  if (m_end == std::string::npos) return std::nullopt;
+  const std::size_t d_begin = m_end + mid.size(), d_end = witness.find(';', d_begin);
+  if (d_end == std::string::npos) return std::nullopt;
+  const std::string m = witness.substr(head.size(), m_end - head.size()), d = witness.substr(d_begin, d_end - d_begin);
+  if (m.empty() || m.find_first_not_of("0123456789") != std::string::npos || m.size() > 12 || d.empty() ||
+      d.find_first_not_of("0123456789.-+e") != std::string::npos)
+    return std::nullopt;
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(d, &used);
+    if (used != d.size()) return std::nullopt;
+    return std::make_pair(std::stol(m), value);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -170,10 +192,25 @@ bool SceneRecord::operator==(const SceneRecord& o) const {
          note == o.note && timed_out == o.timed_out && checks == o.checks;
 }
 
+std::vector<std::string> recorded_checks(const CampaignSettings& s) {
+  std::vector<std::string> names = selected(s);
+  for (const ExtraCheck& e : s.extra) names.push_back(e.name);
+  return names;
+}
+
 void validate(const CampaignSettings& s) {
   for (const std::string& c : s.checks)
     if (!std::any_of(entries().begin(), entries().end(), [&](const Entry& e) { return c == e.info.name; }))
       throw InputError("checks: unknown check \"" + c + "\"");
+  for (std::size_t k = 0; k < s.extra.size(); ++k) {
+    const ExtraCheck& e = s.extra[k];
+    if (e.name.empty()) throw InputError("extra checks: an empty name");
+    if (std::any_of(entries().begin(), entries().end(), [&](const Entry& c) { return e.name == c.info.name; }))
+      throw InputError("extra checks: \"" + e.name + "\" is a catalogue check's name");
+    for (std::size_t j = 0; j < k; ++j)
+      if (s.extra[j].name == e.name) throw InputError("extra checks: \"" + e.name + "\" is named twice");
+    if (!e.run) throw InputError("extra checks: \"" + e.name + "\" has no function");
+  }
   if (s.brute_force_limit < 1) throw InputError("--max-labellings: must be at least 1");
   if (s.max_states < 0) throw InputError("--max-states: must be >= 0");
   if (s.max_graph_cuts < 0) throw InputError("--max-graph-cuts: must be >= 0");
@@ -191,7 +228,7 @@ void validate(const CampaignSettings& s) {
 }
 
 SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
-  const std::vector<std::string> checks = selected(s);
+  const std::vector<std::string> checks = recorded_checks(s);
   const Clock::time_point start = Clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   SceneRecord r;
@@ -216,8 +253,8 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
   r.halfspaces = static_cast<int>(scene.halfspaces.size());
   r.samples = static_cast<int>(scene.samples.size());
   for (Degeneracy d : generated->degeneracies) r.degeneracies.push_back(to_string(d));
+  std::optional<Arranged2> arranged;
   try {
-    std::optional<Arranged2> arranged;
     try {
       arranged = arrange(scene, s.limits);
     } catch (const InputError& e) {
@@ -261,8 +298,16 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
     r.outcome = SceneOutcome::Error;
     r.note = std::string("the library threw: ") + e.what();
     all_checks(r, checks, CheckStatus::Skipped, "not run: " + r.note);
+    arranged.reset();
   }
   r.timed_out = s.time_limit > 0 && elapsed() >= s.time_limit;
+  // The extra checks, outside the time limit and outside the try: what they throw is not the scene's outcome.
+  if (arranged)
+    for (const ExtraCheck& e : s.extra) {
+      CheckOutcome outcome = e.run(index, scene, *arranged);
+      outcome.check = e.name;
+      r.checks.push_back(std::move(outcome));
+    }
   if (r.failed()) r.scene = scene;
   return r;
 }
@@ -378,6 +423,7 @@ Summary::Summary(std::vector<std::string> c) : checks(std::move(c)) {
   if (checks.empty())
     for (const Entry& e : entries()) checks.push_back(e.info.name);
   for (const std::string& name : checks) by_check[name];
+  if (std::find(checks.begin(), checks.end(), kAgainstCheck) != checks.end()) against.emplace();
 }
 
 void Summary::add(const SceneRecord& record) {
@@ -402,6 +448,36 @@ void Summary::add(const SceneRecord& record) {
       const CheckStatus s = optimal ? CheckStatus::Held : CheckStatus::Failed;
       beam1_optimal.add(s);
       beam1_optimal_by_halfspaces[record.halfspaces].add(s);
+    }
+    if (c.check == kAgainstCheck) {
+      AgainstTally& t = *against;
+      const auto bad = [&] {
+        return std::logic_error("campaign summary: the against witness \"" + c.witness + "\" does not fit its " +
+                                to_string(c.status) + " status");
+      };
+      switch (c.status) {
+        case CheckStatus::Held:
+          if (!starts_with(c.witness, "optimal:")) throw bad();
+          ++t.optimal;
+          break;
+        case CheckStatus::Failed:
+          if (const auto gap = against_gap(c.witness)) {
+            ++t.suboptimal;
+            t.gaps.insert(std::upper_bound(t.gaps.begin(), t.gaps.end(), *gap), *gap);
+          } else if (starts_with(c.witness, "invalid:")) {
+            ++t.invalid;
+          } else if (starts_with(c.witness, "no answer:")) {
+            ++t.no_answer;
+          } else {
+            throw bad();
+          }
+          break;
+        case CheckStatus::Stopped:
+          if (!starts_with(c.witness, "undecided:")) throw bad();
+          ++t.undecided;
+          break;
+        case CheckStatus::Skipped: ++t.not_run; break;
+      }
     }
   }
 }

@@ -26,7 +26,12 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+namespace hsx {
+struct Arranged2;
+}
 
 namespace hsx::campaign {
 
@@ -103,8 +108,34 @@ struct SceneRecord {
   bool operator==(const SceneRecord& o) const;
 };
 
-/// A campaign's settings: which scenes, which checks, which limits. Everything here is part of a campaign's
-/// identity (io/campaign_files.hpp writes it to the folder, and a resumed campaign must match it).
+/// The name of the check that grades another program's answer (`hsx campaign --against`, docs/campaigns.md). Its
+/// witnesses start with the verdict, which Summary tallies:
+///   held:    "optimal: ENERGY"
+///   failed:  "suboptimal: gap M missing samples, measure D; ..." (M >= 0 a whole number, D a decimal; the energy
+///            is lexicographically larger than the optimum's), "invalid: ..." (not orientation-preserving or not
+///            sample-connected) or "no answer: ..." (the program failed, timed out or wrote no labelling)
+///   stopped: "undecided: ..." (a valid answer, but the reference was stopped by a limit or the energies did not
+///            separate at the precision cap)
+///   skipped: anything ("not run: ...": the scene was refused or the library threw on it)
+inline constexpr const char* kAgainstCheck = "against";
+
+/// A check computed outside the catalogue, by the caller (the CLI's --against runs another program; algorithms/
+/// may not run programs). It is recorded after the catalogue's checks, under `name`, on every scene.
+struct ExtraCheck {
+  std::string name;  ///< its short name in records and summaries (not a catalogue name)
+  /// Called once per arranged scene, after the catalogue's checks, on the worker thread that runs the scene (so it
+  /// must be safe to call from several threads at once): `index` is the scene's index, `scene` and `arranged` the
+  /// generated scene and its arrangement. Returns the outcome (its `check` is overwritten with `name`). For output
+  /// that is the same bytes for any number of jobs, the outcome must depend on the scene only. It is not called on
+  /// a refused scene or one the library threw on (the check is then Skipped like the others); an exception it
+  /// throws is not a scene's outcome: it stops the campaign (run_scenes rethrows it).
+  std::function<CheckOutcome(std::uint64_t index, const Scene2& scene, const Arranged2& arranged)> run;
+};
+
+/// A campaign's settings: which scenes, which checks, which limits. Everything here except `extra` is part of a
+/// campaign's identity (io/campaign_files.hpp writes it to the folder, and a resumed campaign must match it); the
+/// extra checks' names are recorded in every record, and whoever sets `extra` adds what determines them to the
+/// folder's manifest (the CLI writes --against's command and input kind there).
 struct CampaignSettings {
   RandomSceneSettings scene;        ///< the generator's settings
   std::uint64_t seed = 1;           ///< scene k is random_scene(scene, seed, k)
@@ -117,18 +148,26 @@ struct CampaignSettings {
   /// Seconds per scene for the arrangement and the checks together (0: none). A scene that reaches it is
   /// timed_out; the checks it cut are Stopped (or Skipped when no time was left for them).
   double time_limit = 0;
+  /// Checks run after the catalogue's on every arranged scene (their time is not counted in `time_limit`, and does
+  /// not make a scene timed_out); names must differ from the catalogue's and from each other (validate).
+  std::vector<ExtraCheck> extra;
 };
 
-/// Checks `settings` (the generator's ranges via random_scene's own validation, the checks' names, the limits)
-/// and throws InputError naming the first bad one.
+/// The names a campaign records on each scene: the selected catalogue checks (every one when `checks` is empty), in
+/// catalogue order, then the extra checks' names in their order. Summary takes this list.
+std::vector<std::string> recorded_checks(const CampaignSettings& settings);
+
+/// Checks `settings` (the generator's ranges via random_scene's own validation, the checks' names, the extra
+/// checks' names and functions, the limits) and throws InputError naming the first bad one.
 void validate(const CampaignSettings& settings);
 
-/// Scene `index` of the campaign: generated, arranged and checked. Never throws for a scene (a refusal or a
-/// library exception becomes the record's outcome); throws InputError only for invalid settings (validate).
+/// Scene `index` of the campaign: generated, arranged and checked (the catalogue's checks, then settings.extra's).
+/// Never throws for a scene (a refusal or a library exception becomes the record's outcome); throws InputError
+/// only for invalid settings (validate), and what an extra check's function throws.
 /// - `cancel`: empty, or asked where the time limit is (bsh::CheckOptions::cancel; thread-safe, it may be called
-///   from several scenes at once); once it returns true the running check stops and the rest are skipped, so the
-///   record is no longer the scene's reproducible one: a caller that cancels drops it. (The arrangement itself is
-///   not interrupted.) Not part of the campaign's identity.
+///   from several scenes at once); once it returns true the running catalogue check stops and the rest are skipped,
+///   so the record is no longer the scene's reproducible one: a caller that cancels drops it. (The arrangement and
+///   the extra checks are not interrupted.) Not part of the campaign's identity.
 SceneRecord run_scene(const CampaignSettings& settings, std::uint64_t index,
                       const std::function<bool()>& cancel = {});
 
@@ -182,9 +221,24 @@ struct Summary {
   StatusCounts beam1_optimal;
   std::map<int, StatusCounts> beam1_optimal_by_halfspaces;
 
+  /// The "against" check's verdicts (kAgainstCheck's witnesses), when it is tallied.
+  struct AgainstTally {
+    long optimal = 0, suboptimal = 0, invalid = 0, no_answer = 0;
+    long undecided = 0;  ///< stopped: a valid answer whose optimality was not decided
+    long not_run = 0;    ///< skipped: the scene was refused or the library threw on it
+    /// Answers that are valid BSH boundaries (orientation-preserving and sample-connected).
+    long valid() const { return optimal + suboptimal + undecided; }
+    /// The suboptimal answers' gaps (missing samples, measure as its witness's decimal), in increasing
+    /// lexicographic order (floating point: a statistic, the exact gaps are in the witnesses).
+    std::vector<std::pair<long, double>> gaps;
+  };
+  std::optional<AgainstTally> against;  ///< set when kAgainstCheck is among `checks`
+
+  /// `checks`: the tallied names (recorded_checks(settings)); empty: every catalogue check.
   explicit Summary(std::vector<std::string> checks = {});
-  /// Adds a record: its outcome, and each of its checks (a check not among `checks`, or a held beam1 whose witness
-  /// says neither optimal nor sub-optimal, is a logic_error).
+  /// Adds a record: its outcome, and each of its checks (a check not among `checks`, a held beam1 whose witness
+  /// says neither optimal nor sub-optimal, or an against witness outside kAgainstCheck's grammar, is a
+  /// logic_error).
   void add(const SceneRecord& record);
 };
 

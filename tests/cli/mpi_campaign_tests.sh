@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# `mpirun -np 2 hsx campaign` gives the same bytes as one process: usage: mpi_campaign_tests.sh HSX MPIEXEC
+# - results.jsonl, summary.json, campaign.json, the failures/ folder and the printed table are identical to a
+#   single-process run, on a campaign with a real failure (scene 80 of seed 1 at 8 halfspaces fails Prop. 5.1);
+# - a campaign cut short (its results.jsonl truncated, the last line torn) and resumed under mpirun equals the
+#   uninterrupted one;
+# - a folder rank 0 refuses stops every rank with exit 2 and leaves the folder as it was.
+# Prints "N passed, M failed" and exits non-zero when anything failed.
+set -u
+HSX="${1:?usage: mpi_campaign_tests.sh HSX MPIEXEC}"
+MPIEXEC="${2:?usage: mpi_campaign_tests.sh HSX MPIEXEC}"
+source "$(dirname "${BASH_SOURCE[0]}")/testlib.sh"
+testlib_init mpi-campaign
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1  # CI runs as root
+MPI=("$MPIEXEC" -np 2 --oversubscribe)
+
+same() {  # same A B WHAT
+  if diff -r "$1" "$2" >"$TMP/diff.txt" 2>&1; then pass; else fail "$3 differ: $(head -c 600 "$TMP/diff.txt")"; fi
+}
+
+ARGS=(campaign --seed 1 --start 70 --count 16 --halfspaces 8 --checks existence,prop51,beam1,uniqueness)
+"$HSX" "${ARGS[@]}" --out "$TMP/one" >"$TMP/one.txt" 2>"$TMP/one.err"
+one=$?
+"${MPI[@]}" "$HSX" "${ARGS[@]}" --out "$TMP/two" >"$TMP/two.txt" 2>"$TMP/two.err"
+two=$?
+[[ $one == 3 && $two == 3 ]] && pass || fail "exit statuses $one (one process) and $two (mpirun), expected 3 and 3: $(cat "$TMP/two.err")"
+same "$TMP/one" "$TMP/two" "the campaign folders"
+same "$TMP/one.txt" "$TMP/two.txt" "the printed tables"
+[[ -f "$TMP/two/failures/scene-80.json" ]] && pass || fail "mpirun: scene 80 not kept in failures/ ($(ls "$TMP/two/failures" 2>&1))"
+grep -q "2 MPI processes" "$TMP/two.err" && pass || fail "mpirun: the timing line does not count the processes: $(cat "$TMP/two.err")"
+
+# Cut short, then resumed under mpirun.
+cp -r "$TMP/one" "$TMP/cut"
+rm -rf "$TMP/cut/failures" "$TMP/cut/summary.json"
+head -n 9 "$TMP/one/results.jsonl" >"$TMP/cut/results.jsonl"
+sed -n 10p "$TMP/one/results.jsonl" | head -c 40 >>"$TMP/cut/results.jsonl"  # a torn last line
+# failures/ of the scenes already done are kept as the first run left them
+mkdir -p "$TMP/cut/failures"
+for f in "$TMP/one/failures"/*; do
+  k="$(basename "$f" .json)"
+  k="${k#scene-}"
+  head -n 9 "$TMP/one/results.jsonl" | grep -q "^{\"index\":$k," && cp "$f" "$TMP/cut/failures/"
+done
+"${MPI[@]}" "$HSX" "${ARGS[@]}" --out "$TMP/cut" --resume >"$TMP/cut.txt" 2>"$TMP/cut.err"
+[[ $? == 3 ]] && pass || fail "mpirun --resume exited $?: $(cat "$TMP/cut.err")"
+same "$TMP/one" "$TMP/cut" "the resumed campaign folder and the uninterrupted one"
+grep -q "resumed" "$TMP/cut.err" && pass || fail "mpirun --resume: no resume message: $(cat "$TMP/cut.err")"
+
+# A folder that is not a campaign's: rank 0 refuses, every rank stops, the folder is untouched.
+mkdir "$TMP/foreign"
+echo "mine" >"$TMP/foreign/notes.txt"
+timeout 60 "${MPI[@]}" "$HSX" "${ARGS[@]}" --out "$TMP/foreign" >"$TMP/f.txt" 2>"$TMP/f.err"
+status=$?
+[[ $status == 2 ]] && pass || fail "mpirun into a foreign folder exited $status, expected 2: $(cat "$TMP/f.err")"
+[[ "$(ls "$TMP/foreign")" == notes.txt && "$(cat "$TMP/foreign/notes.txt")" == mine ]] && pass ||
+  fail "the foreign folder was changed: $(ls "$TMP/foreign")"
+
+testlib_finish

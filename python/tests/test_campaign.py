@@ -156,3 +156,18 @@ def test_gil_released_while_waiting():
     assert spins > 10000
     assert len(got) == 1 and got[0].index == 2 and got[0].timed_out
     assert any(status in ("stopped", "skipped") for status, _ in got[0].checks.values())
+
+
+def test_a_failing_scene_comes_back_as_a_scene(hsx_program, tmp_path):
+    # scene 80 of seed 1 with 8 halfspaces fails Prop. 5.1 (data/counterexamples/prop51-campaign-seed1-scene80.json)
+    (r,) = hsx.campaign(seed=1, start=80, count=1, checks="prop51", min_halfspaces=8, max_halfspaces=8)
+    assert r.failed and r.checks["prop51"][0] == "failed"
+    s = r.scene()
+    assert isinstance(s, hsx.Scene) and s.degeneracies == r.degeneracies
+    assert s.to_json() == hsx.random_scene(1, 80, min_halfspaces=8, max_halfspaces=8, max_samples=6).to_json()
+    # the kept scene fails the same way under hsx.check and the CLI's
+    prop51 = [c for c in hsx.check(s) if c.name.startswith("Prop. 5.1")]
+    assert prop51 and prop51[0].status == "FAIL"
+    path = tmp_path / "scene80.json"
+    path.write_text(s.to_json())
+    assert subprocess.run([hsx_program, "check", str(path)], capture_output=True, text=True).returncode == 3

@@ -206,6 +206,20 @@ struct StatusCounts {
   void add(CheckStatus s);
 };
 
+/// The "against" check's verdicts (kAgainstCheck's witnesses), when it is tallied (Summary::against). A
+/// namespace-level struct, not nested in Summary: clang 14 cannot default-construct a nested struct with member
+/// initializers inside std::optional while the enclosing class is incomplete.
+struct AgainstTally {
+  long optimal = 0, suboptimal = 0, invalid = 0, no_answer = 0;
+  long undecided = 0;  ///< stopped: a valid answer whose optimality was not decided
+  long not_run = 0;    ///< skipped: the scene was refused or the library threw on it
+  /// Answers that are valid BSH boundaries (orientation-preserving and sample-connected).
+  long valid() const { return optimal + suboptimal + undecided; }
+  /// The suboptimal answers' gaps (missing samples, measure as its witness's decimal), in increasing
+  /// lexicographic order (floating point: a statistic, the exact gaps are in the witnesses).
+  std::vector<std::pair<long, double>> gaps;
+};
+
 /// A campaign's tallies: per check, in all and by the scenes' number of halfspaces.
 struct Summary {
   long scenes = 0, checked = 0, refused = 0, errors = 0, timed_out = 0;
@@ -221,17 +235,7 @@ struct Summary {
   StatusCounts beam1_optimal;
   std::map<int, StatusCounts> beam1_optimal_by_halfspaces;
 
-  /// The "against" check's verdicts (kAgainstCheck's witnesses), when it is tallied.
-  struct AgainstTally {
-    long optimal = 0, suboptimal = 0, invalid = 0, no_answer = 0;
-    long undecided = 0;  ///< stopped: a valid answer whose optimality was not decided
-    long not_run = 0;    ///< skipped: the scene was refused or the library threw on it
-    /// Answers that are valid BSH boundaries (orientation-preserving and sample-connected).
-    long valid() const { return optimal + suboptimal + undecided; }
-    /// The suboptimal answers' gaps (missing samples, measure as its witness's decimal), in increasing
-    /// lexicographic order (floating point: a statistic, the exact gaps are in the witnesses).
-    std::vector<std::pair<long, double>> gaps;
-  };
+  using AgainstTally = campaign::AgainstTally;
   std::optional<AgainstTally> against;  ///< set when kAgainstCheck is among `checks`
 
   /// `checks`: the tallied names (recorded_checks(settings)); empty: every catalogue check.

@@ -17,20 +17,6 @@ namespace {
 using campaign::CheckOutcome;
 using campaign::CheckStatus;
 
-/// " name#patch ..." of the support groups on one boundary and not the other, each as its patch with the
-/// boundary's orientation; " none" when there is none.
-std::string only_on(const Complex& c, const std::vector<int>& a, const std::vector<int>& b,
-                    const bsh::Labelling& labelling) {
-  std::vector<int> only;
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only));
-  std::string s;
-  for (int g : only) {
-    const int p = oriented_patch(c, g, labelling);
-    s += " " + c.halfspace_names[c.patches[p].halfspace] + "#" + std::to_string(p);
-  }
-  return s.empty() ? " none" : s;
-}
-
 CheckOutcome grade_answer(const Complex& c, const bsh::Labelling& theirs, const bsh::ExtractOptions& oracle) {
   const bsh::Problem problem(c);
   bsh::Grade g = bsh::grade(problem, theirs, oracle);
@@ -41,10 +27,8 @@ CheckOutcome grade_answer(const Complex& c, const bsh::Labelling& theirs, const 
     exact.method = bsh::Method::Exact;
     g = bsh::grade(problem, theirs, exact);
   }
-  const std::vector<int> a = bsh::boundary_supports(problem, theirs),
-                         b = bsh::boundary_supports(problem, g.optimum.labelling);
-  const std::string where = "; theirs only:" + only_on(c, a, b, theirs) + "; optimum only:" +
-                            only_on(c, b, a, g.optimum.labelling);
+  const BoundaryDifference d = boundary_difference(problem, c, theirs, g.optimum.labelling);
+  const std::string where = "; theirs only:" + patch_list(c, d.theirs_only) + "; optimum only:" + patch_list(c, d.optimum_only);
   const std::string energies =
       "energy " + energy_text(g.energy, c.dimension) + ", optimum " + energy_text(g.optimum.energy, c.dimension);
   if (!g.orientation_preserving)

@@ -68,6 +68,16 @@ std::string measure_text(const Measure& m);
 /// An energy for a summary: "N missing samples, boundary length|area M" (measure_text).
 std::string energy_text(const bsh::Energy& e, int dimension);
 
+/// Where a graded boundary and the optimum's differ: the support groups on one and not the other, each as its
+/// patch with that boundary's orientation (result_json.hpp oriented_patch). Defined in grade_command.cpp.
+struct BoundaryDifference {
+  std::vector<int> theirs_only, optimum_only;
+};
+BoundaryDifference boundary_difference(const bsh::Problem& problem, const Complex& c, const bsh::Labelling& theirs,
+                                       const bsh::Labelling& optimum);
+/// " name#patch ..." for `patches` (name: the patch's halfspace), " none" when empty.
+std::string patch_list(const Complex& c, const std::vector<int>& patches);
+
 void add_arrange_command(CLI::App& app);
 void add_extract_command(CLI::App& app);
 void add_check_command(CLI::App& app);

@@ -18,6 +18,25 @@
 #include <sstream>
 
 namespace hsx::cli {
+
+BoundaryDifference boundary_difference(const bsh::Problem& problem, const Complex& c, const bsh::Labelling& theirs,
+                                       const bsh::Labelling& optimum) {
+  const std::vector<int> a = bsh::boundary_supports(problem, theirs), b = bsh::boundary_supports(problem, optimum);
+  std::vector<int> only_a, only_b;
+  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only_a));
+  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only_b));
+  BoundaryDifference d;
+  for (int g : only_a) d.theirs_only.push_back(oriented_patch(c, g, theirs));
+  for (int g : only_b) d.optimum_only.push_back(oriented_patch(c, g, optimum));
+  return d;
+}
+
+std::string patch_list(const Complex& c, const std::vector<int>& patches) {
+  std::string s;
+  for (int p : patches) s += " " + c.halfspace_names[c.patches[p].halfspace] + "#" + std::to_string(p);
+  return s.empty() ? " none" : s;
+}
+
 namespace {
 
 struct GradeCommandOptions {
@@ -80,24 +99,6 @@ bsh::ExtractOptions oracle_options(const GradeCommandOptions& o) {
   return options;
 }
 
-/// Where the graded boundary and the optimum's differ: the support groups on one and not the other, as the patch
-/// with the boundary's orientation (result_json.hpp oriented_patch).
-struct BoundaryDifference {
-  std::vector<int> theirs_only, optimum_only;
-};
-
-BoundaryDifference boundary_difference(const bsh::Problem& problem, const Complex& c, const bsh::Labelling& theirs,
-                                       const bsh::Labelling& optimum) {
-  const std::vector<int> a = bsh::boundary_supports(problem, theirs), b = bsh::boundary_supports(problem, optimum);
-  std::vector<int> only_a, only_b;
-  std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(only_a));
-  std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(only_b));
-  BoundaryDifference d;
-  for (int g : only_a) d.theirs_only.push_back(oriented_patch(c, g, theirs));
-  for (int g : only_b) d.optimum_only.push_back(oriented_patch(c, g, optimum));
-  return d;
-}
-
 nlohmann::json energy_json(const bsh::Energy& e) {
   return {{"missing_samples", e.missing_samples}, {"measure", measure_to_json(e.measure())}};
 }
@@ -142,12 +143,6 @@ nlohmann::json run_json(const GradeCommandOptions& o, const ExternalRun& r) {
                       {"exit_status", r.exit_status}, {"seconds", r.seconds}, {"output_tail", r.output_tail}};
   if (!r.problem.empty()) j["problem"] = r.problem;
   return j;
-}
-
-std::string patch_list(const Complex& c, const std::vector<int>& patches) {
-  std::string s;
-  for (int p : patches) s += " " + c.halfspace_names[c.patches[p].halfspace] + "#" + std::to_string(p);
-  return s.empty() ? " none" : s;
 }
 
 std::string summary(const GradeCommandOptions& o, const Complex& c, LabellingFormat format, const bsh::Grade& g,

@@ -24,7 +24,8 @@ struct CampaignCommandOptions {
   bool count_given = false;
   std::string shard = "0/1";
   int jobs = 1;
-  std::string checks = "all";
+  std::string checks = "default";
+  std::string sample_policy = "uniform";
   bool list_checks = false;
   std::string out_dir;
   bool resume = false;
@@ -199,6 +200,9 @@ int run_campaign(const CampaignCommandOptions& o) {
   parse_kinds(o.kinds, settings.scene);
   parse_weights(o.weights, settings.scene);
   settings.checks = campaign::parse_check_list(o.checks);
+  const std::optional<campaign::SamplePolicy> policy = campaign::sample_policy_from_string(o.sample_policy);
+  if (!policy) throw InputError("--sample-policy: uniform or intended, not \"" + o.sample_policy + "\"");
+  settings.sample_policy = *policy;
   const std::optional<ExternalSolver> against = against_solver(o);
   if (against) settings.extra.push_back(against_check(*against, settings));
   campaign::validate(settings);
@@ -283,8 +287,9 @@ void add_campaign_command(CLI::App& app) {
                   "are the whole range");
   cmd->add_option("--jobs", o->jobs, "threads (default 1); the output is the same bytes for any number");
   cmd->add_option("--checks", o->checks,
-                  "comma-separated check names, or all (default); see --list-checks. Only the named checks are "
-                  "computed (each as in a full run), recorded, counted, and able to fail a scene");
+                  "comma-separated check names, default (check_all's nine: the default) or all; see --list-checks. "
+                  "Only the named checks are computed (each as in a full run), recorded, counted, and able to fail "
+                  "a scene");
   cmd->add_flag("--list-checks", o->list_checks, "print the check names and what each checks, then exit");
   cmd->add_option("--out", o->out_dir,
                   "folder for campaign.json, results.jsonl (one line per scene), failures/ and summary.json: a new "
@@ -329,6 +334,9 @@ void add_campaign_command(CLI::App& app) {
   cmd->add_option("--degeneracy-weights", o->weights,
                   "NAME=W,...: relative weights of the patterns (default 1 each; 0: never), NAME as in "
                   "geometry/random_scene.hpp (RepeatedHalfspace, ConcurrentLines, ...)");
+  cmd->add_option("--sample-policy", o->sample_policy,
+                  "uniform (default: up to --samples samples on the boundaries) or intended (a random "
+                  "orientation-preserving shape, sampled once per boundary component; docs/campaigns.md)");
   cmd->add_option("--samples", o->settings.scene.max_samples,
                   "up to N samples per scene, each on a patch (default 6; 0: none)");
   cmd->add_option("--near-percent", o->settings.scene.near_percent,

@@ -29,8 +29,8 @@ nlohmann::json campaign_to_json(const campaign::CampaignSettings& s, const Campa
   for (int k = 0; k < kDegeneracyCount; ++k)
     weights[to_string(static_cast<Degeneracy>(k))] = g.degeneracy_weight[static_cast<std::size_t>(k)];
   nlohmann::json checks = nlohmann::json::array();
-  for (const std::string& c : s.checks.empty() ? campaign::parse_check_list("all") : s.checks) checks.push_back(c);
-  return {{"format", kCampaignFormat},
+  for (const std::string& c : s.checks.empty() ? campaign::default_checks() : s.checks) checks.push_back(c);
+  nlohmann::json out = {{"format", kCampaignFormat},
           {"seed", s.seed},
           {"plan", {{"start", plan.start}, {"count", plan.count}, {"shard", plan.shard}, {"shards", plan.shards}}},
           {"generator",
@@ -57,6 +57,10 @@ nlohmann::json campaign_to_json(const campaign::CampaignSettings& s, const Campa
             {"max_graph_cuts", s.max_graph_cuts},
             {"precision_bits", s.precision_bits},
             {"time_limit", s.time_limit}}}};
+  // Only when not the default, so that the manifests of uniform campaigns stay as before.
+  if (s.sample_policy != campaign::SamplePolicy::Uniform)
+    out["generator"]["sample_policy"] = campaign::to_string(s.sample_policy);
+  return out;
 }
 
 nlohmann::ordered_json record_to_json(const SceneRecord& r) {
@@ -68,6 +72,7 @@ nlohmann::ordered_json record_to_json(const SceneRecord& r) {
                               {"degeneracies", r.degeneracies}, {"outcome", to_string(r.outcome)}};
   if (!r.note.empty()) j["note"] = r.note;
   if (r.timed_out) j["timed_out"] = true;
+  if (!r.intended.empty()) j["intended"] = r.intended;
   j["checks"] = checks;
   return j;
 }
@@ -122,6 +127,7 @@ SceneRecord record_from_json(const nlohmann::json& j) {
   r.outcome = *outcome;
   if (j.contains("note")) r.note = field<std::string>(j, "note");
   if (j.contains("timed_out")) r.timed_out = field<bool>(j, "timed_out");
+  if (j.contains("intended")) r.intended = field<std::vector<int>>(j, "intended");
   const nlohmann::json checks = field<nlohmann::json>(j, "checks");
   if (!checks.is_array()) throw InputError("field \"checks\" is not a list");
   for (const nlohmann::json& c : checks) {
@@ -151,21 +157,23 @@ nlohmann::json summary_to_json(const Summary& s) {
   nlohmann::json out = {{"format", kCampaignSummaryFormat}, {"scenes", s.scenes},       {"checked", s.checked},
                         {"refused", s.refused},             {"errors", s.errors},       {"timed_out", s.timed_out},
                         {"failed_scenes", s.failed_scenes}, {"checks", checks}};
-  if (std::find(s.checks.begin(), s.checks.end(), "beam1") != s.checks.end()) {
+  for (const auto& [beam, total] : s.beam_optimal) {
     const auto optimality = [](const StatusCounts& c) {
       const campaign::RateInterval i = c.held_interval();
       return nlohmann::json{{"optimal", c.held}, {"sub_optimal", c.failed}, {"rate", c.held_rate()},
                             {"wilson95", {i.low, i.high}}};
     };
-    nlohmann::json b = optimality(s.beam1_optimal);
+    nlohmann::json b = optimality(total);
     nlohmann::json rows = nlohmann::json::array();
-    for (const auto& [halfspaces, counts] : s.beam1_optimal_by_halfspaces) {
-      nlohmann::json row = optimality(counts);
-      row["halfspaces"] = halfspaces;
-      rows.push_back(row);
-    }
+    const auto it = s.beam_optimal_by_halfspaces.find(beam);
+    if (it != s.beam_optimal_by_halfspaces.end())
+      for (const auto& [halfspaces, counts] : it->second) {
+        nlohmann::json row = optimality(counts);
+        row["halfspaces"] = halfspaces;
+        rows.push_back(row);
+      }
     b["by_halfspaces"] = rows;
-    out["beam1_optimality"] = b;
+    out[beam + "_optimality"] = b;
   }
   if (s.against) {
     const Summary::AgainstTally& t = *s.against;
@@ -208,8 +216,9 @@ std::string summary_table(const Summary& s) {
       for (const auto& [halfspaces, counts] : it->second) out << counts_row(std::to_string(halfspaces), counts);
     out << counts_row("all", s.by_check.at(name));
   }
-  if (std::find(s.checks.begin(), s.checks.end(), "beam1") != s.checks.end()) {
-    out << "\nbeam1 optimality: the K=1 beam's energy equals the optimum, on the scenes where beam1 held\n";
+  for (const auto& [beam, total] : s.beam_optimal) {
+    out << "\n" << beam << " optimality: the K=" << beam.substr(4) << " beam's energy equals the optimum, on the scenes where "
+        << beam << " held\n";
     out << "  halfspaces  optimal  sub-optimal       rate  95% interval (Wilson)\n";
     const auto row = [&](const std::string& label, const StatusCounts& c) {
       const campaign::RateInterval i = c.held_interval();
@@ -217,8 +226,10 @@ std::string summary_table(const Summary& s) {
           << (c.held + c.failed ? percent(c.held_rate()) : "-") << "  "
           << (c.held + c.failed ? "[" + percent(i.low) + ", " + percent(i.high) + "]" : "-") << "\n";
     };
-    for (const auto& [halfspaces, counts] : s.beam1_optimal_by_halfspaces) row(std::to_string(halfspaces), counts);
-    row("all", s.beam1_optimal);
+    const auto it = s.beam_optimal_by_halfspaces.find(beam);
+    if (it != s.beam_optimal_by_halfspaces.end())
+      for (const auto& [halfspaces, counts] : it->second) row(std::to_string(halfspaces), counts);
+    row("all", total);
   }
   if (s.against) {
     const Summary::AgainstTally& t = *s.against;

@@ -3,7 +3,10 @@
 // resumed after a torn last line writes the same bytes as one never interrupted; the folder policy; Wilson
 // intervals against known values; failing scenes kept as loadable scene files.
 #include <hsx/algorithms/bsh/checks.hpp>
+#include <hsx/algorithms/bsh/sample_scene.hpp>
+#include <hsx/algorithms/bsh/samples.hpp>
 #include <hsx/algorithms/campaign/campaign.hpp>
+#include <hsx/algorithms/campaign/scene_checks.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
 #include <hsx/io/campaign_files.hpp>
 #include <hsx/io/files.hpp>
@@ -86,10 +89,16 @@ void run_into(const std::string& dir, const CampaignSettings& s, const CampaignP
 TEST_CASE("campaign: the catalogue's names, and --checks lists", "[campaign]") {
   std::vector<std::string> names;
   for (const CheckInfo& c : check_catalogue()) names.push_back(c.name);
-  CHECK(names == std::vector<std::string>{"existence", "prop52", "prop51", "beam1", "prop41-optimum", "prop41-beam",
-                                          "uniqueness", "certificates", "manifold"});
+  const std::vector<std::string> nine = {"existence",   "prop52",     "prop51",       "beam1",   "prop41-optimum",
+                                         "prop41-beam", "uniqueness", "certificates", "manifold"};
+  std::vector<std::string> every = nine;
+  for (const char* own : {"prop61", "propB1", "beam2", "beam4", "describability", "nhrep"}) every.push_back(own);
+  CHECK(names == every);
   CHECK(parse_check_list("all") == names);
-  CHECK(parse_check_list("") == names);
+  CHECK(default_checks() == nine);
+  CHECK(parse_check_list("") == nine);
+  CHECK(parse_check_list("default") == nine);
+  CHECK(parse_check_list("nhrep,beam1,prop61") == std::vector<std::string>{"beam1", "prop61", "nhrep"});
   CHECK(parse_check_list("manifold,prop52") == std::vector<std::string>{"prop52", "manifold"});
   CHECK_THROWS_AS(parse_check_list("prop52,prop99"), InputError);
   CHECK_THROWS_AS(parse_check_list("prop52,prop52"), InputError);
@@ -143,7 +152,8 @@ TEST_CASE("campaign: each check alone gives what it gives in a full run", "[camp
   s.scene.min_halfspaces = 4;
   s.scene.max_halfspaces = 6;
   for (std::uint64_t index = 0; index < 6; ++index) {
-    s.checks.clear();
+    s.checks = parse_check_list("all");
+    s.sample_policy = index % 2 ? SamplePolicy::Intended : SamplePolicy::Uniform;
     const SceneRecord all = run_scene(s, index);
     REQUIRE(all.checks.size() == check_catalogue().size());
     for (std::size_t k = 0; k < check_catalogue().size(); ++k) {
@@ -241,7 +251,7 @@ TEST_CASE("campaign: a refused scene and a spent time limit are recorded, not dr
   const SceneRecord refused = run_scene(s, 3);
   CHECK(refused.outcome == SceneOutcome::Refused);
   CHECK_FALSE(refused.note.empty());
-  REQUIRE(refused.checks.size() == check_catalogue().size());
+  REQUIRE(refused.checks.size() == default_checks().size());
   for (const CheckOutcome& c : refused.checks) {
     CHECK(c.status == CheckStatus::Skipped);
     CHECK(c.witness.find("refused") != std::string::npos);
@@ -569,4 +579,165 @@ TEST_CASE("campaign: the against check's verdicts and gaps are tallied from its 
   // Without the against check there is no against table.
   CHECK(summary_table(Summary(parse_check_list("prop52"))).find("their answers graded") == std::string::npos);
   CHECK_FALSE(summary_to_json(Summary(parse_check_list("prop52"))).contains("against"));
+}
+
+TEST_CASE("campaign: the intended sample policy samples an orientation-preserving shape once per component",
+          "[campaign][intended]") {
+  CampaignSettings s = small_settings();
+  s.sample_policy = SamplePolicy::Intended;
+  s.checks = parse_check_list("prop61,propB1,describability,nhrep");
+  int with_shape = 0, prop61_held = 0;
+  for (std::uint64_t index = 0; index < 12; ++index) {
+    const SceneRecord r = run_scene(s, index);
+    REQUIRE(r.outcome == SceneOutcome::Checked);
+    CHECK(r == run_scene(s, index));  // reproducible from (settings, index)
+    // The scene is random_scene's without samples, then GENERATE-SAMPLES' initial samples of the intended shape.
+    RandomSceneSettings bare = s.scene;
+    bare.max_samples = 0;
+    const Scene2 unsampled = random_scene(bare, s.seed, index).scene;
+    CHECK(r.halfspaces == static_cast<int>(unsampled.halfspaces.size()));
+    const Arranged2 a = arrange(unsampled);
+    REQUIRE(r.cells == static_cast<long>(a.complex.cells.size()));
+    bsh::Labelling solid(a.complex.cells.size(), 0);
+    for (int c : r.intended) solid.at(static_cast<std::size_t>(c)) = 1;
+    CHECK(bsh::is_orientation_preserving(bsh::Problem(a.complex), solid));
+    for (int c : r.intended) CHECK_FALSE(a.complex.cells[static_cast<std::size_t>(c)].outer);
+    CHECK(r.samples == static_cast<int>(bsh::initial_samples(a.complex, solid).size()));
+    with_shape += !r.intended.empty();
+    REQUIRE(r.checks.size() == 4);
+    CHECK(r.checks[0].check == "prop61");
+    CHECK(r.checks[0].status != CheckStatus::Skipped);
+    prop61_held += r.checks[0].status == CheckStatus::Held;
+    CHECK_FALSE(r.failed());
+  }
+  CHECK(with_shape >= 8);
+  CHECK(prop61_held >= 8);
+  // Under the uniform policy there is no intended shape: prop61 and propB1 are skipped, with why.
+  s.sample_policy = SamplePolicy::Uniform;
+  const SceneRecord u = run_scene(s, 1);
+  CHECK(u.intended.empty());
+  CHECK(u.checks[0].status == CheckStatus::Skipped);
+  CHECK(u.checks[0].witness.find("no intended shape") != std::string::npos);
+  CHECK(u.checks[1].status == CheckStatus::Skipped);
+  CHECK(u.checks[2].witness.find("the optimum") != std::string::npos);
+  // The policy's name round-trips and the manifest names it (uniform manifests are unchanged).
+  CHECK(sample_policy_from_string(to_string(SamplePolicy::Intended)) == SamplePolicy::Intended);
+  CHECK_FALSE(sample_policy_from_string("random"));
+  CampaignSettings i = small_settings();
+  i.sample_policy = SamplePolicy::Intended;
+  CHECK(campaign_to_json(i, CampaignPlan{})["generator"]["sample_policy"] == "intended");
+  CHECK_FALSE(campaign_to_json(small_settings(), CampaignPlan{})["generator"].contains("sample_policy"));
+}
+
+TEST_CASE("campaign: the new checks can fail", "[campaign][intended]") {
+  CampaignSettings s = small_settings();
+  s.sample_policy = SamplePolicy::Intended;
+  // A scene with samples and a non-empty optimum.
+  std::optional<Arranged2> a;
+  for (std::uint64_t index = 0; !a; ++index) {
+    REQUIRE(index < 40);
+    const SceneRecord r = run_scene(s, index);
+    if (r.intended.size() < 2) continue;
+    RandomSceneSettings bare = s.scene;
+    bare.max_samples = 0;
+    // Regenerate the sampled scene as run_scene does (the record does not hold it unless it failed).
+    const Scene2 unsampled = random_scene(bare, s.seed, index).scene;
+    const Arranged2 bare_arranged = arrange(unsampled);
+    bsh::Labelling solid(bare_arranged.complex.cells.size(), 0);
+    for (int c : r.intended) solid[static_cast<std::size_t>(c)] = 1;
+    Scene2 sampled = bsh::scene_with_samples(unsampled, bare_arranged, bsh::initial_samples(bare_arranged.complex, solid), "");
+    validate_and_resolve(sampled);
+    a = arrange(sampled);
+  }
+  const Complex& complex = a->complex;
+  const CheckLimits limits;
+  const bsh::Problem problem(complex);
+
+  // Props. 6.1 / B.1 on a target that is not orientation-preserving (a broken input): failed.
+  bsh::Labelling broken(complex.cells.size(), 0);
+  bool made = false;
+  for (const Patch& p : complex.patches) {
+    broken.assign(complex.cells.size(), 0);
+    broken[static_cast<std::size_t>(p.outside_cell)] = 1;
+    if (!bsh::is_orientation_preserving(problem, broken)) {
+      made = true;
+      break;
+    }
+  }
+  REQUIRE(made);
+  for (bsh::Method m : {bsh::Method::BestFirst, bsh::Method::Beam}) {
+    const CheckOutcome o = check_generate_samples("prop61", complex, broken, m, limits);
+    CHECK(o.status == CheckStatus::Failed);
+    CHECK(o.witness.find("not orientation-preserving") != std::string::npos);
+  }
+
+  // K-beam optimality against a wrong "optimum" (the empty boundary, which misses every sample): failed.
+  const bsh::ExtractResult optimum = reference_optimum(complex, limits);
+  REQUIRE(optimum.optimal);
+  for (int k : {1, 2, 4}) {
+    const CheckOutcome good = check_beam_optimality("beam2", complex, k, optimum, limits);
+    CHECK(good.status == CheckStatus::Held);
+    CHECK((good.witness.rfind("optimal: ", 0) == 0 || good.witness.rfind("sub-optimal: ", 0) == 0));
+  }
+  bsh::ExtractResult wrong = optimum;
+  wrong.labelling.assign(complex.cells.size(), 0);
+  wrong.energy = bsh::energy(problem, wrong.labelling);
+  REQUIRE(wrong.energy.missing_samples > 0);
+  const CheckOutcome below = check_beam_optimality("beam2", complex, 2, wrong, limits);
+  CHECK(below.status == CheckStatus::Failed);
+  CHECK(below.witness.find("below the optimum") != std::string::npos);
+  bsh::ExtractResult unproven = optimum;
+  unproven.stopped_by = "max-states";
+  CHECK(check_beam_optimality("beam4", complex, 4, unproven, limits).status == CheckStatus::Stopped);
+
+  // Describability against BHC: agreeing verdicts hold, disagreeing ones fail.
+  const CheckOutcome agree = check_describability("describability", complex, optimum.labelling, "the optimum");
+  CHECK(agree.status == CheckStatus::Held);
+  csg::Describability d = csg::describability(complex, optimum.labelling);
+  csg::BhcResult b = csg::bhc(complex, optimum.labelling);
+  CHECK(describability_outcome("describability", d, b, "the optimum", static_cast<long>(complex.cells.size())) == agree);
+  csg::BhcResult flipped = b;
+  flipped.describable = !b.describable;
+  CHECK(describability_outcome("describability", d, flipped, "x", 1).status == CheckStatus::Failed);
+  if (b.describable) {
+    csg::BhcResult unverified = b;
+    unverified.verified = false;
+    CHECK(describability_outcome("describability", d, unverified, "x", 1).status == CheckStatus::Failed);
+  }
+
+  // NH-Rep: a survey outcome with a violated structural check fails; empty solids are skipped, with why.
+  nhrep::SurveyOutcome bad;
+  bad.status = csg::SolidStatus::Bounded;
+  bad.problems = {"check_tree: parent and child ops agree"};
+  const CheckOutcome nh_bad = nhrep_outcome("nhrep", bad, "the optimum");
+  CHECK(nh_bad.status == CheckStatus::Failed);
+  CHECK(nh_bad.witness.find("check_tree") != std::string::npos);
+  const CheckOutcome nh_empty =
+      check_nhrep("nhrep", Scene2{}, *a, bsh::Labelling(complex.cells.size(), 0), "the optimum");
+  CHECK(nh_empty.status == CheckStatus::Skipped);
+  CHECK(nh_empty.witness.find("empty") != std::string::npos);
+}
+
+TEST_CASE("campaign: the K-beam optimality of beam2 and beam4 is tallied like beam1's", "[campaign]") {
+  Summary summary(parse_check_list("beam1,beam2,beam4"));
+  REQUIRE(summary.beam_optimal.size() == 3);
+  SceneRecord r;
+  r.halfspaces = 3;
+  r.checks = {{"beam1", CheckStatus::Held, "sub-optimal: 0 missing / 3"},
+              {"beam2", CheckStatus::Held, "optimal: 0 missing / 2"},
+              {"beam4", CheckStatus::Failed, "beam K=4 ... (below the optimum)"}};
+  summary.add(r);
+  CHECK(summary.beam_optimal.at("beam1").failed == 1);
+  CHECK(summary.beam1_optimal.failed == 1);
+  CHECK(summary.beam_optimal.at("beam2").held == 1);
+  CHECK(summary.beam_optimal_by_halfspaces.at("beam2").at(3).held == 1);
+  CHECK(summary.beam_optimal.at("beam4").total() == 0);  // a failed check is not a rate
+  CHECK(summary.by_check.at("beam4").failed == 1);
+  const nlohmann::json j = summary_to_json(summary);
+  CHECK(j["beam2_optimality"]["optimal"] == 1);
+  CHECK(j.contains("beam4_optimality"));
+  const std::string table = summary_table(summary);
+  CHECK(table.find("beam2 optimality: the K=2 beam") != std::string::npos);
+  r.checks = {{"beam1", CheckStatus::Held, "optimal: 1"}, {"beam2", CheckStatus::Held, "neither"}, {"beam4", CheckStatus::Skipped, "x"}};
+  CHECK_THROWS_AS(summary.add(r), std::logic_error);
 }

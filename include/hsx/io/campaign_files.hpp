@@ -40,13 +40,14 @@ struct CampaignPlan {
 };
 
 /// campaign.json: {"format": "hsx-campaign/1", "seed", "plan": {start, count, shard, shards}, "generator": every
-/// RandomSceneSettings field (degeneracy weights by to_string(Degeneracy)), "checks": [names], "limits": {...}}.
+/// RandomSceneSettings field (degeneracy weights by to_string(Degeneracy)) and, when not uniform, "sample_policy"
+/// (to_string(SamplePolicy)), "checks": [names], "limits": {...}}.
 /// 64-bit values (seed, start, count) are JSON unsigned integers.
 nlohmann::json campaign_to_json(const campaign::CampaignSettings& settings, const CampaignPlan& plan);
 
 /// One results.jsonl line's object: {"index", "seed", "halfspaces", "cells", "patches", "samples", "degeneracies":
 /// [names], "outcome": "checked" | "refused" | "error", "note" (only when not empty), "timed_out" (only when
-/// true), "checks": [{"check", "status", "witness"}]}, keys in that order. Its dump() (no spaces) plus "\n" is the
+/// true), "intended": [cells] (only when not empty: SceneRecord::intended), "checks": [{"check", "status", "witness"}]}, keys in that order. Its dump() (no spaces) plus "\n" is the
 /// line.
 nlohmann::ordered_json record_to_json(const campaign::SceneRecord& record);
 /// The inverse of record_to_json (SceneRecord::scene is left empty). Throws InputError naming the bad field.
@@ -54,8 +55,8 @@ campaign::SceneRecord record_from_json(const nlohmann::json& line);
 
 /// summary.json: {"format": "hsx-campaign-summary/1", "scenes", "checked", "refused", "errors", "timed_out",
 /// "failed_scenes", "checks": [{"check", "held", "failed", "skipped", "stopped", "held_rate", "wilson95": [low,
-/// high], "by_halfspaces": [{"halfspaces", the same counts, rate and interval}]}], and when beam1 is tallied
-/// "beam1_optimality": {"optimal", "sub_optimal", "rate", "wilson95", "by_halfspaces": [...]}
+/// high], "by_halfspaces": [{"halfspaces", the same counts, rate and interval}]}], and per tallied beam check
+/// (beam1, beam2, beam4) "beamK_optimality": {"optimal", "sub_optimal", "rate", "wilson95", "by_halfspaces": [...]}
 /// (Summary::beam1_optimal)}, and when the against check is tallied "against": {"valid", "optimal", "suboptimal",
 /// "invalid", "no_answer", "undecided", "not_run", "optimal_rate" (optimal / (optimal + suboptimal + invalid + no
 /// answer)), "wilson95", "gap": {"suboptimal", "with_missing_samples" (gaps with M > 0), and when there is one

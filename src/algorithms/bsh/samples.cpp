@@ -75,17 +75,27 @@ ExtractResult run(const Complex& sampled, const SampleGenOptions& options, Metho
   extract_options.beam_width = options.beam_width;
   extract_options.enumerate_ties = false;
   extract_options.compare = options.compare;
+  if (options.max_states > 0 && (max_states == 0 || options.max_states < max_states))
+    extract_options.max_states = options.max_states;
+  extract_options.max_graph_cuts = options.max_graph_cuts;
+  extract_options.cancel = options.cancel;
   return extract(problem, extract_options);
 }
 
 }  // namespace
 
+std::vector<int> initial_samples(const Complex& complex, const Labelling& target, const CompareOptions& compare) {
+  const Problem problem(complex);
+  std::vector<int> out;
+  for (const Component& comp : sample_connectivity(problem, target).components)
+    out.push_back(central_patch(complex, comp.patches, compare));
+  return out;
+}
+
 SampleGenResult generate_samples(const Complex& complex, const Labelling& target, const SampleGenOptions& options) {
   SampleGenResult result;
   const Problem target_problem(complex);
-  const SampleConnectivity components = sample_connectivity(target_problem, target);
-  for (const Component& comp : components.components)
-    result.sample_patches.push_back(central_patch(complex, comp.patches, options.compare));
+  result.sample_patches = initial_samples(complex, target, options.compare);
   result.initial = static_cast<int>(result.sample_patches.size());
   for (int g : boundary_supports(target_problem, target))
     result.upper_bound += static_cast<int>(target_problem.supports()[g].patches.size());
@@ -93,6 +103,10 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
     const Complex sampled = with_samples_on(complex, result.sample_patches);
     ExtractResult found = run(sampled, options, options.search);
     ++result.rounds;
+    if (!found.stopped_by.empty()) {
+      result.stopped_by = found.stopped_by;
+      return result;
+    }
     if (found.labelling == target) {
       result.reproduced = true;
       return result;
@@ -121,6 +135,10 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
       if (compare(energy(sampled_problem, target), found.energy, options.compare) == Order::Less) {
         ++result.fallbacks;
         found = run(sampled, options, Method::BestFirst, options.fallback_states);
+        if (!found.stopped_by.empty() && found.stopped_by != "max-states") {
+          result.stopped_by = found.stopped_by;
+          return result;
+        }
         if (found.labelling == target) {
           result.reproduced = true;
           return result;
@@ -150,6 +168,10 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
         if (target[complex.patches[p].inside_cell] && !target[complex.patches[p].outside_cell]) all.push_back(p);
       const ExtractResult last = run(with_samples_on(complex, all), options, options.search);
       ++result.rounds;
+      if (!last.stopped_by.empty()) {
+        result.stopped_by = last.stopped_by;
+        return result;
+      }
       result.used_sufficient_set = true;
       result.sample_patches = all;
       result.reproduced = last.labelling == target;

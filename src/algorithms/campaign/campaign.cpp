@@ -2,6 +2,10 @@
 #include <hsx/algorithms/campaign/campaign.hpp>
 
 #include <hsx/algorithms/bsh/checks.hpp>
+#include <hsx/algorithms/bsh/sample_scene.hpp>
+#include <hsx/algorithms/bsh/samples.hpp>
+#include <hsx/algorithms/campaign/scene_checks.hpp>
+#include <hsx/complex/carry_solid2.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
 
 #include <algorithm>
@@ -26,13 +30,17 @@ class CatalogueMismatch : public std::logic_error {
   using std::logic_error::logic_error;
 };
 
-/// A catalogue entry with how its check_all result is recognised: the name starts with `prefix` and, when
-/// `suffix` is not empty, ends with it.
+/// The campaign's own checks (scene_checks.hpp), run by check_own.
+enum class Own { None, Prop61, PropB1, Beam2, Beam4, Describability, NhRep };
+
+/// A catalogue entry: a check_all result (`own` None), recognised by its name starting with `prefix` and, when
+/// `suffix` is not empty, ending with it; or one of the campaign's own checks.
 struct Entry {
   CheckInfo info;
   const char* prefix;
   const char* suffix;
   bsh::Check id;
+  Own own = Own::None;
 };
 
 const std::vector<Entry>& entries() {
@@ -55,9 +63,23 @@ const std::vector<Entry>& entries() {
        "Eqs. 2-4", "", bsh::Check::Certificates},
       {{"manifold", "Sec. 3.1: orientation-preserving => manifold (junction parity) on the optimum"},
        "Sec. 3.1", "", bsh::Check::Manifold},
+      {{"prop61", "Prop. 6.1: GENERATE-SAMPLES with best-first reproduces the intended shape by its greedy rounds alone"},
+       "", "", bsh::Check::Existence, Own::Prop61},
+      {{"propB1", "Prop. B.1: GENERATE-SAMPLES with beam K=1 reproduces the intended shape by its greedy rounds alone"},
+       "", "", bsh::Check::Existence, Own::PropB1},
+      {{"beam2", "Beam K=2: admissible, energy >= optimum (its witness says optimal or sub-optimal)"},
+       "", "", bsh::Check::Existence, Own::Beam2},
+      {{"beam4", "Beam K=4: admissible, energy >= optimum (its witness says optimal or sub-optimal)"},
+       "", "", bsh::Check::Existence, Own::Beam4},
+      {{"describability", "Shapiro-Vossler describability = BHC builds a verified tree (intended shape, else optimum)"},
+       "", "", bsh::Check::Existence, Own::Describability},
+      {{"nhrep", "NH-Rep Thm. 4.3 tree checks and natural-halfspace evaluation (intended shape, else optimum)"},
+       "", "", bsh::Check::Existence, Own::NhRep},
   };
   return e;
 }
+
+bool is_beam_check(const std::string& name) { return name == "beam1" || name == "beam2" || name == "beam4"; }
 
 bool starts_with(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
 bool ends_with(const std::string& s, const std::string& p) {
@@ -74,12 +96,7 @@ CheckStatus from_bsh(bsh::CheckResult::Status s) {
   throw std::logic_error("campaign: unknown check status");
 }
 
-std::vector<std::string> selected(const CampaignSettings& s) {
-  if (!s.checks.empty()) return s.checks;
-  std::vector<std::string> all;
-  for (const Entry& e : entries()) all.push_back(e.info.name);
-  return all;
-}
+std::vector<std::string> selected(const CampaignSettings& s) { return s.checks.empty() ? default_checks() : s.checks; }
 
 bool is_selected(const std::vector<std::string>& checks, const std::string& name) {
   return std::find(checks.begin(), checks.end(), name) != checks.end();
@@ -124,10 +141,23 @@ const std::vector<CheckInfo>& check_catalogue() {
   return c;
 }
 
+const std::vector<std::string>& default_checks() {
+  static const std::vector<std::string> d = [] {
+    std::vector<std::string> out;
+    for (const Entry& e : entries())
+      if (e.own == Own::None) out.push_back(e.info.name);
+    return out;
+  }();
+  return d;
+}
+
 std::vector<std::string> parse_check_list(const std::string& list) {
   std::vector<bool> wanted(entries().size(), false);
-  if (list.empty() || list == "all") wanted.assign(entries().size(), true);
-  else {
+  if (list.empty() || list == "default") {
+    for (std::size_t k = 0; k < entries().size(); ++k) wanted[k] = entries()[k].own == Own::None;
+  } else if (list == "all") {
+    wanted.assign(entries().size(), true);
+  } else {
     std::stringstream in(list);
     std::string name;
     while (std::getline(in, name, ',')) {
@@ -136,7 +166,7 @@ std::vector<std::string> parse_check_list(const std::string& list) {
       if (it == entries().end()) {
         std::string known;
         for (const Entry& e : entries()) known += std::string(known.empty() ? "" : ", ") + e.info.name;
-        throw InputError("--checks: unknown check \"" + name + "\" (the checks: " + known + "; or all)");
+        throw InputError("--checks: unknown check \"" + name + "\" (the checks: " + known + "; or default, or all)");
       }
       const std::size_t k = static_cast<std::size_t>(it - entries().begin());
       if (wanted[k]) throw InputError("--checks: \"" + name + "\" is named twice");
@@ -163,6 +193,20 @@ const char* to_string(CheckStatus s) {
 std::optional<CheckStatus> check_status_from_string(const std::string& s) {
   for (CheckStatus c : {CheckStatus::Held, CheckStatus::Failed, CheckStatus::Skipped, CheckStatus::Stopped})
     if (s == to_string(c)) return c;
+  return std::nullopt;
+}
+
+const char* to_string(SamplePolicy p) {
+  switch (p) {
+    case SamplePolicy::Uniform: return "uniform";
+    case SamplePolicy::Intended: return "intended";
+  }
+  return "?";
+}
+
+std::optional<SamplePolicy> sample_policy_from_string(const std::string& s) {
+  for (SamplePolicy p : {SamplePolicy::Uniform, SamplePolicy::Intended})
+    if (s == to_string(p)) return p;
   return std::nullopt;
 }
 
@@ -227,6 +271,206 @@ void validate(const CampaignSettings& s) {
   }
 }
 
+namespace {
+
+/// The largest orientation-preserving part of `solid`: while a patch has its outside cell inside and its inside
+/// cell outside, its outside cell goes outside (problem.hpp's "outside cell inside => inside cell inside").
+void make_orientation_preserving(const Complex& complex, std::vector<char>& solid) {
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const Patch& p : complex.patches)
+      if (p.inside_cell >= 0 && p.outside_cell >= 0 && solid[static_cast<std::size_t>(p.outside_cell)] &&
+          !solid[static_cast<std::size_t>(p.inside_cell)]) {
+        solid[static_cast<std::size_t>(p.outside_cell)] = 0;
+        changed = true;
+      }
+  }
+}
+
+/// SamplePolicy::Intended's step 2 (campaign.hpp).
+std::vector<char> draw_intended(const Complex& complex, Random& rng) {
+  std::vector<char> solid;
+  for (int draw = 0; draw < 8; ++draw) {
+    solid.assign(complex.cells.size(), 0);
+    for (std::size_t k = 0; k < complex.cells.size(); ++k)
+      if (!complex.cells[k].outer) solid[k] = rng.in(0, 1) == 1 ? 1 : 0;
+    make_orientation_preserving(complex, solid);
+    if (std::find(solid.begin(), solid.end(), 1) != solid.end()) break;
+  }
+  if (!bsh::is_orientation_preserving(bsh::Problem(complex), solid))
+    throw std::logic_error("campaign: the intended solid is not orientation-preserving after its closure");
+  return solid;
+}
+
+/// A generated scene: the scene and its patterns, and under SamplePolicy::Intended its arrangement (within the
+/// campaign's limits) and intended solid.
+struct Generated {
+  RandomScene generated;
+  std::optional<Arranged2> arranged;
+  std::vector<char> intended;
+};
+
+/// SamplePolicy::Intended (campaign.hpp). Throws InputError when the arrangement limits refuse the scene.
+Generated generate_intended(const CampaignSettings& s, std::uint64_t index) {
+  Generated g;
+  Random rng(item_seed(s.seed, index));
+  RandomSceneSettings settings = s.scene;
+  settings.max_samples = 0;
+  g.generated = random_scene(settings, rng);
+  const Arranged2 bare = arrange(g.generated.scene, s.limits);
+  const std::vector<char> solid = draw_intended(bare.complex, rng);
+  CompareOptions compare;
+  compare.max_bits = s.precision_bits;
+  const std::vector<int> patches = bsh::initial_samples(bare.complex, solid, compare);
+  Scene2 sampled = bsh::scene_with_samples(g.generated.scene, bare, patches, g.generated.scene.description);
+  validate_and_resolve(sampled);
+  g.generated.scene = std::move(sampled);
+  g.arranged = arrange(g.generated.scene, s.limits);
+  g.intended = carry_solid_over(bare.arrangement, solid, g.arranged->arrangement);
+  return g;
+}
+
+/// The time and cancellation of one scene's checks.
+class Deadline {
+ public:
+  Deadline(double seconds, std::function<bool()> cancel)
+      : limited_(seconds > 0), end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                      std::chrono::duration<double>(std::max(seconds, 0.0)))),
+        cancel_(std::move(cancel)) {}
+  bool expired() const { return limited_ && Clock::now() >= end_; }
+  bool stop() const { return expired() || (cancel_ && cancel_()); }
+  /// Seconds left (0: no limit; at least a nanosecond when limited, so a spent limit is not "none").
+  double left() const {
+    return limited_ ? std::max(std::chrono::duration<double>(end_ - Clock::now()).count(), 1e-9) : 0;
+  }
+  const std::function<bool()>& cancel() const { return cancel_; }
+
+ private:
+  bool limited_;
+  Clock::time_point end_;
+  std::function<bool()> cancel_;
+};
+
+/// One scene's checking context: the scene, the campaign's limits, and the optimum, computed once when a check
+/// needs it.
+struct SceneChecks {
+  const CampaignSettings& settings;
+  const Scene2& scene;
+  const Arranged2& arranged;
+  const std::vector<char>& intended;  ///< empty: none
+  const Deadline& deadline;
+  std::optional<bsh::ExtractResult> optimum;
+
+  CheckLimits limits() const {
+    CheckLimits l;
+    l.max_states = settings.max_states;
+    l.max_graph_cuts = settings.max_graph_cuts;
+    l.compare.max_bits = settings.precision_bits;
+    l.certify_limit = settings.brute_force_limit;
+    const Deadline* d = &deadline;
+    l.cancel = [d] { return d->stop(); };
+    return l;
+  }
+  const bsh::ExtractResult& the_optimum() {
+    if (!optimum) optimum = reference_optimum(arranged.complex, limits());
+    return *optimum;
+  }
+};
+
+/// check_all's selected checks (`wanted`, in catalogue order) on the scene.
+std::vector<CheckOutcome> run_check_all(SceneChecks& c, const std::vector<const Entry*>& wanted) {
+  if (wanted.empty()) return {};
+  bsh::CheckOptions options;
+  options.brute_force_limit = c.settings.brute_force_limit;
+  options.compare.max_bits = c.settings.precision_bits;
+  options.max_states = c.settings.max_states;
+  options.max_graph_cuts = c.settings.max_graph_cuts;
+  options.cancel = c.deadline.cancel();
+  options.time_limit = c.deadline.left();
+  for (const Entry* e : wanted) options.only.push_back(e->id);
+  const std::vector<bsh::CheckResult> results = bsh::check_all(c.arranged.complex, options);
+  if (results.size() != wanted.size())
+    throw CatalogueMismatch("campaign: check_all gave " + std::to_string(results.size()) + " results, expected " +
+                            std::to_string(wanted.size()) + " (update the catalogue in campaign.cpp)");
+  std::vector<CheckOutcome> out;
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const Entry& e = *wanted[k];
+    if (!starts_with(results[k].name, e.prefix) || !ends_with(results[k].name, e.suffix))
+      throw CatalogueMismatch("campaign: check_all's result " + std::to_string(k) + " is \"" + results[k].name +
+                              "\", expected \"" + e.prefix + "...\" (update the catalogue in campaign.cpp)");
+    out.push_back({e.info.name, from_bsh(results[k].status), results[k].witness});
+  }
+  return out;
+}
+
+/// The solid describability and nhrep run on: the intended shape, else the optimum (nullopt, with `why`, when the
+/// optimum was not proven).
+std::optional<std::vector<char>> shape_for(SceneChecks& c, std::string& what, std::string& why) {
+  if (!c.intended.empty()) {
+    what = "the intended shape";
+    return c.intended;
+  }
+  what = "the optimum";
+  const bsh::ExtractResult& o = c.the_optimum();
+  if (!o.optimal) {
+    why = o.stopped_by.empty() ? "the optimum was not proven" : "the optimum stopped by " + o.stopped_by;
+    return std::nullopt;
+  }
+  return o.labelling;
+}
+
+/// One of the campaign's own checks on the scene.
+CheckOutcome run_own(SceneChecks& c, const Entry& e) {
+  const std::string name = e.info.name;
+  if (c.deadline.stop())
+    return {name, CheckStatus::Skipped, "the time limit was spent (or the run was cancelled) before this check"};
+  CheckOutcome out;
+  switch (e.own) {
+    case Own::Prop61:
+    case Own::PropB1:
+      if (c.intended.empty())
+        return {name, CheckStatus::Skipped,
+                "not run: no intended shape (the samples are uniform; --sample-policy intended gives one)"};
+      out = check_generate_samples(name, c.arranged.complex, c.intended,
+                                   e.own == Own::Prop61 ? bsh::Method::BestFirst : bsh::Method::Beam, c.limits());
+      break;
+    case Own::Beam2:
+    case Own::Beam4:
+      out = check_beam_optimality(name, c.arranged.complex, e.own == Own::Beam2 ? 2 : 4, c.the_optimum(), c.limits());
+      break;
+    case Own::Describability:
+    case Own::NhRep: {
+      std::string what, why;
+      const std::optional<std::vector<char>> solid = shape_for(c, what, why);
+      if (!solid) return {name, CheckStatus::Stopped, why};
+      out = e.own == Own::Describability ? check_describability(name, c.arranged.complex, *solid, what)
+                                         : check_nhrep(name, c.scene, c.arranged, *solid, what);
+      break;
+    }
+    case Own::None: throw std::logic_error("campaign: run_own on a check_all check");
+  }
+  if (out.status == CheckStatus::Stopped && c.deadline.expired()) out.witness += " (the scene's time limit)";
+  return out;
+}
+
+}  // namespace
+
+std::vector<CheckOutcome> check_scene(const CampaignSettings& s, const Scene2& scene, const Arranged2& arranged,
+                                      const std::vector<char>& intended, double time_limit,
+                                      const std::function<bool()>& cancel) {
+  if (!intended.empty() && intended.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("check_scene: the intended solid needs one flag per cell");
+  const std::vector<std::string> checks = selected(s);
+  const Deadline deadline(time_limit, cancel);
+  SceneChecks c{s, scene, arranged, intended, deadline, std::nullopt};
+  std::vector<const Entry*> of_check_all, own;
+  for (const Entry& e : entries())
+    if (is_selected(checks, e.info.name)) (e.own == Own::None ? of_check_all : own).push_back(&e);
+  std::vector<CheckOutcome> out = run_check_all(c, of_check_all);
+  for (const Entry* e : own) out.push_back(run_own(c, *e));
+  return out;
+}
+
 SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
   const std::vector<std::string> checks = recorded_checks(s);
   const Clock::time_point start = Clock::now();
@@ -234,13 +478,16 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
   SceneRecord r;
   r.index = index;
   r.seed = s.seed;
-  std::optional<RandomScene> generated;
+  Generated g;
   try {
-    generated = random_scene(s.scene, s.seed, index);
+    if (s.sample_policy == SamplePolicy::Intended) g = generate_intended(s, index);
+    else g.generated = random_scene(s.scene, s.seed, index);
   } catch (const InputError& e) {  // choosing samples arranges the scene: the arrangement limits refused it
     r.outcome = SceneOutcome::Refused;
-    r.note = std::string("choosing its samples (under the default arrangement limits, which the campaign's do not "
-                         "change): ") + e.what();
+    r.note = s.sample_policy == SamplePolicy::Intended
+                 ? std::string("arranging it to choose its intended shape: ") + e.what()
+                 : std::string("choosing its samples (under the default arrangement limits, which the campaign's do "
+                               "not change): ") + e.what();
     all_checks(r, checks, CheckStatus::Skipped, "not run: the scene was refused: " + r.note);
     return r;
   } catch (const std::exception& e) {
@@ -249,49 +496,30 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
     all_checks(r, checks, CheckStatus::Skipped, "not run: " + r.note);
     return r;
   }
-  const Scene2& scene = generated->scene;
+  const Scene2& scene = g.generated.scene;
   r.halfspaces = static_cast<int>(scene.halfspaces.size());
   r.samples = static_cast<int>(scene.samples.size());
-  for (Degeneracy d : generated->degeneracies) r.degeneracies.push_back(to_string(d));
-  std::optional<Arranged2> arranged;
+  for (Degeneracy d : g.generated.degeneracies) r.degeneracies.push_back(to_string(d));
+  for (std::size_t k = 0; k < g.intended.size(); ++k)
+    if (g.intended[k]) r.intended.push_back(static_cast<int>(k));
+  std::optional<Arranged2>& arranged = g.arranged;
   try {
-    try {
-      arranged = arrange(scene, s.limits);
-    } catch (const InputError& e) {
-      r.outcome = SceneOutcome::Refused;
-      r.note = e.what();
-      all_checks(r, checks, CheckStatus::Skipped, "not run: the scene was refused: " + r.note);
-      return r;
+    if (!arranged) {
+      try {
+        arranged = arrange(scene, s.limits);
+      } catch (const InputError& e) {
+        r.outcome = SceneOutcome::Refused;
+        r.note = e.what();
+        all_checks(r, checks, CheckStatus::Skipped, "not run: the scene was refused: " + r.note);
+        return r;
+      }
     }
     r.cells = static_cast<long>(arranged->complex.cells.size());
     r.patches = static_cast<long>(arranged->complex.patches.size());
-    bsh::CheckOptions options;
-    options.brute_force_limit = s.brute_force_limit;
-    options.compare.max_bits = s.precision_bits;
-    options.max_states = s.max_states;
-    options.max_graph_cuts = s.max_graph_cuts;
-    options.cancel = cancel;
     // The scene's time limit covers its arrangement too: the checks get what is left (at least a nanosecond, so
     // that a spent limit skips them instead of meaning "no limit").
-    if (s.time_limit > 0) options.time_limit = std::max(s.time_limit - elapsed(), 1e-9);
-    // Only the selected checks are computed; check_all gives them in catalogue order.
-    std::vector<const Entry*> wanted;
-    for (const Entry& e : entries())
-      if (is_selected(checks, e.info.name)) {
-        wanted.push_back(&e);
-        options.only.push_back(e.id);
-      }
-    const std::vector<bsh::CheckResult> results = bsh::check_all(arranged->complex, options);
-    if (results.size() != wanted.size())
-      throw CatalogueMismatch("campaign: check_all gave " + std::to_string(results.size()) + " results, expected " +
-                              std::to_string(wanted.size()) + " (update the catalogue in campaign.cpp)");
-    for (std::size_t k = 0; k < results.size(); ++k) {
-      const Entry& e = *wanted[k];
-      if (!starts_with(results[k].name, e.prefix) || !ends_with(results[k].name, e.suffix))
-        throw CatalogueMismatch("campaign: check_all's result " + std::to_string(k) + " is \"" + results[k].name +
-                                "\", expected \"" + e.prefix + "...\" (update the catalogue in campaign.cpp)");
-      r.checks.push_back({e.info.name, from_bsh(results[k].status), results[k].witness});
-    }
+    const double left = s.time_limit > 0 ? std::max(s.time_limit - elapsed(), 1e-9) : 0;
+    r.checks = check_scene(s, scene, *arranged, g.intended, left, cancel);
   } catch (const CatalogueMismatch&) {
     throw;  // the catalogue does not match check_all: a bug of this file, not of the scene
   } catch (const std::exception& e) {
@@ -420,9 +648,11 @@ void StatusCounts::add(CheckStatus s) {
 }
 
 Summary::Summary(std::vector<std::string> c) : checks(std::move(c)) {
-  if (checks.empty())
-    for (const Entry& e : entries()) checks.push_back(e.info.name);
-  for (const std::string& name : checks) by_check[name];
+  if (checks.empty()) checks = default_checks();
+  for (const std::string& name : checks) {
+    by_check[name];
+    if (is_beam_check(name)) beam_optimal[name];
+  }
   if (std::find(checks.begin(), checks.end(), kAgainstCheck) != checks.end()) against.emplace();
 }
 
@@ -440,14 +670,18 @@ void Summary::add(const SceneRecord& record) {
     if (it == by_check.end()) throw std::logic_error("campaign summary: check \"" + c.check + "\" not tallied");
     it->second.add(c.status);
     by_check_and_halfspaces[c.check][record.halfspaces].add(c.status);
-    if (c.check == "beam1" && c.status == CheckStatus::Held) {
+    if (is_beam_check(c.check) && c.status == CheckStatus::Held) {
       const bool optimal = starts_with(c.witness, "optimal:");
       if (!optimal && !starts_with(c.witness, "sub-optimal:"))
-        throw std::logic_error("campaign summary: beam1's witness \"" + c.witness +
+        throw std::logic_error("campaign summary: " + c.check + "'s witness \"" + c.witness +
                                "\" says neither optimal nor sub-optimal");
       const CheckStatus s = optimal ? CheckStatus::Held : CheckStatus::Failed;
-      beam1_optimal.add(s);
-      beam1_optimal_by_halfspaces[record.halfspaces].add(s);
+      beam_optimal[c.check].add(s);
+      beam_optimal_by_halfspaces[c.check][record.halfspaces].add(s);
+      if (c.check == "beam1") {
+        beam1_optimal.add(s);
+        beam1_optimal_by_halfspaces[record.halfspaces].add(s);
+      }
     }
     if (c.check == kAgainstCheck) {
       AgainstTally& t = *against;

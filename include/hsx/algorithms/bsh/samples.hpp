@@ -17,6 +17,8 @@
 
 #include <hsx/algorithms/bsh/extract.hpp>
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace hsx::bsh {
@@ -29,6 +31,11 @@ struct SampleGenOptions {
   /// sample (the search missed the optimum: beam incompleteness, or Prop. 5.1 failing at non-generic junctions),
   /// redo that round with best-first limited to this many states (0: report the failure instead).
   long fallback_states = 300;
+  /// Limits of every extraction (ExtractOptions'; 0 / empty: none). A round a limit stops ends the run with
+  /// SampleGenResult::stopped_by set (neither reproduced nor a failure).
+  long max_states = 0;
+  long max_graph_cuts = 0;
+  std::function<bool()> cancel;
 };
 
 struct SampleGenResult {
@@ -42,7 +49,14 @@ struct SampleGenResult {
   /// non-generic junctions) and the samples are Section 6.2's sufficient set: one on every patch of b.
   bool used_sufficient_set = false;
   std::string failure;              ///< why not reproduced (e.g. no sample-free patch left: a counterexample)
+  /// The limit that stopped a round's extraction ("max-states", "max-graph-cuts", "cancelled"; ExtractResult's
+  /// stopped_by); "" when no limit was reached. When set, `reproduced` is false and `failure` empty.
+  std::string stopped_by;
 };
+
+/// GENERATE-SAMPLES' initial samples (the header comment): one patch per connected component of b ∩ b_i, in the
+/// order of sample_connectivity's components. `target`: a labelling of `complex`'s cells (its samples ignored).
+std::vector<int> initial_samples(const Complex& complex, const Labelling& target, const CompareOptions& compare = {});
 
 /// `target`: an orientation-preserving labelling of `complex`'s cells. The complex's own samples are ignored.
 SampleGenResult generate_samples(const Complex& complex, const Labelling& target, const SampleGenOptions& options);

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end tests of `hsx campaign` (issue 15 §1; docs/campaigns.md):
-# - --list-checks names the nine checks;
+# - --list-checks names the fifteen checks (check_all's nine, the default, and the campaign's own six);
+# - --sample-policy intended with --checks all: the same bytes for --jobs 1 and 2, the intended solid recorded,
+#   prop61 / propB1 run (not skipped), the beam2/beam4 optimality tables; a resume with another policy is refused;
 # - a campaign's results.jsonl, summary.json and table are the same bytes for --jobs 1 and --jobs 2, one line per
 #   scene in index order, the table's counts add up;
 # - shards 0/2 and 1/2 together are the whole campaign, line for line; one scene alone (--start K --count 1) is
@@ -26,7 +28,8 @@ gen=(--seed 11 --halfspaces 2..6 --samples 6)
 
 # ---- --list-checks ----
 expect 0 "" -- "$hsx" campaign --list-checks
-for name in existence prop52 prop51 beam1 prop41-optimum prop41-beam uniqueness certificates manifold; do
+for name in existence prop52 prop51 beam1 prop41-optimum prop41-beam uniqueness certificates manifold \
+    prop61 propB1 beam2 beam4 describability nhrep; do
   if grep -qE "^$name " out; then ok; else bad "--list-checks lacks $name: $(head -c 300 out)"; fi
 done
 
@@ -170,5 +173,29 @@ expect 2 "holds a campaign already" -- "$hsx" campaign "${gen[@]}" --count 40 --
 expect 2 "other settings" -- "$hsx" campaign "${gen[@]}" --count 41 --out j1 --resume
 expect 2 "other settings" -- "$hsx" campaign "${gen[@]}" --count 40 --checks prop52 --out j1 --resume
 same j1/results.jsonl j1.keep "a refused resume left results.jsonl alone"
+
+# ---- the intended-shape sample policy and the campaign's own checks ----
+expect 0 "" -- "$hsx" campaign "${gen[@]}" --count 12 --sample-policy intended --checks all --out i1 --jobs 1 && cp out i1.txt
+expect 0 "" -- "$hsx" campaign "${gen[@]}" --count 12 --sample-policy intended --checks all --out i2 --jobs 2 && cp out i2.txt
+same i1/results.jsonl i2/results.jsonl "intended, --jobs 1 vs 2 results.jsonl"
+same i1.txt i2.txt "intended, --jobs 1 vs 2 table"
+if [ "$(jq -r .generator.sample_policy i1/campaign.json)" = intended ]; then ok; else bad "campaign.json lacks the policy"; fi
+if [ "$(jq -s '[.[] | select(.intended)] | length' i1/results.jsonl)" -ge 8 ]; then ok; else
+  bad "few intended solids recorded: $(head -c 300 i1/results.jsonl)"; fi
+if [ "$(jq -s '[.[].checks[] | select((.check == "prop61" or .check == "propB1") and .status == "skipped")] | length' \
+      i1/results.jsonl)" = 0 ]; then ok; else bad "prop61/propB1 skipped under the intended policy"; fi
+if [ "$(jq -c '[.checks[].check]' i1/summary.json)" = \
+     '["existence","prop52","prop51","beam1","prop41-optimum","prop41-beam","uniqueness","certificates","manifold","prop61","propB1","beam2","beam4","describability","nhrep"]' ]
+then ok; else bad "--checks all: summary.json's checks $(jq -c '[.checks[].check]' i1/summary.json)"; fi
+if jq -e '.beam2_optimality.optimal + .beam2_optimality.sub_optimal == 12 and (.beam4_optimality | type) == "object"' \
+     i1/summary.json >/dev/null; then ok; else bad "beam2/beam4 optimality in summary.json: $(head -c 400 i1/summary.json)"; fi
+if grep -q "^beam4 optimality: the K=4 beam" i1.txt; then ok; else bad "the table lacks beam4 optimality"; fi
+expect 2 "other settings" -- "$hsx" campaign "${gen[@]}" --count 12 --checks all --out i1 --resume
+expect 2 "--sample-policy: uniform or intended" -- "$hsx" campaign --count 3 --sample-policy shaped
+# Under the default (uniform) policy prop61 is skipped with why; the default set is check_all's nine.
+expect 0 "" -- "$hsx" campaign "${gen[@]}" --count 2 --checks prop61 --out u1
+if grep -q '"status":"skipped","witness":"not run: no intended shape' u1/results.jsonl; then ok; else
+  bad "prop61 under the uniform policy: $(head -c 300 u1/results.jsonl)"; fi
+if [ "$(jq -c '.checks | length' j1/campaign.json)" = 9 ]; then ok; else bad "the default checks are not nine"; fi
 
 finish

@@ -107,7 +107,7 @@ def campaign(seed: int, count: int, start: int = 0, checks: Union[None, str, Seq
     (seconds per scene, 0: none) cuts scenes short.
 
     ``checks``: the checks to run, by name (hsx.campaign_checks()), as a list or a comma-separated string; None
-    or "all": every check. Limits as `hsx campaign`'s options, None keeping its default: ``max_labellings``
+    or "default": check_all's nine (`hsx campaign`'s default); "all": every check. Limits as `hsx campaign`'s options, None keeping its default: ``max_labellings``
     (--max-labellings), ``max_states``, ``max_graph_cuts`` (per search; 0: none), ``precision`` (bits of the
     certified comparisons), ``max_cells`` and ``max_side_table`` (the arrangement's; a scene beyond them is
     "refused"). ``settings``: the generator's, as hsx.random_scene's keyword arguments, except that max_samples

@@ -175,6 +175,15 @@ nlohmann::json summary_to_json(const Summary& s) {
     b["by_halfspaces"] = rows;
     out[beam + "_optimality"] = b;
   }
+  for (const auto& [check, counts] : s.verdicts) {
+    nlohmann::json v = {{"all", counts}};
+    nlohmann::json rows = nlohmann::json::array();
+    const auto it = s.verdicts_by_halfspaces.find(check);
+    if (it != s.verdicts_by_halfspaces.end())
+      for (const auto& [halfspaces, row] : it->second) rows.push_back({{"halfspaces", halfspaces}, {"verdicts", row}});
+    v["by_halfspaces"] = rows;
+    out[check + "_verdicts"] = v;
+  }
   if (s.against) {
     const Summary::AgainstTally& t = *s.against;
     const StatusCounts decided{t.optimal, t.suboptimal + t.invalid + t.no_answer, 0, 0};
@@ -230,6 +239,29 @@ std::string summary_table(const Summary& s) {
     if (it != s.beam_optimal_by_halfspaces.end())
       for (const auto& [halfspaces, counts] : it->second) row(std::to_string(halfspaces), counts);
     row("all", total);
+  }
+  for (const auto& entry : s.verdicts) {
+    const std::string& check = entry.first;
+    const std::map<std::string, long>& counts = entry.second;
+    out << "\n" << check << " verdicts, on the scenes where " << check << " held\n  halfspaces";
+    for (const auto& [verdict, n] : counts) out << "  " << verdict;
+    out << "\n";
+    const auto row = [&](const std::string& label, const std::map<std::string, long>& of) {
+      long total = 0;
+      for (const auto& [verdict, n] : of) total += n;
+      out << "  " << std::setw(10) << label;
+      for (const auto& [verdict, n] : counts) {
+        const auto it = of.find(verdict);
+        const long k = it == of.end() ? 0 : it->second;
+        const std::string cell = std::to_string(k) + (total ? " (" + percent(static_cast<double>(k) / total) + ")" : "");
+        out << "  " << std::setw(static_cast<int>(verdict.size())) << cell;
+      }
+      out << "\n";
+    };
+    const auto it = s.verdicts_by_halfspaces.find(check);
+    if (it != s.verdicts_by_halfspaces.end())
+      for (const auto& [halfspaces, of] : it->second) row(std::to_string(halfspaces), of);
+    row("all", counts);
   }
   if (s.against) {
     const Summary::AgainstTally& t = *s.against;

@@ -741,3 +741,23 @@ TEST_CASE("campaign: the K-beam optimality of beam2 and beam4 is tallied like be
   r.checks = {{"beam1", CheckStatus::Held, "optimal: 1"}, {"beam2", CheckStatus::Held, "neither"}, {"beam4", CheckStatus::Skipped, "x"}};
   CHECK_THROWS_AS(summary.add(r), std::logic_error);
 }
+
+TEST_CASE("campaign: describability's and nhrep's verdicts are tallied from their held witnesses", "[campaign]") {
+  Summary summary(parse_check_list("describability,nhrep"));
+  CHECK(summary.verdicts.at("nhrep").size() == 3);
+  SceneRecord r;
+  r.halfspaces = 4;
+  r.checks = {{"describability", CheckStatus::Held, "not describable: the optimum, 1 mixed term(s)"},
+              {"nhrep", CheckStatus::Held, "describable, tree fails: the optimum, 3 patch(es)"}};
+  summary.add(r);
+  r.checks[1] = {"nhrep", CheckStatus::Failed, "the optimum: check_tree: ..."};
+  summary.add(r);
+  CHECK(summary.verdicts.at("describability").at("not describable") == 2);
+  CHECK(summary.verdicts.at("nhrep").at("describable, tree fails") == 1);
+  CHECK(summary.verdicts.at("nhrep").at("tree correct") == 0);
+  CHECK(summary.verdicts_by_halfspaces.at("nhrep").at(4).at("describable, tree fails") == 1);
+  CHECK(summary_to_json(summary)["nhrep_verdicts"]["all"]["describable, tree fails"] == 1);
+  CHECK(summary_table(summary).find("nhrep verdicts") != std::string::npos);
+  r.checks[1] = {"nhrep", CheckStatus::Held, "maybe: ..."};
+  CHECK_THROWS_AS(summary.add(r), std::logic_error);
+}

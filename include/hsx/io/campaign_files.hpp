@@ -57,7 +57,8 @@ campaign::SceneRecord record_from_json(const nlohmann::json& line);
 /// "failed_scenes", "checks": [{"check", "held", "failed", "skipped", "stopped", "held_rate", "wilson95": [low,
 /// high], "by_halfspaces": [{"halfspaces", the same counts, rate and interval}]}], and per tallied beam check
 /// (beam1, beam2, beam4) "beamK_optimality": {"optimal", "sub_optimal", "rate", "wilson95", "by_halfspaces": [...]}
-/// (Summary::beam1_optimal)}, and when the against check is tallied "against": {"valid", "optimal", "suboptimal",
+/// (Summary::beam_optimal), when describability or nhrep is tallied "CHECK_verdicts": {"all": {verdict: count},
+/// "by_halfspaces": [{"halfspaces", "verdicts": {verdict: count}}]} (Summary::verdicts), and when the against check is tallied "against": {"valid", "optimal", "suboptimal",
 /// "invalid", "no_answer", "undecided", "not_run", "optimal_rate" (optimal / (optimal + suboptimal + invalid + no
 /// answer)), "wilson95", "gap": {"suboptimal", "with_missing_samples" (gaps with M > 0), and when there is one
 /// "median" (the lower median) and "max", each {"missing_samples", "measure"} in lexicographic order}}

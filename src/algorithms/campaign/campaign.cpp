@@ -81,6 +81,13 @@ const std::vector<Entry>& entries() {
 
 bool is_beam_check(const std::string& name) { return name == "beam1" || name == "beam2" || name == "beam4"; }
 
+/// The verdicts a held describability or nhrep witness starts with (scene_checks.hpp); empty for other checks.
+const std::vector<std::string>& verdicts_of(const std::string& check) {
+  static const std::vector<std::string> none, describability = {"describable", "not describable"},
+                                              nhrep = {"tree correct", "describable, tree fails", "not describable"};
+  return check == "describability" ? describability : check == "nhrep" ? nhrep : none;
+}
+
 bool starts_with(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
 bool ends_with(const std::string& s, const std::string& p) {
   return s.size() >= p.size() && s.compare(s.size() - p.size(), p.size(), p) == 0;
@@ -652,6 +659,7 @@ Summary::Summary(std::vector<std::string> c) : checks(std::move(c)) {
   for (const std::string& name : checks) {
     by_check[name];
     if (is_beam_check(name)) beam_optimal[name];
+    for (const std::string& v : verdicts_of(name)) verdicts[name][v];
   }
   if (std::find(checks.begin(), checks.end(), kAgainstCheck) != checks.end()) against.emplace();
 }
@@ -682,6 +690,14 @@ void Summary::add(const SceneRecord& record) {
         beam1_optimal.add(s);
         beam1_optimal_by_halfspaces[record.halfspaces].add(s);
       }
+    }
+    if (!verdicts_of(c.check).empty() && c.status == CheckStatus::Held) {
+      const std::string verdict = c.witness.substr(0, c.witness.find(':'));
+      const std::vector<std::string>& known = verdicts_of(c.check);
+      if (std::find(known.begin(), known.end(), verdict) == known.end())
+        throw std::logic_error("campaign summary: " + c.check + "'s witness \"" + c.witness + "\" has no verdict");
+      ++verdicts[c.check][verdict];
+      ++verdicts_by_halfspaces[c.check][record.halfspaces][verdict];
     }
     if (c.check == kAgainstCheck) {
       AgainstTally& t = *against;

@@ -287,14 +287,21 @@ struct Summary {
   std::map<std::string, StatusCounts> beam_optimal;
   std::map<std::string, std::map<int, StatusCounts>> beam_optimal_by_halfspaces;
 
+  /// The verdicts of describability ("describable", "not describable") and nhrep ("tree correct", "describable,
+  /// tree fails", "not describable": the natural-halfspace evaluation) on the scenes where they held: the held
+  /// witness's words before its first ':', counted per check, in all and by number of halfspaces (a rate, not a
+  /// failure). Only the tallied ones of the two checks have an entry.
+  std::map<std::string, std::map<std::string, long>> verdicts;
+  std::map<std::string, std::map<int, std::map<std::string, long>>> verdicts_by_halfspaces;
+
   using AgainstTally = campaign::AgainstTally;
   std::optional<AgainstTally> against;  ///< set when kAgainstCheck is among `checks`
 
   /// `checks`: the tallied names (recorded_checks(settings)); empty: default_checks().
   explicit Summary(std::vector<std::string> checks = {});
   /// Adds a record: its outcome, and each of its checks (a check not among `checks`, a held beam check whose witness
-  /// says neither optimal nor sub-optimal, or an against witness outside kAgainstCheck's grammar, is a
-  /// logic_error).
+  /// says neither optimal nor sub-optimal, a held describability or nhrep witness without one of its verdicts, or
+  /// an against witness outside kAgainstCheck's grammar, is a logic_error).
   void add(const SceneRecord& record);
 };
 

@@ -462,11 +462,11 @@ CheckOutcome run_own(SceneChecks& c, const Entry& e) {
 
 }  // namespace
 
-std::vector<CheckOutcome> check_scene(const CampaignSettings& s, const Scene2& scene, const Arranged2& arranged,
-                                      const std::vector<char>& intended, double time_limit,
-                                      const std::function<bool()>& cancel) {
+std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene2& scene, const Arranged2& arranged,
+                                         const std::vector<char>& intended, double time_limit,
+                                         const std::function<bool()>& cancel) {
   if (!intended.empty() && intended.size() != arranged.complex.cells.size())
-    throw std::invalid_argument("check_scene: the intended solid needs one flag per cell");
+    throw std::invalid_argument("check_arranged: the intended solid needs one flag per cell");
   const std::vector<std::string> checks = selected(s);
   const Deadline deadline(time_limit, cancel);
   SceneChecks c{s, scene, arranged, intended, deadline, std::nullopt};
@@ -526,7 +526,7 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
     // The scene's time limit covers its arrangement too: the checks get what is left (at least a nanosecond, so
     // that a spent limit skips them instead of meaning "no limit").
     const double left = s.time_limit > 0 ? std::max(s.time_limit - elapsed(), 1e-9) : 0;
-    r.checks = check_scene(s, scene, *arranged, g.intended, left, cancel);
+    r.checks = check_arranged(s, scene, *arranged, g.intended, left, cancel);
   } catch (const CatalogueMismatch&) {
     throw;  // the catalogue does not match check_all: a bug of this file, not of the scene
   } catch (const std::exception& e) {

@@ -227,32 +227,18 @@ void validate(const CampaignSettings& s) {
   }
 }
 
-SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+namespace {
+
+/// check_scene with the scene's time limit counted from `start` (run_scene's: before generating the scene).
+SceneRecord check_scene_since(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
+                              const std::function<bool()>& cancel, Clock::time_point start) {
   const std::vector<std::string> checks = recorded_checks(s);
-  const Clock::time_point start = Clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   SceneRecord r;
   r.index = index;
   r.seed = s.seed;
-  std::optional<RandomScene> generated;
-  try {
-    generated = random_scene(s.scene, s.seed, index);
-  } catch (const InputError& e) {  // choosing samples arranges the scene: the arrangement limits refused it
-    r.outcome = SceneOutcome::Refused;
-    r.note = std::string("choosing its samples (under the default arrangement limits, which the campaign's do not "
-                         "change): ") + e.what();
-    all_checks(r, checks, CheckStatus::Skipped, "not run: the scene was refused: " + r.note);
-    return r;
-  } catch (const std::exception& e) {
-    r.outcome = SceneOutcome::Error;
-    r.note = std::string("the generator threw: ") + e.what();
-    all_checks(r, checks, CheckStatus::Skipped, "not run: " + r.note);
-    return r;
-  }
-  const Scene2& scene = generated->scene;
   r.halfspaces = static_cast<int>(scene.halfspaces.size());
   r.samples = static_cast<int>(scene.samples.size());
-  for (Degeneracy d : generated->degeneracies) r.degeneracies.push_back(to_string(d));
   std::optional<Arranged2> arranged;
   try {
     try {
@@ -309,6 +295,41 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
       r.checks.push_back(std::move(outcome));
     }
   if (r.failed()) r.scene = scene;
+  return r;
+}
+
+}  // namespace
+
+SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
+                        const std::function<bool()>& cancel) {
+  return check_scene_since(s, scene, index, cancel, Clock::now());
+}
+
+SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+  const Clock::time_point start = Clock::now();
+  std::optional<RandomScene> generated;
+  try {
+    generated = random_scene(s.scene, s.seed, index);
+  } catch (const InputError& e) {  // choosing samples arranges the scene: the arrangement limits refused it
+    SceneRecord r;
+    r.index = index;
+    r.seed = s.seed;
+    r.outcome = SceneOutcome::Refused;
+    r.note = std::string("choosing its samples (under the default arrangement limits, which the campaign's do not "
+                         "change): ") + e.what();
+    all_checks(r, recorded_checks(s), CheckStatus::Skipped, "not run: the scene was refused: " + r.note);
+    return r;
+  } catch (const std::exception& e) {
+    SceneRecord r;
+    r.index = index;
+    r.seed = s.seed;
+    r.outcome = SceneOutcome::Error;
+    r.note = std::string("the generator threw: ") + e.what();
+    all_checks(r, recorded_checks(s), CheckStatus::Skipped, "not run: " + r.note);
+    return r;
+  }
+  SceneRecord r = check_scene_since(s, generated->scene, index, cancel, start);
+  for (Degeneracy d : generated->degeneracies) r.degeneracies.push_back(to_string(d));
   return r;
 }
 

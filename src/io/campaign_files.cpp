@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <set>
 #include <sstream>
 
@@ -110,10 +111,9 @@ std::string counts_row(const std::string& label, const StatusCounts& c) {
 }
 
 
-/// A results.jsonl as read: its complete lines' records and texts (without the newline), and its sizes.
+/// A results.jsonl as read: its complete lines' records, and its sizes.
 struct ResultsFile {
   std::vector<SceneRecord> records;
-  std::vector<std::string> lines;
   std::size_t complete = 0, size = 0;  ///< the bytes up to the last newline, and all of them
 };
 
@@ -131,9 +131,8 @@ ResultsFile read_results(const std::string& path, const std::vector<std::uint64_
     ++line_number;
     const std::string where = path + ": line " + std::to_string(line_number) + ": ";
     SceneRecord r;
-    std::string line = text.substr(at, end - at);
     try {
-      r = record_from_json(nlohmann::json::parse(line));
+      r = record_from_json(nlohmann::json::parse(text.substr(at, end - at)));
     } catch (const nlohmann::json::exception& e) {
       throw InputError(where + "not a JSON record (" + e.what() + "); only the last line may be torn");
     } catch (const InputError& e) {
@@ -144,10 +143,32 @@ ResultsFile read_results(const std::string& path, const std::vector<std::uint64_
       throw InputError(where + "scene " + std::to_string(r.index) + " is not the plan's scene number " +
                        std::to_string(k + 1) + " (the file is not this campaign's)");
     out.records.push_back(std::move(r));
-    out.lines.push_back(std::move(line));
     at = end + 1;
   }
   return out;
+}
+
+/// A results.jsonl read one line at a time.
+struct LineStream {
+  std::ifstream in;
+  explicit LineStream(const std::string& path) : in(path, std::ios::binary) {}
+  /// The next line (without its newline); false at the end. `torn`: it has no newline (the file's last line).
+  bool next(std::string& line, bool& torn) {
+    if (!std::getline(in, line)) return false;
+    torn = in.eof();
+    return true;
+  }
+};
+
+/// One results.jsonl line's record; InputError starting with `where` when it is not one.
+SceneRecord parse_line(const std::string& line, const std::string& where) {
+  try {
+    return record_from_json(nlohmann::json::parse(line));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where + "not a JSON record (" + e.what() + ")");
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
+  }
 }
 
 }  // namespace
@@ -516,7 +537,6 @@ campaign::Summary merge_campaigns(const std::string& out, const std::vector<std:
     std::string dir;
     nlohmann::json manifest;
     CampaignPlan plan;
-    ResultsFile results;
   };
   std::vector<Shard> given;
   for (const std::string& dir : shards) {
@@ -576,24 +596,37 @@ campaign::Summary merge_campaigns(const std::string& out, const std::vector<std:
       missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(k);
     }
   if (!missing.empty()) problems.push_back("missing shards " + missing);
+  // Each shard's lines, streamed (one line in memory at a time): its plan's indices in order, all of them.
   for (Shard& sh : given) {
-    const std::vector<std::uint64_t> indices = sh.plan.indices();
-    const fs::path results = fs::path(sh.dir) / "results.jsonl";
-    std::error_code ec;
-    if (fs::exists(results, ec)) sh.results = read_results(results.string(), indices);
+    const std::uint64_t n = sh.plan.count > sh.plan.shard ? (sh.plan.count - sh.plan.shard + k - 1) / k : 0;
     const std::string name = "shard " + std::to_string(sh.plan.shard) + "/" + std::to_string(k) + " (" + sh.dir + ")";
-    if (sh.results.records.size() < indices.size())
-      problems.push_back(name + " has " + std::to_string(sh.results.records.size()) + " of its " +
-                         std::to_string(indices.size()) + " scenes (" +
-                         std::to_string(indices.size() - sh.results.records.size()) +
-                         " missing, the first is scene " + std::to_string(indices[sh.results.records.size()]) +
-                         "): finish it with --resume");
-    else if (sh.results.complete < sh.results.size)
-      problems.push_back(name + ": results.jsonl ends in a torn line after its last scene");
-    for (const SceneRecord& r : sh.results.records)
+    const std::string path = (fs::path(sh.dir) / "results.jsonl").string();
+    LineStream lines(path);
+    std::uint64_t done = 0;
+    std::string line;
+    bool torn = false, torn_seen = false;
+    while (lines.next(line, torn)) {
+      if (torn) {
+        torn_seen = true;
+        break;
+      }
+      const SceneRecord r = parse_line(line, path + ": line " + std::to_string(done + 1) + ": ");
+      const std::uint64_t want = sh.plan.start + sh.plan.shard + done * k;
+      if (done >= n || r.index != want)
+        throw InputError("--merge: " + path + ": line " + std::to_string(done + 1) + ": scene " +
+                         std::to_string(r.index) + " is not the shard's scene number " + std::to_string(done + 1));
+      std::error_code ec;
       if (r.failed() && !fs::is_regular_file(fs::path(sh.dir) / "failures" / ("scene-" + std::to_string(r.index) + ".json"), ec))
         problems.push_back(name + ": scene " + std::to_string(r.index) + " failed but failures/scene-" +
                            std::to_string(r.index) + ".json is not there");
+      ++done;
+    }
+    if (done < n)
+      problems.push_back(name + " has " + std::to_string(done) + " of its " + std::to_string(n) + " scenes (" +
+                         std::to_string(n - done) + " missing, the first is scene " +
+                         std::to_string(sh.plan.start + sh.plan.shard + done * k) + "): finish it with --resume");
+    else if (torn_seen)
+      problems.push_back(name + ": results.jsonl ends in a torn line after its last scene");
   }
   if (!problems.empty()) {
     std::string text = "--merge: the shards are not a complete campaign: ";
@@ -611,12 +644,17 @@ campaign::Summary merge_campaigns(const std::string& out, const std::vector<std:
   if (manifest.contains("against")) names.push_back(campaign::kAgainstCheck);
   Summary summary(names);
   CampaignFolder folder(out, manifest, false, {});
-  std::vector<std::size_t> next(static_cast<std::size_t>(k), 0);
+  std::vector<std::unique_ptr<LineStream>> streams;
+  for (std::uint64_t i = 0; i < k; ++i)
+    streams.push_back(std::make_unique<LineStream>((fs::path(by_shard.at(i)->dir) / "results.jsonl").string()));
   const std::uint64_t count = whole.count;
+  std::string line;
   for (std::uint64_t j = 0; j < count; ++j) {
     const Shard& sh = *by_shard.at(j % k);
-    std::size_t& at = next[static_cast<std::size_t>(j % k)];
-    const SceneRecord& r = sh.results.records[at];
+    bool torn = false;
+    if (!streams[static_cast<std::size_t>(j % k)]->next(line, torn) || torn)
+      throw InputError("--merge: " + sh.dir + "/results.jsonl changed while it was merged");
+    const SceneRecord r = parse_line(line, sh.dir + "/results.jsonl: ");
     if (r.failed()) {
       std::error_code ec;
       const fs::path from = fs::path(sh.dir) / "failures", to = fs::path(out) / "failures";
@@ -626,10 +664,9 @@ campaign::Summary merge_campaigns(const std::string& out, const std::vector<std:
       for (const std::string file : {name + ".json", name + ".min.json"})
         if (fs::is_regular_file(from / file, ec)) write_file_atomically((to / file).string(), read_file((from / file).string()));
     }
-    folder.append_line(sh.results.lines[at]);
+    folder.append_line(line);
     summary.add(r);
     if (each) each(r);
-    ++at;
   }
   folder.write_summary(summary);
   return summary;

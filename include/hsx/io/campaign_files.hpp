@@ -100,7 +100,9 @@ std::optional<Scene2> minimised_failure(const campaign::SceneRecord& record, con
 /// campaign.json with plan shard 0/1, results.jsonl's lines in index order (the shards' lines, byte for byte),
 /// failures/ copied (scene-K.json and scene-K.min.json), summary.json and summary.svg recounted. Everything is
 /// checked before `out` is made: differing settings, a shard given twice, missing shards and unfinished shards
-/// (with how many of their scenes are missing) are one InputError saying all of it. `each` (when set) is called
+/// (with how many of their scenes are missing) are one InputError saying all of it. The shards' results.jsonl are
+/// read one line at a time, twice (checked, then merged), so memory does not grow with the campaign. An
+/// OutputError, or a shard changed between the two readings, can leave `out` part-written. `each` (when set) is called
 /// with every record, in index order. Returns the summary.
 campaign::Summary merge_campaigns(const std::string& out, const std::vector<std::string>& shards,
                                   const std::function<void(const campaign::SceneRecord&)>& each = {});

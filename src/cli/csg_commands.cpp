@@ -378,6 +378,7 @@ int run_convert(const ConvertOptions& o) {
   out.expect(o.out_path, "--out");
   out.expect(o.json_path, "--json");
   csg::ConversionReport report;
+  std::optional<csg::ConversionReport3> report3;
   if (!o.csgnet.empty()) {
     if (!o.input.empty() || !o.solid.csg.empty() || !o.solid.shape_path.empty())
       throw InputError("--csgnet: give the program alone (it defines the scene and the solid)");
@@ -386,24 +387,49 @@ int run_convert(const ConvertOptions& o) {
   } else {
     if (o.input.empty()) throw InputError("give a SCENE with --csg/--shape, or --csgnet PROGRAM");
     const LoadedInput in = load_input(o.input, o.limits);
-    if (!in.scene) throw InputError(o.input + ": convert needs a scene, not a complex");
-    report = csg::convert_to_bsh(*in.scene, *in.arranged, load_solid(in, o.solid).cells, *search);
+    if (!in.scene && !in.scene3) throw InputError(o.input + ": convert needs a scene, not a complex");
+    const std::vector<char> cells = load_solid(in, o.solid).cells;
+    if (in.scene3)
+      report3 = csg::convert_to_bsh(*in.scene3, *in.arranged3, cells, *search, o.limits);
+    else
+      report = csg::convert_to_bsh(*in.scene, *in.arranged, cells, *search);
   }
-  if (!report.ok()) {
-    std::cerr << "hsx: conversion failed: " << report.failure << "\n";
+  const bsh::SampleGenResult& samples = report3 ? report3->samples : report.samples;
+  if (report3 ? !report3->ok() : !report.ok()) {
+    std::cerr << "hsx: conversion failed: " << (report3 ? report3->failure : report.failure) << "\n";
     return 3;
   }
-  out.put(o.out_path, write_scene2(report.scene).dump(2) + "\n");
-  const nlohmann::json summary{{"samples", report.samples.sample_patches.size()},
-                               {"lower_bound", report.samples.initial},
-                               {"upper_bound", report.samples.upper_bound},
-                               {"rounds", report.samples.rounds},
-                               {"round_trip", report.round_trip}};
+  const std::vector<std::string>& flipped = report3 ? report3->flipped : report.flipped;
+  out.put(o.out_path, (report3 ? write_scene3(report3->scene) : write_scene2(report.scene)).dump(2) + "\n");
+  nlohmann::json summary{{"samples", samples.sample_patches.size()},
+                         {"lower_bound", samples.initial},
+                         {"upper_bound", samples.upper_bound},
+                         {"rounds", samples.rounds},
+                         {"round_trip", report3 ? report3->round_trip : report.round_trip},
+                         {"complemented", flipped}};
+  if (report3) {
+    // The solid on the complex the samples are on (the oriented scene's): its size and its cells.
+    const Complex& c = report3->oriented.complex;
+    std::vector<int> inside;
+    for (std::size_t k = 0; k < report3->oriented_solid.size(); ++k)
+      if (report3->oriented_solid[k]) inside.push_back(static_cast<int>(k));
+    summary["dimension"] = 3;
+    summary["cells"] = c.cells.size();
+    summary["patches"] = c.patches.size();
+    summary["inside_cells"] = inside;
+    summary["sample_patches"] = samples.sample_patches;
+    summary["volume"] = measure_to_json(bsh::inside_measure(c, report3->oriented_solid));
+  }
   out.put(o.json_path, summary.dump(2) + "\n");
   out.commit();
-  std::cout << "wrote " << o.out_path << ": " << report.samples.sample_patches.size() << " samples (lower bound "
-            << report.samples.initial << ", upper bound " << report.samples.upper_bound << ", "
-            << report.samples.rounds << " extraction rounds); hsx extract gives the solid back: yes\n";
+  std::cout << "wrote " << o.out_path << ": " << samples.sample_patches.size() << " samples (lower bound "
+            << samples.initial << ", upper bound " << samples.upper_bound << ", " << samples.rounds
+            << " extraction rounds); hsx extract gives the solid back: yes\n";
+  if (!flipped.empty()) {
+    std::cout << "complemented (the solid runs along them reversed):";
+    for (const std::string& n : flipped) std::cout << " " << n;
+    std::cout << "\n";
+  }
   return 0;
 }
 
@@ -610,7 +636,7 @@ void add_csg_commands(CLI::App& app) {
     auto o = std::make_shared<ConvertOptions>();
     CLI::App* cmd = app.add_subcommand("convert", "Convert a CSG solid to a BSH scene (samples from GENERATE-SAMPLES) "
                                                   "and check that extracting it gives the solid back");
-    cmd->add_option("SCENE", o->input, "hsx-scene/1 file (with --csg or --shape)");
+    cmd->add_option("SCENE", o->input, "hsx-scene/1 file, 2D or 3D, or the BSH authors' config.json (with --csg or --shape)");
     add_solid_options(cmd, o->solid);
     cmd->add_option("--csgnet", o->csgnet, "a CSGNet postfix program, e.g. \"c(32,32,16)s(32,40,12)-\"");
     cmd->add_option("--out", o->out_path, "the BSH scene to write")->required()

@@ -452,7 +452,8 @@ int run_samples(const SamplesOptions& o) {
   const bsh::Problem problem(in.complex());
   std::string why;
   if (!bsh::is_orientation_preserving(problem, solid.cells, &why))
-    throw InputError("--target: the target boundary is not orientation-preserving: " + why);
+    throw InputError("--target: the target boundary is not orientation-preserving: " + why +
+                     " (hsx convert complements such halfspaces)");
   bsh::SampleGenOptions options;
   options.search = *search;
   const bsh::SampleGenResult r = bsh::generate_samples(in.complex(), solid.cells, options);
@@ -468,13 +469,21 @@ int run_samples(const SamplesOptions& o) {
   if (minimum >= 0) j["minimum"] = minimum; else j["minimum"] = nullptr;
   if (!r.reproduced) j["failure"] = r.failure;
   std::string scene_text;
+  std::optional<bool> round_trip;  // --out: extracting the written scene gives the target back
   if (!o.out_path.empty()) {
     if (!in.scene && !in.scene3) throw InputError("--out: needs a scene input");
     const std::string description = "samples from GENERATE-SAMPLES (" + o.search + ")";
-    const nlohmann::json scene =
-        in.scene ? write_scene2(bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches, description))
-                 : write_scene3(bsh::scene_with_samples(*in.scene3, *in.arranged3, r.sample_patches, description));
-    scene_text = scene.dump(2) + "\n";
+    if (in.scene) {
+      const Scene2 written = bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches, description);
+      if (r.reproduced && in.scene->samples.empty()) round_trip = csg::extracts_back(written, solid.cells, *search);
+      scene_text = write_scene2(written).dump(2) + "\n";
+    } else {
+      Scene3 written = bsh::scene_with_samples(*in.scene3, *in.arranged3, r.sample_patches, description);
+      written.domain_given = true;  // written out: otherwise chosen again from the new samples
+      if (r.reproduced) round_trip = csg::extracts_back(written, *in.arranged3, solid.cells, *search, o.limits);
+      scene_text = write_scene3(written).dump(2) + "\n";
+    }
+    if (round_trip) j["round_trip"] = *round_trip;
   }
   out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.out_path, scene_text);
@@ -483,7 +492,10 @@ int run_samples(const SamplesOptions& o) {
             << ", " << r.rounds << " rounds, reproduced: " << (r.reproduced ? "yes" : "NO") << ")";
   if (minimum >= 0) std::cout << "; true minimum " << minimum << " (greedy excess " << r.sample_patches.size() - minimum << ")";
   std::cout << "\n";
-  return r.reproduced ? 0 : 3;
+  if (round_trip)
+    std::cout << "wrote " << o.out_path << "; hsx extract gives the target back: " << (*round_trip ? "yes" : "NO")
+              << "\n";
+  return r.reproduced && round_trip.value_or(true) ? 0 : 3;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -660,7 +672,8 @@ void add_csg_commands(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--out", o->out_path,
                     "write the scene with the generated samples (2D: inside a patch edge; 3D: at the centroid of the "
-                    "patch's largest triangle)")
+                    "patch's largest triangle, the domain written out) and check that extracting it gives the target "
+                    "back (round_trip in --json; exit 3 when not)")
         ->check(output_path());
     cmd->add_option("--json", o->json_path, "write counts as JSON")
         ->check(output_path());

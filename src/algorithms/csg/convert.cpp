@@ -143,6 +143,23 @@ OrientedScene3 orient_for_bsh(const Scene3& scene, const Complex& complex, const
   return orient_scene<OrientedScene3>(scene, complex, solid);
 }
 
+bool extracts_back(const Scene2& written, const std::vector<char>& solid, bsh::Method search) {
+  return extracts_to(written, solid, search);
+}
+
+bool extracts_back(const Scene3& written, const Arranged3& on, const std::vector<char>& solid, bsh::Method search,
+                   const ArrangementLimits& limits) {
+  const Arranged3 again = arrange(as_read_back(written), limits);
+  bsh::ExtractOptions extract_options;
+  extract_options.method = search;
+  extract_options.enumerate_ties = false;
+  const bsh::Problem problem(again.complex);
+  const std::vector<char> back = bsh::extract(problem, extract_options).labelling;
+  // The same scene without samples arranges to the same cells in the same order; compare through point
+  // location all the same, so that a different cell order could not pass unnoticed.
+  return back.size() == solid.size() && carry_solid3(again, back, on) == solid;
+}
+
 ConversionReport3 convert_to_bsh(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& solid,
                                  bsh::Method search, const ArrangementLimits& limits) {
   if (solid.size() != arranged.complex.cells.size())
@@ -169,16 +186,7 @@ ConversionReport3 convert_to_bsh(const Scene3& scene, const Arranged3& arranged,
   }
   report.scene = bsh::scene_with_samples(bare, report.oriented, report.samples.sample_patches,
                                          conversion_description(report));
-  const Arranged3 again = arrange(as_read_back(report.scene), limits);
-  bsh::ExtractOptions extract_options;
-  extract_options.method = search;
-  extract_options.enumerate_ties = false;
-  const bsh::Problem problem(again.complex);
-  const std::vector<char> back = bsh::extract(problem, extract_options).labelling;
-  // The same scene without samples arranges to the same cells in the same order; compare through point
-  // location all the same, so that a different cell order could not pass unnoticed.
-  report.round_trip = back.size() == report.oriented_solid.size() &&
-                      carry_solid3(again, back, report.oriented) == report.oriented_solid;
+  report.round_trip = extracts_back(report.scene, report.oriented, report.oriented_solid, search, limits);
   if (!report.round_trip) report.failure = "extracting the written scene does not give the solid back";
   return report;
 }

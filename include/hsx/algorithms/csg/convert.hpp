@@ -83,6 +83,15 @@ struct ConversionReport3 {
 ConversionReport3 convert_to_bsh(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& solid,
                                  bsh::Method search, const ArrangementLimits& limits = {});
 
+/// The round-trip check: extracting `written` as its file holds it (halfspaces, domain when given, `at` samples;
+/// validated and arranged again) gives `solid` back, cell for cell.
+/// - 2D: `solid` per cell of arrange(written without its samples).
+/// - 3D: `on`, an arrangement of the same halfspaces (e.g. of `written` without its samples); `solid` per cell of
+///   on.complex; cells are matched by point location (carry_solid3). `limits` bound the arrangement made here.
+bool extracts_back(const Scene2& written, const std::vector<char>& solid, bsh::Method search);
+bool extracts_back(const Scene3& written, const Arranged3& on, const std::vector<char>& solid, bsh::Method search,
+                   const ArrangementLimits& limits = {});
+
 /// One CSG program end to end (the CSGNet corpus pipeline): describability, BHC (verified), conversion to BSH and
 /// extraction back. The first stage that fails decides the outcome.
 enum class ProgramOutcome { Ok, NotDescribable, BhcFailed, ConversionFailed };

@@ -17,7 +17,8 @@
 #   (exit 3); --separators on a complex is refused (exit 2);
 # - convert and samples on 3D CSG solids (issue 14 section 2): the BSH scene written, complements and complemented
 #   copies where the solid runs along a halfspace reversed, exact `at` samples, the domain written out, and hsx
-#   extract on the written file gives the solid's cells and volume back; solids reaching the domain refused.
+#   extract on the written file gives the solid's cells and volume back; solids reaching the domain refused; our
+#   rebuild of the BSH CAD model (data/scenes3d/cad_notched.json): 23 samples = 23 components of 88 patches.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
 hsx="$(realpath "${1:?usage: csg3_tests.sh HSX SOURCE_DIR}")"
@@ -254,5 +255,17 @@ sys.exit(0 if a["inside_cells"] == b["inside_cells"] else 1)' cad.conv.json cad_
 fi
 expect 2 "(hsx convert complements such halfspaces)" -- "$hsx" samples "$SPLIT" --csg "B - C" --out never.json
 if [ -e never.json ]; then bad "samples wrote a file on bad input"; else ok; fi
+
+# Our rebuild of the BSH paper's CAD model (Fig. 19(a); data/scenes3d/cad_notched.json, docs/csg3.md): a cylinder
+# and a prism, minus three notches, union six tori. BHC gives each of the 17 halfspaces once; the conversion needs
+# 23 samples, the lower bound (23 components), of 88 boundary patches; extracting the written scene gives it back.
+NOTCHED="(Cyl & X0 & Y0 & Top & Bottom) - (~X1 & ~Y1 & ~M1 & ~M2) - (~X1 & ~Y1 & ~U) - (~X1 & ~Y1 & ~L) | T1 | T2 | T3 | T4 | T5 | T6"
+convert_check notched "$S3/cad_notched.json" "$NOTCHED" 23 '[]'
+check "notched: bounds (Table 1's lower bound reached)" notched.conv.json \
+  'd["lower_bound"] == 23 and d["upper_bound"] == 88 and d["rounds"] == 1 and d["cells"] == 167'
+check "notched: BHC tree, each halfspace once" notched.csg.json '
+  d["verified"] is True and d["stats"]["leaves"] == 17 and d["stats"]["duplicated_halfspaces"] == 0 and
+  d["stats"]["internal_nodes"] == 5 and
+  d["text"] == "T1 | T2 | T3 | T4 | T5 | T6 | Cyl & X0 & Y0 & Top & Bottom & (X1 | Y1 | U & L & (M1 | M2))"'
 
 finish

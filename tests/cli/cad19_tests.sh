@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The BSH paper's CAD example (Fig. 19(a), Sec. 7.2; issue 14 section 2) as a CSG expression over the halfspaces of
-# the BSH authors' figure19_b/config.json (data/scenes3d/figure19_b_cad_csg.json; docs/csg3.md):
+# the BSH authors' figure19_b/config.json (data/scenes3d/figure19_b_cad.csg; docs/csg3.md):
 # - the expression gives exactly the cells of the authors' shape (hsx extract on their config with their 23 samples);
 # - hsx csg: describable, BHC's tree verified on every cell, 17 leaves (each halfspace once), 5 internal nodes;
 # - hsx convert: Table 1's CAD column, 23 components (the lower bound) and 116 boundary patches (the upper bound),
@@ -14,7 +14,7 @@ data="${HSX_BSH_DATA:-$src/../shared/data/bsh-examples}"
 [ -f "$data/figure19_b/config.json" ] || { echo "no BSH examples at $data: skipped"; exit 77; }
 config="$(realpath "$data/figure19_b/config.json")"
 source "$src/tests/cli/common.sh"
-EXPR="$src/data/scenes3d/figure19_b_cad_csg.json"
+EXPR="$src/data/scenes3d/figure19_b_cad.csg"
 json() { python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval("(" + sys.argv[2].strip() + ")") else 1)' "$1" "$2"; }
 check() { if json "$2" "$3"; then ok; else bad "$1: $3 false on $2: $(head -c 300 "$2")"; fi; }
 same_cells() {  # same_cells WHAT A.json B.json: the same inside_cells

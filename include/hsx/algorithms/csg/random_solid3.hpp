@@ -50,7 +50,7 @@ struct RandomSolid3 {
   ExprPtr expression;       ///< the solid's expression over the scene's halfspaces
   SolidStatus status = SolidStatus::Empty;  ///< of the returned draw
   int draws = 1;
-  bool hollowed = false;    ///< an inner primitive was subtracted
+  bool hollowed = false;    ///< an inner primitive was subtracted (hollow, and primitive 0 a box or a sphere)
 };
 
 /// Solid `index` of `seed` by the procedure above. Throws std::invalid_argument for settings out of range;

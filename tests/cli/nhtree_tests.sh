@@ -207,5 +207,27 @@ if (ulimit -v 150000; "$HSX" nhtree "$M/cube.obj" --fea "$M/cube.fea" --referenc
   pass; else fail "huge patch id: exited $?: $(tail -3 "$TMP/huge.txt")"; fi
 expect_line "$TMP/huge.txt" "theirs: max{0,1,2,3,4,5,99999999}" "huge patch id compared"
 
+# ---- 3D solids on scenes (issue 14): a hollow sphere fails (Section 5.2 unites the cavity) and is correct with
+# --nest-holes; JSON, .dot diagrams and the 3D SVG are written; the L-bracket's tree is describable but fails
+S3="$ROOT/data/scenes3d"
+run_ok "$TMP/hollow.txt" "$S3/sphere_cavity.json" --csg "Outer & Cavity" --json "$TMP/hollow.json" \
+  --tree-dot "$TMP/hollow.tree.dot" --graph-dot "$TMP/hollow.graph.dot" --svg "$TMP/hollow.svg"
+expect_line "$TMP/hollow.txt" "tree: min(max(0), max(1))" "hollow sphere tree"
+expect_line "$TMP/hollow.txt" "on the whole space (4 cells of a domain holding every vertex): 3 cells wrong; describable but the tree fails" "hollow sphere verdict"
+expect_line "$TMP/hollow.txt" "the solid has cavities" "hollow sphere diagnosis"
+expect_line "$TMP/hollow.json" '"verdict": "describable-fails"' "hollow sphere JSON verdict"
+expect_line "$TMP/hollow.json" '"patch_triangles"' "hollow sphere JSON triangles"
+expect_line "$TMP/hollow.tree.dot" 'n0 -> n1;' "tree diagram edge"
+expect_line "$TMP/hollow.tree.dot" 'label="P1\nCavity"' "tree diagram leaf"
+expect_line "$TMP/hollow.graph.dot" 'graph nhrep {' "patch graph diagram"
+if [ "$(grep -c 'class="piece"' "$TMP/hollow.svg")" -eq $((4 * (224 + 80))) ]; then pass; else fail "3D svg: not 4 views of 304 pieces"; fi
+run_ok "$TMP/nested.txt" "$S3/sphere_cavity.json" --csg "Outer & Cavity" --nest-holes
+expect_line "$TMP/nested.txt" "tree: max(0, min(1))" "hollow sphere nested tree"
+expect_line "$TMP/nested.txt" "correct on every cell; tree correct" "hollow sphere nested verdict"
+run_ok "$TMP/bracket.txt" "$S3/bhc_bracket.json" --csg "X0 & Y0 & Y1 & Z0 & ((X1 & Z1 & Ch1) | (U1 & Z2 & Ch2) | (G0 & G1 & Gd) | Boss) & ~H1 & ~H2 & ~H3 & ~(S0 & S1 & Sz)"
+expect_line "$TMP/bracket.txt" "patch graph: 25 patches (25 original), 68 feature curves: 53 convex, 15 concave" "bracket graph"
+expect_line "$TMP/bracket.txt" "(384 cells of a domain holding every vertex): 9 cells wrong; describable but the tree fails" "bracket verdict"
+run_bad 2 "unknown halfspace" "$TMP/x3.dot" "$S3/sphere_cavity.json" --csg "Nope" --tree-dot "$TMP/x3.dot"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

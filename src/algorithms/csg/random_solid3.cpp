@@ -159,7 +159,7 @@ RandomSolid3 random_solid3(const RandomSolid3Settings& settings, std::uint64_t s
     for (int k = 0; k < primitives; ++k) parts.push_back(drawer.draw(k, settings.hollow && k == 0 ? &inner : nullptr));
     r.expression = combine(rng, parts);
     if (inner) {
-      r.expression = difference(r.expression, *inner);
+      r.expression = difference(unite({r.expression, parts.front()}), *inner);
       r.hollowed = true;
     }
     r.scene.description = "random 3D CSG solid " + std::to_string(index) + " of seed " + std::to_string(seed) +

@@ -6,9 +6,9 @@
 // 1. rng = Random(item_seed(seed, index)).
 // 2. A draw: primitives = rng.in(min_primitives, max_primitives); for k = 0, 1, ...: primitive k (below) appends
 //    its halfspaces; the parts are combined as random_solid.hpp's Csg step (pairs of random parts: a | b, a & b,
-//    a - b, b - a by rng.in(0, 3)). With `hollow`, the result R becomes R - I for an inner primitive I drawn from
-//    primitive 0 when primitive 0 is a box or a sphere (below), so that I lies strictly inside primitive 0; the
-//    cavity is a cavity of the solid unless the other parts reach into primitive 0. The scene's domain is chosen by
+//    a - b, b - a by rng.in(0, 3)). With `hollow`, when primitive 0 (P0) is a box or a sphere, the result R becomes
+//    (R | P0) - I for its inner primitive I (below), which lies strictly inside P0: I is a cavity of the solid
+//    unless another part's boundary crosses I. The scene's domain is chosen by
 //    hsx (choose_domain3: every vertex strictly inside), the scene validated and arranged (no volumes).
 // 3. A draw whose solid is empty or touches the domain box is drawn again from the same rng, up to max_draws draws
 //    in all; the last draw is returned whatever its status.

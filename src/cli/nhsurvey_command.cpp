@@ -1,4 +1,5 @@
-// hsx nhsurvey: NH-Rep Boolean trees with natural halfspaces over many 2D solids (issue 5, cross-check 2).
+// hsx nhsurvey: NH-Rep Boolean trees with natural halfspaces over many 2D solids (issue 5, cross-check 2) or random
+// 3D solids (issue 14, --dimension 3).
 //
 // Options, sources and printing only: the survey of one solid and the tallies are algorithms/nhrep/survey.hpp
 // (boundary_from_arrangement2 -> build_patch_graph -> build_tree -> check_tree -> evaluate_tree, classified as
@@ -14,6 +15,10 @@
 // - `SCENE...` (files or directories of hsx-scene/1 files; other JSON files in a directory are skipped): the BSH
 //   shape extracted as `hsx extract` does, by each method of `--methods` (graphcut, best-first; best-first stops
 //   after `--max-states` expanded states, and then uses its best shape so far).
+// - `--dimension 3 --random N --seed S`: solid i is csg::random_solid3 (random_solid3.hpp; even i a random CSG
+//   expression over 2 to `--max-primitives` boxes, spheres, cylinders and planes, odd i hollow; `--random-mode
+//   csg|hollow|mixed`, `--segments`), surveyed by nhrep::survey_solid3 on its own arrangement (a domain chosen by
+//   hsx holds every vertex). Scenes, CSGNet and --keep are 2D only.
 // - `--csgnet FILE [--from K] [--limit N]`: CSGNet programs, as `hsx corpus csgnet` reads them (malformed lines are
 //   skipped and counted; a missing file is reported as skipped).
 //

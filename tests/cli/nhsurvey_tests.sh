@@ -8,6 +8,7 @@
 #   and a .csg that `hsx describe` reads back as describable;
 # - the kept counterexamples in data/counterexamples/nhrep are classified "describable but the tree fails";
 # - a missing CSGNet corpus is reported as skipped (exit 0); a small CSGNet run when the corpus is present;
+# - --dimension 3: random 3D solids, the pinned rows, the cavity line with and without --nest-holes, determinism;
 # - bad input exits 2.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u

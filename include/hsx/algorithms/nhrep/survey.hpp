@@ -1,4 +1,5 @@
-// The NH-Rep survey (hsx nhsurvey; proofs/nhrep.md "Rates"): one 2D solid through the pipeline
+// The NH-Rep survey (hsx nhsurvey; proofs/nhrep.md "Rates", Section 5b for 3D): one 2D (or, survey_solid3, 3D)
+// solid through the pipeline
 // boundary_from_arrangement2 -> build_patch_graph -> build_tree -> check_tree -> evaluate_tree, classified as
 // "tree correct", "describable but the tree fails" (NH-Rep needs its extended surfaces, Appendix B) or "not
 // describable by its patches' halfspaces", and the per-source tallies of many such solids.

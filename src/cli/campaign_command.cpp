@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/distribute.hpp"
 #include <hsx/algorithms/campaign/campaign.hpp>
+#include <hsx/algorithms/campaign/minimise.hpp>
 #include <hsx/io/campaign_files.hpp>
 #include <hsx/io/scene_json.hpp>
 
@@ -36,6 +37,9 @@ struct CampaignCommandOptions {
   bool against_given = false;                           ///< --against was given (even empty: refused)
   std::string against, against_input = "bsh-graphcut";  ///< --against, --against-input
   double against_time_limit = 0;                        ///< --against-time-limit
+  bool minimise = true;                                 ///< --minimise / --no-minimise
+  long minimise_steps = campaign::MinimiseOptions{}.max_steps;  ///< --minimise-steps
+  std::vector<std::string> merge;                       ///< --merge DIR...
 };
 
 /// For --seed, --start, --count: a whole number 0 .. 2^64 - 1 written in digits (CLI11 alone would wrap "-1").
@@ -152,32 +156,74 @@ nlohmann::json campaign_manifest(const campaign::CampaignSettings& settings, con
   return j;
 }
 
-/// A record as one MPI message: its results.jsonl line, then for a failed record the scene (hsx-scene/1) that
-/// failures/ keeps; decode_record is the inverse.
-std::string encode_record(const campaign::SceneRecord& r) {
-  std::string text = record_to_json(r).dump() + "\n";
-  if (r.scene) text += write_scene2(*r.scene).dump();
+/// A record and, for a kept failure, its minimised scene (minimised_failure's, its note as description).
+struct Kept {
+  campaign::SceneRecord record;
+  std::optional<Scene2> minimised;
+};
+
+/// A record as one MPI message: its results.jsonl line, a line holding the scene (hsx-scene/1, one line) that
+/// failures/ keeps for a failed record (empty otherwise), then the minimised scene when there is one;
+/// decode_record is the inverse. The minimised scene is made on the rank that ran the scene and travels with it.
+std::string encode_record(const Kept& k) {
+  std::string text = record_to_json(k.record).dump() + "\n";
+  if (k.record.scene) text += write_scene2(*k.record.scene).dump();
+  text += "\n";
+  if (k.minimised) text += write_scene2(*k.minimised).dump();
   return text;
 }
 
-campaign::SceneRecord decode_record(const std::string& text) {
-  const std::size_t end = text.find('\n');
-  campaign::SceneRecord r = record_from_json(nlohmann::json::parse(text.substr(0, end)));
-  if (end + 1 < text.size()) r.scene = read_scene_text(std::string_view(text).substr(end + 1));
-  return r;
+Kept decode_record(const std::string& text) {
+  const std::size_t end = text.find('\n'), second = text.find('\n', end + 1);
+  Kept k;
+  k.record = record_from_json(nlohmann::json::parse(text.substr(0, end)));
+  const std::string_view scene = std::string_view(text).substr(end + 1, second - end - 1);
+  if (!scene.empty()) k.record.scene = read_scene_text(scene);
+  if (second + 1 < text.size()) k.minimised = read_scene_text(std::string_view(text).substr(second + 1));
+  return k;
 }
 
-/// The scenes `todo`, each record to `sink` in the order of `todo`: here on `jobs` threads, or under mpirun
-/// (`mpi` set) split over the ranks, every record reaching rank 0's sink (cli/distribute.hpp).
+/// The scenes `todo`, each record (with its minimised scene when `minimise` and it failed) to `sink` in the order
+/// of `todo`: here on `jobs` threads, or under mpirun (`mpi` set) split over the ranks, every record reaching rank
+/// 0's sink (cli/distribute.hpp). A failed scene is minimised on the thread that receives the records, one at a
+/// time (failures are rare), on the rank that ran it; it depends only on the scene, so the bytes are the same for
+/// any number of jobs and processes.
 void run_all(const campaign::CampaignSettings& settings, const std::vector<std::uint64_t>& todo, int jobs,
-             const MpiRun* mpi, const std::function<void(campaign::SceneRecord&&)>& sink) {
-  if (!mpi) return campaign::run_scenes(settings, todo, jobs, sink);
+             const MpiRun* mpi, const std::optional<campaign::MinimiseOptions>& minimise,
+             const std::function<void(Kept&&)>& sink) {
+  const auto keep = [&](campaign::SceneRecord&& r) {
+    Kept k;
+    if (minimise && r.failed() && r.scene) {
+      const campaign::MinimiseResult m = campaign::minimise_scene(settings, *r.scene, r, *minimise);
+      k.minimised = minimised_failure(r, m);
+      if (k.minimised)
+        std::cerr << "hsx campaign: scene " << r.index << " minimised to " << m.scene.halfspaces.size()
+                  << " halfspaces and " << m.scene.samples.size() << " samples in " << m.steps << " steps\n";
+    }
+    k.record = std::move(r);
+    return k;
+  };
+  if (!mpi) return campaign::run_scenes(settings, todo, jobs, [&](campaign::SceneRecord&& r) { sink(keep(std::move(r))); });
   mpi->distribute(
       todo,
       [&](const std::vector<std::uint64_t>& mine, const std::function<void(std::string&&)>& out) {
-        campaign::run_scenes(settings, mine, jobs, [&](campaign::SceneRecord&& r) { out(encode_record(r)); });
+        campaign::run_scenes(settings, mine, jobs, [&](campaign::SceneRecord&& r) { out(encode_record(keep(std::move(r)))); });
       },
       [&](std::string&& message) { sink(decode_record(message)); });
+}
+
+/// hsx campaign --out OUT --merge DIR...: io's merge_campaigns, then the table and the exit status of a run.
+int run_merge(const CampaignCommandOptions& o) {
+  if (o.out_dir.empty()) throw InputError("--merge: needs --out DIR (the merged campaign's new folder)");
+  if (o.count_given || o.resume) throw InputError("--merge: takes only --out and the shard folders (not --count or --resume)");
+  if (launched_by_mpi()) throw InputError("--merge: run it without mpirun (it only copies and counts)");
+  const campaign::Summary summary = merge_campaigns(o.out_dir, o.merge, [](const campaign::SceneRecord& r) {
+    if (r.failed()) std::cout << failure_note(r) << "\n";  // as a run prints them
+  });
+  std::cout << summary_table(summary);
+  std::cerr << "hsx campaign: merged " << o.merge.size() << " shards into " << o.out_dir << " (" << summary.scenes
+            << " scenes)\n";
+  return summary.failed_scenes > 0 ? kCheckFailed : 0;
 }
 
 int run_campaign(const CampaignCommandOptions& o) {
@@ -186,11 +232,13 @@ int run_campaign(const CampaignCommandOptions& o) {
       std::cout << std::left << std::setw(16) << c.name << c.description << "\n";
     return 0;
   }
+  if (!o.merge.empty()) return run_merge(o);
   if (!o.count_given) throw InputError("--count: how many scenes (give --count N; --list-checks lists the checks)");
   if (o.count > kMaxCount)
     throw InputError("--count: at most " + std::to_string(kMaxCount) + " scenes per run (run larger campaigns in parts "
                      "with --start)");
   if (o.jobs < 1) throw InputError("--jobs: at least 1");
+  if (o.minimise_steps < 0) throw InputError("--minimise-steps: at least 0 (0: no limit)");
   if (o.out_dir == "-") throw InputError("--out: a folder, not - (standard output holds the table)");
   if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR (the campaign to continue)");
   campaign::CampaignSettings settings = o.settings;
@@ -245,10 +293,16 @@ int run_campaign(const CampaignCommandOptions& o) {
   std::vector<std::uint64_t> todo(indices.begin() + static_cast<std::ptrdiff_t>(done), indices.end());
   if (mpi) todo = mpi->broadcast(todo);
   const auto begin = std::chrono::steady_clock::now();
-  run_all(settings, todo, o.jobs, mpi ? &*mpi : nullptr, [&](campaign::SceneRecord&& r) {
-    if (folder) folder->append(r);
-    summary.add(r);
-    report(r);
+  // Minimising keeps files only: without --out there is nothing to keep it in.
+  std::optional<campaign::MinimiseOptions> minimise;
+  if (o.minimise && !o.out_dir.empty()) {
+    minimise.emplace();
+    minimise->max_steps = o.minimise_steps;
+  }
+  run_all(settings, todo, o.jobs, mpi ? &*mpi : nullptr, minimise, [&](Kept&& k) {
+    if (folder) folder->append(k.record, k.minimised);
+    summary.add(k.record);
+    report(k.record);
   });
   if (!root) return 0;  // rank 0 writes the summary and gives the exit status
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
@@ -295,6 +349,17 @@ void add_campaign_command(CLI::App& app) {
                   "folder for campaign.json, results.jsonl (one line per scene), failures/ and summary.json: a new "
                   "or empty folder, or with --resume one holding this campaign")
       ->check(output_path());
+  cmd->add_option("--merge", o->merge,
+                  "DIR...: merge the shard folders (--shard i/k runs of one campaign, each finished) into --out, as "
+                  "one run of the whole range writes it; refused when the settings differ or a shard is missing or "
+                  "unfinished");
+  cmd->add_flag("--minimise,!--no-minimise", o->minimise,
+                "with --out: minimise each failing scene (remove halfspaces, samples, simplify coordinates while the "
+                "same checks fail) into failures/scene-K.min.json beside scene-K.json (default on; the records do "
+                "not depend on it)");
+  cmd->add_option("--minimise-steps", o->minimise_steps,
+                  "the most reduced scenes checked per minimisation (default " + std::to_string(o->minimise_steps) +
+                      "; 0: no limit)");
   cmd->add_flag("--resume", o->resume,
                 "continue the campaign in --out: skip the scenes recorded, cut a torn last line, run the rest");
   cmd->add_option("--time-limit", o->settings.time_limit,

@@ -378,6 +378,7 @@ int run_convert(const ConvertOptions& o) {
   out.expect(o.out_path, "--out");
   out.expect(o.json_path, "--json");
   csg::ConversionReport report;
+  std::optional<csg::ConversionReport3> report3;
   if (!o.csgnet.empty()) {
     if (!o.input.empty() || !o.solid.csg.empty() || !o.solid.shape_path.empty())
       throw InputError("--csgnet: give the program alone (it defines the scene and the solid)");
@@ -386,24 +387,49 @@ int run_convert(const ConvertOptions& o) {
   } else {
     if (o.input.empty()) throw InputError("give a SCENE with --csg/--shape, or --csgnet PROGRAM");
     const LoadedInput in = load_input(o.input, o.limits);
-    if (!in.scene) throw InputError(o.input + ": convert needs a scene, not a complex");
-    report = csg::convert_to_bsh(*in.scene, *in.arranged, load_solid(in, o.solid).cells, *search);
+    if (!in.scene && !in.scene3) throw InputError(o.input + ": convert needs a scene, not a complex");
+    const std::vector<char> cells = load_solid(in, o.solid).cells;
+    if (in.scene3)
+      report3 = csg::convert_to_bsh(*in.scene3, *in.arranged3, cells, *search, o.limits);
+    else
+      report = csg::convert_to_bsh(*in.scene, *in.arranged, cells, *search);
   }
-  if (!report.ok()) {
-    std::cerr << "hsx: conversion failed: " << report.failure << "\n";
+  const bsh::SampleGenResult& samples = report3 ? report3->samples : report.samples;
+  if (report3 ? !report3->ok() : !report.ok()) {
+    std::cerr << "hsx: conversion failed: " << (report3 ? report3->failure : report.failure) << "\n";
     return 3;
   }
-  out.put(o.out_path, write_scene2(report.scene).dump(2) + "\n");
-  const nlohmann::json summary{{"samples", report.samples.sample_patches.size()},
-                               {"lower_bound", report.samples.initial},
-                               {"upper_bound", report.samples.upper_bound},
-                               {"rounds", report.samples.rounds},
-                               {"round_trip", report.round_trip}};
+  const std::vector<std::string>& flipped = report3 ? report3->flipped : report.flipped;
+  out.put(o.out_path, (report3 ? write_scene3(report3->scene) : write_scene2(report.scene)).dump(2) + "\n");
+  nlohmann::json summary{{"samples", samples.sample_patches.size()},
+                         {"lower_bound", samples.initial},
+                         {"upper_bound", samples.upper_bound},
+                         {"rounds", samples.rounds},
+                         {"round_trip", report3 ? report3->round_trip : report.round_trip},
+                         {"complemented", flipped}};
+  if (report3) {
+    // The solid on the complex the samples are on (the oriented scene's): its size and its cells.
+    const Complex& c = report3->oriented.complex;
+    std::vector<int> inside;
+    for (std::size_t k = 0; k < report3->oriented_solid.size(); ++k)
+      if (report3->oriented_solid[k]) inside.push_back(static_cast<int>(k));
+    summary["dimension"] = 3;
+    summary["cells"] = c.cells.size();
+    summary["patches"] = c.patches.size();
+    summary["inside_cells"] = inside;
+    summary["sample_patches"] = samples.sample_patches;
+    summary["volume"] = measure_to_json(bsh::inside_measure(c, report3->oriented_solid));
+  }
   out.put(o.json_path, summary.dump(2) + "\n");
   out.commit();
-  std::cout << "wrote " << o.out_path << ": " << report.samples.sample_patches.size() << " samples (lower bound "
-            << report.samples.initial << ", upper bound " << report.samples.upper_bound << ", "
-            << report.samples.rounds << " extraction rounds); hsx extract gives the solid back: yes\n";
+  std::cout << "wrote " << o.out_path << ": " << samples.sample_patches.size() << " samples (lower bound "
+            << samples.initial << ", upper bound " << samples.upper_bound << ", " << samples.rounds
+            << " extraction rounds); hsx extract gives the solid back: yes\n";
+  if (!flipped.empty()) {
+    std::cout << "complemented (the solid runs along them reversed):";
+    for (const std::string& n : flipped) std::cout << " " << n;
+    std::cout << "\n";
+  }
   return 0;
 }
 
@@ -426,7 +452,8 @@ int run_samples(const SamplesOptions& o) {
   const bsh::Problem problem(in.complex());
   std::string why;
   if (!bsh::is_orientation_preserving(problem, solid.cells, &why))
-    throw InputError("--target: the target boundary is not orientation-preserving: " + why);
+    throw InputError("--target: the target boundary is not orientation-preserving: " + why +
+                     " (hsx convert complements such halfspaces)");
   bsh::SampleGenOptions options;
   options.search = *search;
   const bsh::SampleGenResult r = bsh::generate_samples(in.complex(), solid.cells, options);
@@ -442,13 +469,21 @@ int run_samples(const SamplesOptions& o) {
   if (minimum >= 0) j["minimum"] = minimum; else j["minimum"] = nullptr;
   if (!r.reproduced) j["failure"] = r.failure;
   std::string scene_text;
+  std::optional<bool> round_trip;  // --out: extracting the written scene gives the target back
   if (!o.out_path.empty()) {
     if (!in.scene && !in.scene3) throw InputError("--out: needs a scene input");
     const std::string description = "samples from GENERATE-SAMPLES (" + o.search + ")";
-    const nlohmann::json scene =
-        in.scene ? write_scene2(bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches, description))
-                 : write_scene3(bsh::scene_with_samples(*in.scene3, *in.arranged3, r.sample_patches, description));
-    scene_text = scene.dump(2) + "\n";
+    if (in.scene) {
+      const Scene2 written = bsh::scene_with_samples(*in.scene, *in.arranged, r.sample_patches, description);
+      if (r.reproduced && in.scene->samples.empty()) round_trip = csg::extracts_back(written, solid.cells, *search);
+      scene_text = write_scene2(written).dump(2) + "\n";
+    } else {
+      Scene3 written = bsh::scene_with_samples(*in.scene3, *in.arranged3, r.sample_patches, description);
+      written.domain_given = true;  // written out: otherwise chosen again from the new samples
+      if (r.reproduced) round_trip = csg::extracts_back(written, *in.arranged3, solid.cells, *search, o.limits);
+      scene_text = write_scene3(written).dump(2) + "\n";
+    }
+    if (round_trip) j["round_trip"] = *round_trip;
   }
   out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.out_path, scene_text);
@@ -457,7 +492,10 @@ int run_samples(const SamplesOptions& o) {
             << ", " << r.rounds << " rounds, reproduced: " << (r.reproduced ? "yes" : "NO") << ")";
   if (minimum >= 0) std::cout << "; true minimum " << minimum << " (greedy excess " << r.sample_patches.size() - minimum << ")";
   std::cout << "\n";
-  return r.reproduced ? 0 : 3;
+  if (round_trip)
+    std::cout << "wrote " << o.out_path << "; hsx extract gives the target back: " << (*round_trip ? "yes" : "NO")
+              << "\n";
+  return r.reproduced && round_trip.value_or(true) ? 0 : 3;
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -610,7 +648,7 @@ void add_csg_commands(CLI::App& app) {
     auto o = std::make_shared<ConvertOptions>();
     CLI::App* cmd = app.add_subcommand("convert", "Convert a CSG solid to a BSH scene (samples from GENERATE-SAMPLES) "
                                                   "and check that extracting it gives the solid back");
-    cmd->add_option("SCENE", o->input, "hsx-scene/1 file (with --csg or --shape)");
+    cmd->add_option("SCENE", o->input, "hsx-scene/1 file, 2D or 3D, or the BSH authors' config.json (with --csg or --shape)");
     add_solid_options(cmd, o->solid);
     cmd->add_option("--csgnet", o->csgnet, "a CSGNet postfix program, e.g. \"c(32,32,16)s(32,40,12)-\"");
     cmd->add_option("--out", o->out_path, "the BSH scene to write")->required()
@@ -634,7 +672,8 @@ void add_csg_commands(CLI::App& app) {
         ->check(CLI::NonNegativeNumber);
     cmd->add_option("--out", o->out_path,
                     "write the scene with the generated samples (2D: inside a patch edge; 3D: at the centroid of the "
-                    "patch's largest triangle)")
+                    "patch's largest triangle, the domain written out) and check that extracting it gives the target "
+                    "back (round_trip in --json; exit 3 when not)")
         ->check(output_path());
     cmd->add_option("--json", o->json_path, "write counts as JSON")
         ->check(output_path());

@@ -1,4 +1,5 @@
-// hsx nhsurvey: NH-Rep Boolean trees with natural halfspaces over many 2D solids (issue 5, cross-check 2).
+// hsx nhsurvey: NH-Rep Boolean trees with natural halfspaces over many 2D solids (issue 5, cross-check 2) or random
+// 3D solids (issue 14, --dimension 3).
 //
 // Options, sources and printing only: the survey of one solid and the tallies are algorithms/nhrep/survey.hpp
 // (boundary_from_arrangement2 -> build_patch_graph -> build_tree -> check_tree -> evaluate_tree, classified as
@@ -14,6 +15,10 @@
 // - `SCENE...` (files or directories of hsx-scene/1 files; other JSON files in a directory are skipped): the BSH
 //   shape extracted as `hsx extract` does, by each method of `--methods` (graphcut, best-first; best-first stops
 //   after `--max-states` expanded states, and then uses its best shape so far).
+// - `--dimension 3 --random N --seed S`: solid i is csg::random_solid3 (random_solid3.hpp; even i a random CSG
+//   expression over 2 to `--max-primitives` boxes, spheres, cylinders and planes, odd i hollow; `--random-mode
+//   csg|hollow|mixed`, `--segments`), surveyed by nhrep::survey_solid3 on its own arrangement (a domain chosen by
+//   hsx holds every vertex). Scenes, CSGNet and --keep are 2D only.
 // - `--csgnet FILE [--from K] [--limit N]`: CSGNet programs, as `hsx corpus csgnet` reads them (malformed lines are
 //   skipped and counted; a missing file is reported as skipped).
 //
@@ -31,6 +36,7 @@
 // 3 when one fails, 2 for bad input. Output is deterministic; `--timings` adds seconds.
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/csg/random_solid.hpp>
+#include <hsx/algorithms/csg/random_solid3.hpp>
 #include <hsx/algorithms/nhrep/survey.hpp>
 #include "cli/commands.hpp"
 #include <hsx/complex/carry_solid2.hpp>
@@ -72,6 +78,9 @@ struct SurveyOptions {
   bool timings = false;
   bool verbose = false;
   bool nest_holes = false;
+  int dimension = 2;
+  int segments = 8;          ///< 3D: segments per circle
+  int max_primitives = 4;    ///< 3D: primitives per solid, 2..this (1 when this is 1)
 };
 
 using nhrep::SurveySolid;
@@ -103,6 +112,25 @@ class Survey {
     if (example && !opt_.keep_dir.empty()) write_survey_example(opt_.keep_dir, c, o);
   }
 
+  /// Runs one 3D solid.
+  void add3(SurveyTally& tally, const nhrep::SurveySolid3& c) {
+    const nhrep::SurveyOutcome o = nhrep::survey_solid3(c, build_);
+    tally.add(c.name + " (" + c.origin + ")", c.arranged.complex.cells.size(), o);
+    if (o.status != csg::SolidStatus::Bounded) return;
+    if (!o.problems.empty()) {
+      ++failures_;
+      std::cout << "CHECK FAILED " << c.name << " (" << c.origin << "):\n";
+      for (std::size_t i = 0; i < o.problems.size() && i < 5; ++i) std::cout << "  " << o.problems[i] << "\n";
+    }
+    if (o.whole.evaluated && opt_.verbose)
+      std::cout << c.name << ": " << nhrep::verdict_name(o.whole.eval.verdict) << "; "
+                << o.whole.built.graph.live_patches().size() << " patches, " << o.whole.built.decompositions.size()
+                << " decompositions, " << o.holes << " cavities, "
+                << o.whole.eval.wrong_inside.size() + o.whole.eval.wrong_outside.size() << " of "
+                << c.arranged.complex.cells.size() << " cells wrong; " << csg::to_text(*c.expression, c.arranged.complex.halfspace_names)
+                << "\n";
+  }
+
   long failures() const { return failures_; }
 
  private:
@@ -132,6 +160,70 @@ SurveySolid random_case(const SurveyOptions& o, long index, bool cells, int* red
   c.solid = std::move(r.solid);
   c.expression = r.expression;
   return c;
+}
+
+void print_table(const std::vector<SurveyTally>& tallies, bool timings);
+
+/// Random 3D solid `index` (algorithms/csg/random_solid3.hpp): hollow or not by --random-mode.
+nhrep::SurveySolid3 random_case3(const SurveyOptions& o, long index, bool hollow, int* redraws) {
+  csg::RandomSolid3Settings settings;
+  settings.hollow = hollow;
+  settings.segments = o.segments;
+  settings.max_primitives = o.max_primitives;
+  settings.min_primitives = std::min(2, o.max_primitives);
+  csg::RandomSolid3 r = csg::random_solid3(settings, o.seed, static_cast<std::uint64_t>(index));
+  *redraws += r.draws - 1;
+  nhrep::SurveySolid3 c;
+  c.name = std::string(hollow ? "random3-hollow-" : "random3-csg-") + std::to_string(index);
+  c.origin = "random 3D solid " + std::to_string(index) + " of --seed " + std::to_string(o.seed) +
+             (hollow ? ", hollow" : "") + (r.draws > 1 ? ", draw " + std::to_string(r.draws) : "");
+  c.scene = std::move(r.scene);
+  c.arranged = std::move(r.arranged);
+  c.solid = std::move(r.solid);
+  c.expression = r.expression;
+  return c;
+}
+
+/// --dimension 3: random 3D CSG solids only.
+int run_survey3(const SurveyOptions& o) {
+  if (o.random_mode != "mixed" && o.random_mode != "csg" && o.random_mode != "hollow")
+    throw InputError("--random-mode: in 3D csg, hollow or mixed, got \"" + o.random_mode + "\"");
+  if (!o.scenes.empty() || !o.csgnet.empty())
+    throw InputError("--dimension 3 surveys random solids only (--random N); scenes and --csgnet are 2D");
+  if (o.random <= 0) throw InputError("--dimension 3: give --random N");
+  if (!o.keep_dir.empty()) throw InputError("--keep writes 2D examples; with --dimension 3 use -v");
+  if (o.segments < 6 || o.segments > 64) throw InputError("--segments: 6 to 64");
+  if (o.max_primitives < 1) throw InputError("--max-primitives: at least 1");
+  Survey survey(o);
+  SurveyTally csg_tally{"random3 csg", o.keep_count}, hollow_tally{"random3 hollow", o.keep_count};
+  using Clock = std::chrono::steady_clock;
+  int redraws = 0;
+  double csg_seconds = 0, hollow_seconds = 0;
+  for (long i = 0; i < o.random; ++i) {
+    const bool hollow = o.random_mode == "hollow" || (o.random_mode == "mixed" && i % 2 == 1);
+    const auto start = Clock::now();
+    const nhrep::SurveySolid3 c = random_case3(o, i, hollow, &redraws);
+    survey.add3(hollow ? hollow_tally : csg_tally, c);
+    (hollow ? hollow_seconds : csg_seconds) += std::chrono::duration<double>(Clock::now() - start).count();
+  }
+  csg_tally.seconds = csg_seconds;
+  hollow_tally.seconds = hollow_seconds;
+  std::vector<SurveyTally> tallies;
+  if (o.random_mode != "hollow") tallies.push_back(csg_tally);
+  if (o.random_mode != "csg") tallies.push_back(hollow_tally);
+  std::cout << "random: " << o.random << " 3D solids from --seed " << o.seed << " (boxes, spheres, cylinders, planes; "
+            << std::min(2, o.max_primitives) << "-" << o.max_primitives << " primitives, " << o.segments << " segments; " << redraws
+            << " empty or unbounded draws redrawn)" << (o.nest_holes ? "; cavities nested" : "") << "\n";
+  print_table(tallies, o.timings);
+  if (o.timings)
+    std::cout << "rate: " << std::fixed << std::setprecision(2)
+              << static_cast<double>(o.random) / std::max(1e-9, csg_seconds + hollow_seconds) << " solids/s\n";
+  if (survey.failures() > 0) {
+    std::cout << "STRUCTURAL CHECKS FAILED on " << survey.failures() << " solid(s)\n";
+    return kCheckFailed;
+  }
+  std::cout << "all structural checks hold\n";
+  return 0;
 }
 
 bool is_scene_file(const std::filesystem::path& path) {
@@ -211,6 +303,10 @@ void print_table(const std::vector<SurveyTally>& tallies, bool timings) {
     if (t.empty + t.unbounded + t.malformed > 0)
       out << "; skipped " << t.empty << " empty, " << t.unbounded << " unbounded, " << t.malformed << " malformed";
     out << "\n";
+    if (t.with_holes > 0)
+      out << "  with a hole or cavity: " << t.with_holes << " solids: " << t.correct_with_holes << " tree correct, "
+          << t.with_holes - t.correct_with_holes - t.not_describable_with_holes << " describable but fails, "
+          << t.not_describable_with_holes << " not describable\n";
     for (const std::string& e : t.examples) out << "  describable but fails: " << e << "\n";
   }
   std::cout << out.str();
@@ -234,6 +330,8 @@ void check_keep_directory(const std::string& dir) {
 
 int run_survey(const SurveyOptions& o) {
   if (o.random < 0) throw InputError("--random: must be >= 0");
+  if (o.dimension != 2 && o.dimension != 3) throw InputError("--dimension: 2 or 3");
+  if (o.dimension == 3) return run_survey3(o);
   if (o.random_mode != "mixed" && o.random_mode != "csg" && o.random_mode != "cells")
     throw InputError("--random-mode: csg, cells or mixed, got \"" + o.random_mode + "\"");
   if (o.keep_count < 0) throw InputError("--keep-count: must be >= 0");
@@ -378,13 +476,19 @@ int run_survey(const SurveyOptions& o) {
 void add_nhsurvey_command(CLI::App& app) {
   auto o = std::make_shared<SurveyOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "nhsurvey", "NH-Rep trees with natural halfspaces over many 2D solids (random, BSH scenes, CSGNet): how often "
+      "nhsurvey", "NH-Rep trees with natural halfspaces over many 2D solids (random, BSH scenes, CSGNet) or random 3D solids: how often "
                   "the tree is exactly the solid, and when not, whether the solid is describable; exit 3 when a "
                   "structural check fails");
   cmd->add_option("SCENE", o->scenes, "hsx-scene/1 files or directories of them (BSH shapes are extracted)");
   cmd->add_option("--random", o->random, "survey N random solids (default 0)");
   cmd->add_option("--seed", o->seed, "seed of the random solids (default 1)");
-  cmd->add_option("--random-mode", o->random_mode, "csg, cells or mixed (default: even solids csg, odd cells)");
+  cmd->add_option("--random-mode", o->random_mode,
+                  "csg, cells or mixed (default: even solids csg, odd cells); with --dimension 3: csg, hollow or "
+                  "mixed (even csg, odd hollow)");
+  cmd->add_option("--dimension", o->dimension, "2 (default) or 3: random 3D CSG solids (boxes, spheres, cylinders, "
+                                               "planes), evaluated exactly on their 3D arrangements");
+  cmd->add_option("--segments", o->segments, "3D: segments per circle of spheres and cylinders (default 8)");
+  cmd->add_option("--max-primitives", o->max_primitives, "3D: 2 to this many primitives per solid (default 4)");
   cmd->add_flag("--random-polygons", o->random_polygons, "random boxes and triangles as polygon halfspaces");
   cmd->add_option("--methods", o->methods, "BSH methods for scenes: graphcut,best-first (default both)");
   cmd->add_option("--max-states", o->max_states, "best-first: stop after N expanded states (default 20000)");

@@ -6,6 +6,7 @@
 #include <hsx/algorithms/nhrep/compare.hpp>
 #include <hsx/algorithms/nhrep/evaluate.hpp>
 #include <hsx/algorithms/nhrep/planar.hpp>
+#include <hsx/algorithms/nhrep/solid3.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/complex/boundary_from_mesh.hpp>
 #include <hsx/geometry/mesh3.hpp>
@@ -13,6 +14,7 @@
 #include <hsx/io/files.hpp>
 #include <hsx/io/nhrep_json.hpp>
 #include <hsx/io/nhrep_mesh.hpp>
+#include <hsx/io/nhrep_dot.hpp>
 #include <hsx/io/nhrep_svg.hpp>
 
 #include <algorithm>
@@ -30,7 +32,7 @@ struct NhtreeOptions {
   bool nhrep_tool = false;
   bool nest_holes = false;
   SolidSource solid;
-  std::string json_path, conf_path, svg_path, reference_conf, reference_face_patch, reference_graph;
+  std::string json_path, conf_path, svg_path, tree_dot_path, graph_dot_path, reference_conf, reference_face_patch, reference_graph;
   std::string decomposed_prefix;  ///< mesh: write PREFIX.obj, PREFIX.fea, PREFIX.face-patch.txt
   bool group = false;
   int max_group = 6;
@@ -73,11 +75,15 @@ void print_graph(const nhrep::BuildResult& r, const std::vector<std::string>& pa
         << (g.surface.dimension == 3 ? " mesh edge" : " corner") << (c.links.size() == 1 ? "" : "s") << ")\n";
 }
 
-/// Up to `max` exact points as "(x, y)" with 6 significant digits (a pointer, not a proof: the cells are exact).
+/// Up to `max` exact points as "(x, y)" or "(x, y, z)" with 6 significant digits (a pointer, not a proof: the
+/// cells are exact).
 std::string points_text(const std::vector<std::vector<Rational>>& points, std::size_t max = 6) {
   std::string s;
-  for (std::size_t i = 0; i < points.size() && i < max; ++i)
-    s += (i ? ", (" : "(") + decimal_string(points[i][0], 6) + ", " + decimal_string(points[i][1], 6) + ")";
+  for (std::size_t i = 0; i < points.size() && i < max; ++i) {
+    s += i ? ", (" : "(";
+    for (std::size_t k = 0; k < points[i].size(); ++k) s += (k ? ", " : "") + decimal_string(points[i][k], 6);
+    s += ")";
+  }
   if (points.size() > max) s += ", ... (" + std::to_string(points.size()) + " cells)";
   return s.empty() ? "none" : s;
 }
@@ -178,6 +184,8 @@ void expect_outputs(const NhtreeOptions& o, OutputFiles& out) {
   out.expect(o.json_path, "--json");
   out.expect(o.conf_path, "--conf");
   out.expect(o.svg_path, "--svg");
+  out.expect(o.tree_dot_path, "--tree-dot");
+  out.expect(o.graph_dot_path, "--graph-dot");
   if (!o.decomposed_prefix.empty())
     for (const char* suffix : {".obj", ".fea", ".face-patch.txt"}) out.expect(o.decomposed_prefix + suffix, "--decomposed");
 }
@@ -190,6 +198,13 @@ void put_outputs(const NhtreeOptions& o, const nhrep::BuildResult& r, const std:
     files.put(o.json_path, doc.dump(1) + "\n");
   }
   if (!o.conf_path.empty()) files.put(o.conf_path, nhtree_conf(r));
+}
+
+/// --tree-dot and --graph-dot (`names`: per patch id its natural halfspace, or empty).
+void put_diagrams(const NhtreeOptions& o, const nhrep::BuildResult& r, const std::vector<std::string>& names,
+                  const std::string& title, OutputFiles& files) {
+  if (!o.tree_dot_path.empty()) files.put(o.tree_dot_path, nhtree_dot(r, names, title));
+  if (!o.graph_dot_path.empty()) files.put(o.graph_dot_path, nhrep_patch_graph_dot(r, names, title));
 }
 
 /// Groups (when asked for) and cross-check 1; returns the exit status (3 when a check failed).
@@ -217,10 +232,10 @@ NhrepReference read_references(const NhtreeOptions& o) {
 
 int run_mesh(const NhtreeOptions& o, OutputFiles& files) {
   if (o.fea_path.empty()) throw InputError("nhtree: a mesh needs its feature edges: --fea FILE");
-  if (!o.svg_path.empty()) throw InputError("nhtree: --svg draws 2D solids only");
+  if (!o.svg_path.empty()) throw InputError("nhtree: --svg draws solids on scenes only (a mesh: use --graph-dot)");
   if (!o.solid.csg.empty() || !o.solid.shape_path.empty())
     throw InputError(std::string("nhtree: ") + (o.solid.csg.empty() ? "--shape" : "--csg") +
-                     " gives a 2D solid on a scene; a mesh (.obj) is its own solid");
+                     " gives a solid on a scene; a mesh (.obj) is its own solid");
   const std::string sharp_text = !o.sharp_angle.empty() ? o.sharp_angle : o.nhrep_tool ? "20" : "0";
   std::string why;
   const std::optional<Rational> parsed = parse_rational(sharp_text, &why);
@@ -254,6 +269,7 @@ int run_mesh(const NhtreeOptions& o, OutputFiles& files) {
   if (reference.tree) extra["reference_equal"] = print_reference_comparison(r, reference, out);
   if (graph_differences) extra["reference_graph_differences"] = *graph_differences;
   put_outputs(o, r, o.group ? &groups : nullptr, extra, files);
+  put_diagrams(o, r, {}, o.input, files);
   if (!o.decomposed_prefix.empty()) {
     const DecomposedMesh d = write_decomposed_mesh(mesh, r.graph, nhtree_conf_ids(r.graph));
     files.put(o.decomposed_prefix + ".obj", d.obj);
@@ -266,10 +282,10 @@ int run_mesh(const NhtreeOptions& o, OutputFiles& files) {
   return status;
 }
 
-void print_evaluation(const nhrep::PlanarEvaluation& pe, std::ostream& out) {
+void print_evaluation(const nhrep::CellEvaluation& pe, int dimension, std::ostream& out) {
   const nhrep::Evaluation& e = pe.evaluation;
-  out << "exact evaluation with natural halfspaces on the whole plane (" << pe.cells
-      << " cells of a domain holding every vertex): "
+  out << "exact evaluation with natural halfspaces on the whole " << (dimension == 3 ? "space" : "plane") << " ("
+      << pe.cells << " cells of a domain holding every vertex): "
       << (e.correct ? "correct on every cell"
                     : std::to_string(e.wrong_inside.size() + e.wrong_outside.size()) + " cells wrong")
       << "; " << nhrep::verdict_name(e.verdict) << "\n";
@@ -277,11 +293,36 @@ void print_evaluation(const nhrep::PlanarEvaluation& pe, std::ostream& out) {
     out << "  solid points the tree misses: " << points_text(pe.missed) << "; points it adds: "
         << points_text(pe.added) << "\n";
   if (pe.diagnosis == nhrep::Diagnosis::HolesUnited)
-    out << "  the solid has holes, and the tree initialisation (Section 5.2) unites its boundary components where "
+    out << "  the solid has " << (dimension == 3 ? "cavities" : "holes") << ", and the tree initialisation (Section 5.2) unites its boundary components where "
            "holes should be intersected (see --nest-holes)\n";
   else if (pe.diagnosis == nhrep::Diagnosis::NeedsExtendedSurfaces)
     out << "  NH-Rep needs extended surfaces here (Appendix B)\n";
   for (const std::string& v : e.violations) out << "  violated: " << v << "\n";
+}
+
+/// A 3D scene with a solid on it (--csg or --shape): the boundary from the arrangement, Algorithm 1, and the exact
+/// evaluation on the whole space.
+int run_solid3(const NhtreeOptions& o, const LoadedInput& in, OutputFiles& files) {
+  const Solid solid = load_solid(in, o.solid);
+  const Arranged3& arranged = *in.arranged3;
+  const nhrep::SolidTree3 t = run_algorithm1(
+      o, [&] { return nhrep::build_solid_tree3(arranged, solid.cells, build_options(o), curve_rule(o)); });
+  const nhrep::BuildResult& r = t.built;
+  std::ostream& out = std::cout;
+  print_graph(r, t.leaf_names, out);
+  print_run(r, out);
+  const nhrep::CellEvaluation e = nhrep::evaluate_on_whole_space(t, *in.scene3, arranged, solid.cells, o.limits);
+  print_evaluation(e, 3, out);
+  const std::vector<std::vector<int>> groups = groups_of(o, r);
+  const int status = finish(o, r, groups, e.evaluation.violations, out);
+  nlohmann::json extra = nhtree_solid3_json(t, e);
+  extra["input"] = o.input;
+  put_outputs(o, r, o.group ? &groups : nullptr, extra, files);
+  put_diagrams(o, r, t.leaf_names, o.input, files);
+  if (!o.svg_path.empty())
+    files.put(o.svg_path, nhrep_svg3(*in.scene3, arranged, solid.cells, r.graph.surface, r.graph.piece_patch,
+                                     t.leaf_node, "NH-Rep tree: " + nhtree_text(r.tree)));
+  return status;
 }
 
 int run_planar(const NhtreeOptions& o, OutputFiles& files) {
@@ -290,6 +331,7 @@ int run_planar(const NhtreeOptions& o, OutputFiles& files) {
   if (!o.reference_conf.empty() || !o.reference_face_patch.empty() || !o.reference_graph.empty())
     throw InputError("nhtree: --reference, --reference-face-patch and --reference-graph compare meshes (.obj)");
   const LoadedInput in = load_input(o.input, o.limits);
+  if (in.arranged3) return run_solid3(o, in, files);
   if (!in.arranged)
     throw InputError(o.input + ": nhtree needs a scene, not a complex: corner angles need the geometry");
   const Solid solid = load_solid(in, o.solid);
@@ -301,12 +343,13 @@ int run_planar(const NhtreeOptions& o, OutputFiles& files) {
   print_graph(r, t.leaf_names, out);
   print_run(r, out);
   const nhrep::PlanarEvaluation e = nhrep::evaluate_on_whole_plane(t, *in.scene, arranged, solid.cells);
-  print_evaluation(e, out);
+  print_evaluation(e, 2, out);
   const std::vector<std::vector<int>> groups = groups_of(o, r);
   const int status = finish(o, r, groups, e.evaluation.violations, out);
   nlohmann::json extra = nhtree_planar_json(t, e);
   extra["input"] = o.input;
   put_outputs(o, r, o.group ? &groups : nullptr, extra, files);
+  put_diagrams(o, r, t.leaf_names, o.input, files);
   if (!o.svg_path.empty())
     files.put(o.svg_path, nhrep_svg(*in.scene, arranged, solid.cells, r.graph.surface, r.graph.piece_patch,
                                                 t.leaf_node, "NH-Rep tree: " + nhtree_text(r.tree)));
@@ -327,9 +370,9 @@ int run_nhtree(const NhtreeOptions& o) {
 void add_nhtree_command(CLI::App& app) {
   auto o = std::make_shared<NhtreeOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "nhtree", "NH-Rep's Boolean tree (Algorithm 1 with patch decomposition) of a 2D solid or a 3D mesh, its patch "
-                "graph with exact feature types, and its cross-checks");
-  cmd->add_option("INPUT", o->input, "a mesh (.obj, with --fea) or an hsx-scene/1 file (with --shape or --csg)")->required();
+      "nhtree", "NH-Rep's Boolean tree (Algorithm 1 with patch decomposition) of a 2D or 3D solid on a scene or a 3D "
+                "mesh, its patch graph with exact feature types, and its cross-checks");
+  cmd->add_option("INPUT", o->input, "a mesh (.obj, with --fea) or an hsx-scene/1 file of dimension 2 or 3 (with --shape or --csg)")->required();
   cmd->add_option("--fea", o->fea_path, "mesh: feature edges (first line the count, then 0-based vertex pairs)");
   cmd->add_option("--sharp-angle", o->sharp_angle,
                   "mesh: feature edges bending less than this many degrees count as smooth (exact; default 0: only "
@@ -340,14 +383,20 @@ void add_nhtree_command(CLI::App& app) {
   cmd->add_flag("--nest-holes", o->nest_holes,
                "extension: build each hole's or cavity's tree under its solid part's tree (intersected) instead of "
                "uniting every boundary component as Section 5.2 does");
-  cmd->add_option("--shape", o->solid.shape_path, "2D: the solid as an hsx-result/1 file computed from INPUT");
-  cmd->add_option("--csg", o->solid.csg, "2D: the solid as a CSG expression over INPUT's halfspaces");
+  cmd->add_option("--shape", o->solid.shape_path, "scene: the solid as an hsx-result/1 file computed from INPUT");
+  cmd->add_option("--csg", o->solid.csg, "scene: the solid as a CSG expression over INPUT's halfspaces");
   cmd->add_option("--json", o->json_path, "write the tree, patch graph, decompositions and steps (hsx-nhtree/1)")
       ->check(output_path());
   cmd->add_option("--conf", o->conf_path,
                   "write the tree in NH-Rep's .conf form (its patch numbers are the printed tree's)")
       ->check(output_path());
-  cmd->add_option("--svg", o->svg_path, "2D: draw the patches coloured by tree node")->check(output_path());
+  cmd->add_option("--svg", o->svg_path, "scene: draw the patches coloured by tree node (3D: four views)")
+      ->check(output_path());
+  cmd->add_option("--tree-dot", o->tree_dot_path, "write the tree as a Graphviz diagram (leaves: patches)")
+      ->check(output_path());
+  cmd->add_option("--graph-dot", o->graph_dot_path,
+                  "write the patch graph as a Graphviz diagram (edges: feature curves by type, patches coloured "
+                  "by tree node)")->check(output_path());
   cmd->add_option("--decomposed", o->decomposed_prefix,
                   "mesh: write the decomposed mesh as PREFIX.obj, PREFIX.fea and PREFIX.face-patch.txt (NH-Rep's "
                   "form; patch ids as in --conf)")->check(output_path());

@@ -3,12 +3,16 @@
 
 #include <hsx/io/files.hpp>
 #include <hsx/io/scene_json.hpp>
+#include <hsx/io/svg.hpp>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
+#include <map>
+#include <memory>
+#include <set>
 #include <sstream>
 
 namespace hsx {
@@ -109,6 +113,67 @@ std::string counts_row(const std::string& label, const StatusCounts& c) {
     << (c.held + c.failed ? percent(c.held_rate()) : "-") << "  "
     << (c.held + c.failed ? "[" + percent(i.low) + ", " + percent(i.high) + "]" : "-") << "\n";
   return s.str();
+}
+
+
+/// A results.jsonl as read: its complete lines' records, and its sizes.
+struct ResultsFile {
+  std::vector<SceneRecord> records;
+  std::size_t complete = 0, size = 0;  ///< the bytes up to the last newline, and all of them
+};
+
+/// Reads the complete lines of `path`, which must be the first scenes of `plan_indices` in order (a damaged line
+/// before the last newline is refused).
+ResultsFile read_results(const std::string& path, const std::vector<std::uint64_t>& plan_indices) {
+  ResultsFile out;
+  const std::string text = read_file(path, std::size_t(64) << 30);
+  out.size = text.size();
+  out.complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+  std::size_t at = 0;
+  long line_number = 0;
+  while (at < out.complete) {
+    const std::size_t end = text.find('\n', at);
+    ++line_number;
+    const std::string where = path + ": line " + std::to_string(line_number) + ": ";
+    SceneRecord r;
+    try {
+      r = record_from_json(nlohmann::json::parse(text.substr(at, end - at)));
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(where + "not a JSON record (" + e.what() + "); only the last line may be torn");
+    } catch (const InputError& e) {
+      throw InputError(where + e.what());
+    }
+    const std::size_t k = out.records.size();
+    if (k >= plan_indices.size() || r.index != plan_indices[k])
+      throw InputError(where + "scene " + std::to_string(r.index) + " is not the plan's scene number " +
+                       std::to_string(k + 1) + " (the file is not this campaign's)");
+    out.records.push_back(std::move(r));
+    at = end + 1;
+  }
+  return out;
+}
+
+/// A results.jsonl read one line at a time.
+struct LineStream {
+  std::ifstream in;
+  explicit LineStream(const std::string& path) : in(path, std::ios::binary) {}
+  /// The next line (without its newline); false at the end. `torn`: it has no newline (the file's last line).
+  bool next(std::string& line, bool& torn) {
+    if (!std::getline(in, line)) return false;
+    torn = in.eof();
+    return true;
+  }
+};
+
+/// One results.jsonl line's record; InputError starting with `where` when it is not one.
+SceneRecord parse_line(const std::string& line, const std::string& where) {
+  try {
+    return record_from_json(nlohmann::json::parse(line));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(where + "not a JSON record (" + e.what() + ")");
+  } catch (const InputError& e) {
+    throw InputError(where + e.what());
+  }
 }
 
 }  // namespace
@@ -344,31 +409,10 @@ CampaignFolder::CampaignFolder(const std::string& dir, const nlohmann::json& man
   if (fresh) {
     write_file_atomically(manifest_path.string(), manifest.dump(2) + "\n");
   } else if (fs::exists(results_path, ec)) {
-    const std::string text = read_file(results_path.string(), std::size_t(64) << 30);
-    const std::size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
-    std::size_t at = 0;
-    long line_number = 0;
-    while (at < complete) {
-      const std::size_t end = text.find('\n', at);
-      ++line_number;
-      const std::string where = results_path.string() + ": line " + std::to_string(line_number) + ": ";
-      SceneRecord r;
-      try {
-        r = record_from_json(nlohmann::json::parse(text.substr(at, end - at)));
-      } catch (const nlohmann::json::exception& e) {
-        throw InputError(where + "not a JSON record (" + e.what() + "); only the last line may be torn");
-      } catch (const InputError& e) {
-        throw InputError(where + e.what());
-      }
-      const std::size_t k = records_.size();
-      if (k >= plan_indices.size() || r.index != plan_indices[k])
-        throw InputError(where + "scene " + std::to_string(r.index) + " is not the plan's scene number " +
-                         std::to_string(k + 1) + " (the file is not this campaign's)");
-      records_.push_back(std::move(r));
-      at = end + 1;
-    }
-    if (complete < text.size()) {
-      fs::resize_file(results_path, complete, ec);
+    ResultsFile file = read_results(results_path.string(), plan_indices);
+    records_ = std::move(file.records);
+    if (file.complete < file.size) {
+      fs::resize_file(results_path, file.complete, ec);
       if (ec) throw OutputError(results_path.string() + ": cannot cut its torn last line: " + ec.message());
       cut_torn_line_ = true;
     }
@@ -377,7 +421,7 @@ CampaignFolder::CampaignFolder(const std::string& dir, const nlohmann::json& man
   if (!results_) throw OutputError(results_path.string() + ": cannot open it for writing: " + std::strerror(errno));
 }
 
-void CampaignFolder::append(const SceneRecord& record) {
+void CampaignFolder::append(const SceneRecord& record, const std::optional<Scene2>& minimised) {
   if (record.failed()) {
     if (!record.scene) throw std::logic_error("CampaignFolder::append: a failed record without its scene");
     std::error_code ec;
@@ -386,16 +430,289 @@ void CampaignFolder::append(const SceneRecord& record) {
       throw OutputError(failures.string() + ": cannot make the folder: " + ec.message());
     Scene2 scene = *record.scene;
     scene.description = failure_note(record);
-    write_file_atomically((failures / ("scene-" + std::to_string(record.index) + ".json")).string(),
-                          write_scene2(scene).dump(2) + "\n");
+    const std::string name = "scene-" + std::to_string(record.index);
+    write_file_atomically((failures / (name + ".json")).string(), write_scene2(scene).dump(2) + "\n");
+    if (minimised)
+      write_file_atomically((failures / (name + ".min.json")).string(), write_scene2(*minimised).dump(2) + "\n");
   }
-  results_ << record_to_json(record).dump() << '\n';
+  append_line(record_to_json(record).dump());
+}
+
+void CampaignFolder::append_line(const std::string& line) {
+  results_ << line << '\n';
   results_.flush();
   if (!results_) throw OutputError(dir_ + "/results.jsonl: cannot write to it (a full disk?)");
 }
 
 void CampaignFolder::write_summary(const Summary& summary) {
   write_file_atomically((fs::path(dir_) / "summary.json").string(), summary_to_json(summary).dump(2) + "\n");
+  write_file_atomically((fs::path(dir_) / "summary.svg").string(), summary_svg(summary));
+}
+
+std::optional<Scene2> minimised_failure(const SceneRecord& record, const campaign::MinimiseResult& m) {
+  if (!m.reproduced) return std::nullopt;
+  const int halfspaces = static_cast<int>(m.scene.halfspaces.size()), samples = static_cast<int>(m.scene.samples.size());
+  std::ostringstream head;
+  head << "hsx campaign --seed " << record.seed << ", scene " << record.index << " minimised ("
+       << halfspaces + m.removed_halfspaces << " -> " << halfspaces << " halfspaces, " << samples + m.removed_samples
+       << " -> " << samples << " samples, " << m.simplified_coordinates << " coordinate"
+       << (m.simplified_coordinates == 1 ? "" : "s") << " simplified, " << m.steps << " step"
+       << (m.steps == 1 ? "" : "s") << (m.exhausted ? ", the step budget ran out" : "") << "): ";
+  std::string what;
+  if (m.record.outcome == SceneOutcome::Error) {
+    what = "error: " + m.record.note;
+  } else {
+    std::string names;
+    const campaign::CheckOutcome* first = nullptr;
+    for (const campaign::CheckOutcome& c : m.record.checks)
+      if (std::find(m.target.begin(), m.target.end(), c.check) != m.target.end()) {
+        names += (names.empty() ? "" : ", ") + c.check;
+        if (!first) first = &c;
+      }
+    what = "failed " + names + ": " + (first ? first->witness : std::string());
+  }
+  if (what.size() > 400) what = what.substr(0, 397) + "...";
+  std::string note = head.str() + what + " (the original: failures/scene-" + std::to_string(record.index) + ".json)";
+  for (char& c : note)
+    if (c == '\n' || c == '\r') c = ' ';
+  Scene2 scene = m.scene;
+  scene.description = note;
+  return scene;
+}
+
+namespace {
+
+/// The summary's panels: a title and rates by number of halfspaces.
+struct Panel {
+  std::string title;
+  std::map<int, StatusCounts> rows;
+  StatusCounts all;
+};
+
+std::string rate_text(const StatusCounts& c) {
+  if (c.held + c.failed == 0) return "no scene decided";
+  const campaign::RateInterval i = c.held_interval();
+  return percent(c.held_rate()) + " of " + std::to_string(c.held + c.failed) + " [" + percent(i.low) + ", " +
+         percent(i.high) + "]";
+}
+
+}  // namespace
+
+std::string summary_svg(const Summary& s) {
+  std::vector<Panel> panels;
+  for (const std::string& name : s.checks) {
+    Panel p;
+    p.title = name + ": held / (held + failed), 95% Wilson; all: " + rate_text(s.by_check.at(name));
+    const auto it = s.by_check_and_halfspaces.find(name);
+    if (it != s.by_check_and_halfspaces.end()) p.rows = it->second;
+    p.all = s.by_check.at(name);
+    panels.push_back(std::move(p));
+  }
+  if (std::find(s.checks.begin(), s.checks.end(), "beam1") != s.checks.end()) {
+    Panel p;
+    p.title = "beam1 optimality: K=1 energy = optimum, where beam1 held; all: " + rate_text(s.beam1_optimal);
+    p.rows = s.beam1_optimal_by_halfspaces;
+    p.all = s.beam1_optimal;
+    panels.push_back(std::move(p));
+  }
+  std::set<int> xs;
+  for (const Panel& p : panels)
+    for (const auto& row : p.rows) xs.insert(row.first);
+  const double width = 720, panel_height = 170, left = 56, right = 16, top = 28, plot_height = 110;
+  const double height = 8 + panel_height * static_cast<double>(panels.size());
+  const std::vector<int> x_values(xs.begin(), xs.end());
+  const double step = x_values.empty() ? 0 : (width - left - right) / static_cast<double>(x_values.size());
+  const auto x_of = [&](std::size_t k) { return left + step * (static_cast<double>(k) + 0.5); };
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << svg_number(width) << "\" height=\""
+      << svg_number(height) << "\" viewBox=\"0 0 " << svg_number(width) << " " << svg_number(height)
+      << "\" font-family=\"sans-serif\">\n"
+      << "<rect x=\"0\" y=\"0\" width=\"" << svg_number(width) << "\" height=\"" << svg_number(height)
+      << "\" fill=\"white\"/>\n";
+  for (std::size_t k = 0; k < panels.size(); ++k) {
+    const Panel& p = panels[k];
+    const double y0 = 8 + panel_height * static_cast<double>(k), base = y0 + top + plot_height;
+    const auto y_of = [&](double rate) { return base - rate * plot_height; };
+    out << "<g class=\"panel\">\n";
+    out << "<text class=\"title\" x=\"" << svg_number(left) << "\" y=\"" << svg_number(y0 + 16)
+        << "\" font-size=\"12\">" << svg_escape(p.title) << "</text>\n";
+    for (int g = 0; g <= 4; ++g) {
+      const double y = y_of(g / 4.0);
+      out << "<line class=\"grid\" x1=\"" << svg_number(left) << "\" y1=\"" << svg_number(y) << "\" x2=\""
+          << svg_number(width - right) << "\" y2=\"" << svg_number(y) << "\" stroke=\"#dddddd\"/>\n";
+      out << "<text class=\"label\" x=\"" << svg_number(left - 6) << "\" y=\"" << svg_number(y + 4)
+          << "\" font-size=\"10\" text-anchor=\"end\">" << 25 * g << "%</text>\n";
+    }
+    out << "<path class=\"axis\" d=\"M " << svg_number(left) << " " << svg_number(y_of(1)) << " L "
+        << svg_number(left) << " " << svg_number(base) << " L " << svg_number(width - right) << " "
+        << svg_number(base) << "\" fill=\"none\" stroke=\"black\"/>\n";
+    for (std::size_t j = 0; j < x_values.size(); ++j)
+      out << "<text class=\"label\" x=\"" << svg_number(x_of(j)) << "\" y=\"" << svg_number(base + 14)
+          << "\" font-size=\"10\" text-anchor=\"middle\">" << x_values[j] << "</text>\n";
+    out << "<text class=\"label\" x=\"" << svg_number(width - right) << "\" y=\"" << svg_number(base + 27)
+        << "\" font-size=\"10\" text-anchor=\"end\">halfspaces</text>\n";
+    for (std::size_t j = 0; j < x_values.size(); ++j) {
+      const auto row = p.rows.find(x_values[j]);
+      if (row == p.rows.end() || row->second.held + row->second.failed == 0) continue;
+      const StatusCounts& c = row->second;
+      const campaign::RateInterval i = c.held_interval();
+      const double x = x_of(j);
+      out << "<path class=\"interval\" d=\"M " << svg_number(x) << " " << svg_number(y_of(i.low)) << " L "
+          << svg_number(x) << " " << svg_number(y_of(i.high)) << " M " << svg_number(x - 4) << " "
+          << svg_number(y_of(i.low)) << " L " << svg_number(x + 4) << " " << svg_number(y_of(i.low)) << " M "
+          << svg_number(x - 4) << " " << svg_number(y_of(i.high)) << " L " << svg_number(x + 4) << " "
+          << svg_number(y_of(i.high)) << "\" fill=\"none\" stroke=\"#1f77b4\"/>\n";
+      out << "<circle class=\"rate\" cx=\"" << svg_number(x) << "\" cy=\"" << svg_number(y_of(c.held_rate()))
+          << "\" r=\"3\" fill=\"#1f77b4\"><title>" << x_values[j] << " halfspaces: " << svg_escape(rate_text(c))
+          << "</title></circle>\n";
+    }
+    out << "</g>\n";
+  }
+  out << "</svg>\n";
+  return out.str();
+}
+
+campaign::Summary merge_campaigns(const std::string& out, const std::vector<std::string>& shards,
+                                  const std::function<void(const SceneRecord&)>& each) {
+  if (shards.empty()) throw InputError("--merge: name the shard folders to merge");
+  struct Shard {
+    std::string dir;
+    nlohmann::json manifest;
+    CampaignPlan plan;
+  };
+  std::vector<Shard> given;
+  for (const std::string& dir : shards) {
+    Shard sh;
+    sh.dir = dir;
+    const std::string manifest_path = (fs::path(dir) / "campaign.json").string();
+    std::error_code ec;
+    if (!fs::is_regular_file(manifest_path, ec))
+      throw InputError("--merge: " + dir + " holds no campaign (no campaign.json)");
+    try {
+      sh.manifest = nlohmann::json::parse(read_file(manifest_path));
+      const nlohmann::json& plan = sh.manifest.at("plan");
+      if (sh.manifest.at("format") != kCampaignFormat) throw InputError("not " + std::string(kCampaignFormat));
+      sh.plan.start = plan.at("start").get<std::uint64_t>();
+      sh.plan.count = plan.at("count").get<std::uint64_t>();
+      sh.plan.shard = plan.at("shard").get<std::uint64_t>();
+      sh.plan.shards = plan.at("shards").get<std::uint64_t>();
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError("--merge: " + manifest_path + ": not a campaign file: " + e.what());
+    } catch (const InputError& e) {
+      throw InputError("--merge: " + manifest_path + ": " + e.what());
+    }
+    given.push_back(std::move(sh));
+  }
+  // The same campaign: the manifests equal but for the shard number.
+  const auto without_shard = [](nlohmann::json j) {
+    j["plan"].erase("shard");
+    return j;
+  };
+  const nlohmann::json common = without_shard(given.front().manifest);
+  for (const Shard& sh : given)
+    if (without_shard(sh.manifest) != common) {
+      std::string keys;
+      for (const auto& [key, value] : common.items())
+        if (!sh.manifest.contains(key) || without_shard(sh.manifest)[key] != value) keys += (keys.empty() ? "" : ", ") + key;
+      for (const auto& [key, value] : sh.manifest.items())
+        if (!common.contains(key)) keys += (keys.empty() ? "" : ", ") + key;
+      throw InputError("--merge: " + sh.dir + " is not the same campaign as " + given.front().dir + " (they differ in " +
+                       keys + "); only the shards of one campaign merge");
+    }
+  const std::uint64_t k = given.front().plan.shards;
+  std::map<std::uint64_t, const Shard*> by_shard;
+  std::vector<std::string> problems;
+  for (const Shard& sh : given) {
+    const auto [it, fresh] = by_shard.emplace(sh.plan.shard, &sh);
+    if (!fresh)
+      throw InputError("--merge: shard " + std::to_string(sh.plan.shard) + "/" + std::to_string(k) + " is given twice (" +
+                       it->second->dir + " and " + sh.dir + ")");
+  }
+  std::string missing;
+  for (std::uint64_t i = 0; i < k; ++i)
+    if (!by_shard.count(i)) {
+      if (missing.size() > 200) {
+        missing += ", ...";
+        break;
+      }
+      missing += (missing.empty() ? "" : ", ") + std::to_string(i) + "/" + std::to_string(k);
+    }
+  if (!missing.empty()) problems.push_back("missing shards " + missing);
+  // Each shard's lines, streamed (one line in memory at a time): its plan's indices in order, all of them.
+  for (Shard& sh : given) {
+    const std::uint64_t n = sh.plan.count > sh.plan.shard ? (sh.plan.count - sh.plan.shard + k - 1) / k : 0;
+    const std::string name = "shard " + std::to_string(sh.plan.shard) + "/" + std::to_string(k) + " (" + sh.dir + ")";
+    const std::string path = (fs::path(sh.dir) / "results.jsonl").string();
+    LineStream lines(path);
+    std::uint64_t done = 0;
+    std::string line;
+    bool torn = false, torn_seen = false;
+    while (lines.next(line, torn)) {
+      if (torn) {
+        torn_seen = true;
+        break;
+      }
+      const SceneRecord r = parse_line(line, path + ": line " + std::to_string(done + 1) + ": ");
+      const std::uint64_t want = sh.plan.start + sh.plan.shard + done * k;
+      if (done >= n || r.index != want)
+        throw InputError("--merge: " + path + ": line " + std::to_string(done + 1) + ": scene " +
+                         std::to_string(r.index) + " is not the shard's scene number " + std::to_string(done + 1));
+      std::error_code ec;
+      if (r.failed() && !fs::is_regular_file(fs::path(sh.dir) / "failures" / ("scene-" + std::to_string(r.index) + ".json"), ec))
+        problems.push_back(name + ": scene " + std::to_string(r.index) + " failed but failures/scene-" +
+                           std::to_string(r.index) + ".json is not there");
+      ++done;
+    }
+    if (done < n)
+      problems.push_back(name + " has " + std::to_string(done) + " of its " + std::to_string(n) + " scenes (" +
+                         std::to_string(n - done) + " missing, the first is scene " +
+                         std::to_string(sh.plan.start + sh.plan.shard + done * k) + "): finish it with --resume");
+    else if (torn_seen)
+      problems.push_back(name + ": results.jsonl ends in a torn line after its last scene");
+  }
+  if (!problems.empty()) {
+    std::string text = "--merge: the shards are not a complete campaign: ";
+    for (std::size_t i = 0; i < problems.size(); ++i) text += (i ? "; " : "") + problems[i];
+    throw InputError(text);
+  }
+  // The whole range's folder, as one run writes it.
+  nlohmann::json manifest = given.front().manifest;
+  manifest["plan"]["shard"] = 0;
+  manifest["plan"]["shards"] = 1;
+  CampaignPlan whole = given.front().plan;
+  whole.shard = 0;
+  whole.shards = 1;
+  std::vector<std::string> names = manifest.at("checks").get<std::vector<std::string>>();
+  if (manifest.contains("against")) names.push_back(campaign::kAgainstCheck);
+  Summary summary(names);
+  CampaignFolder folder(out, manifest, false, {});
+  std::vector<std::unique_ptr<LineStream>> streams;
+  for (std::uint64_t i = 0; i < k; ++i)
+    streams.push_back(std::make_unique<LineStream>((fs::path(by_shard.at(i)->dir) / "results.jsonl").string()));
+  const std::uint64_t count = whole.count;
+  std::string line;
+  for (std::uint64_t j = 0; j < count; ++j) {
+    const Shard& sh = *by_shard.at(j % k);
+    bool torn = false;
+    if (!streams[static_cast<std::size_t>(j % k)]->next(line, torn) || torn)
+      throw InputError("--merge: " + sh.dir + "/results.jsonl changed while it was merged");
+    const SceneRecord r = parse_line(line, sh.dir + "/results.jsonl: ");
+    if (r.failed()) {
+      std::error_code ec;
+      const fs::path from = fs::path(sh.dir) / "failures", to = fs::path(out) / "failures";
+      if (!fs::is_directory(to, ec) && !fs::create_directory(to, ec) && ec)
+        throw OutputError(to.string() + ": cannot make the folder: " + ec.message());
+      const std::string name = "scene-" + std::to_string(r.index);
+      for (const std::string file : {name + ".json", name + ".min.json"})
+        if (fs::is_regular_file(from / file, ec)) write_file_atomically((to / file).string(), read_file((from / file).string()));
+    }
+    folder.append_line(line);
+    summary.add(r);
+    if (each) each(r);
+  }
+  folder.write_summary(summary);
+  return summary;
 }
 
 }  // namespace hsx

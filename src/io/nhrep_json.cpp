@@ -346,7 +346,11 @@ namespace {
 
 nlohmann::json exact_points(const std::vector<std::vector<Rational>>& points) {
   nlohmann::json out = nlohmann::json::array();
-  for (const auto& p : points) out.push_back({exact_string(p.at(0)), exact_string(p.at(1))});
+  for (const auto& p : points) {
+    nlohmann::json point = nlohmann::json::array();
+    for (const Rational& q : p) point.push_back(exact_string(q));
+    out.push_back(point);
+  }
   return out;
 }
 
@@ -370,6 +374,30 @@ nlohmann::json nhtree_planar_json(const nhrep::PlanarTree& tree, const nhrep::Pl
   const nhrep::Evaluation& e = evaluation.evaluation;
   return {{"natural_halfspaces", names},
           {"patch_pieces", where},
+          {"evaluation",
+           {{"verdict", nhrep::verdict_key(e.verdict)}, {"correct", e.correct}, {"describable", e.describable},
+            {"cells", evaluation.cells}, {"wrong_inside", exact_points(evaluation.missed)},
+            {"wrong_outside", exact_points(evaluation.added)}, {"violations", e.violations}}}};
+}
+
+nlohmann::json nhtree_solid3_json(const nhrep::SolidTree3& tree, const nhrep::CellEvaluation& evaluation) {
+  nlohmann::json names = nlohmann::json::object(), where = nlohmann::json::object();
+  const nhrep::PatchGraph& g = tree.built.graph;
+  for (int p : g.live_patches()) {
+    names[std::to_string(p)] = tree.leaf_names[at(p)];
+    nlohmann::json pieces = nlohmann::json::array();
+    for (int piece_id : g.patches[at(p)].pieces) {
+      const BoundaryPiece& piece = g.surface.pieces[at(piece_id)];
+      if (piece.split_of < 0)
+        pieces.push_back(piece.origin);
+      else
+        pieces.push_back({{"triangle", piece.origin}, {"kept_edge", g.surface.links[at(piece.kept_link)].origin}});
+    }
+    where[std::to_string(p)] = pieces;
+  }
+  const nhrep::Evaluation& e = evaluation.evaluation;
+  return {{"natural_halfspaces", names},
+          {"patch_triangles", where},
           {"evaluation",
            {{"verdict", nhrep::verdict_key(e.verdict)}, {"correct", e.correct}, {"describable", e.describable},
             {"cells", evaluation.cells}, {"wrong_inside", exact_points(evaluation.missed)},

@@ -3,9 +3,11 @@
 
 #include "geometry/planar_corners.hpp"
 #include <hsx/io/svg.hpp>
+#include <hsx/io/svg3.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -244,6 +246,191 @@ std::string nhrep_svg(const Scene2& scene, const Arranged2& arranged, const std:
   }
   s += "</g>\n";
   s += "</svg>\n";
+  return s;
+}
+
+namespace {
+
+struct V3 {
+  double x = 0, y = 0, z = 0;
+};
+V3 to_v3(const PointQ3& p) { return {p.x.get_d(), p.y.get_d(), p.z.get_d()}; }
+V3 minus(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+V3 cross3(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double dot3(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V3 unit(V3 a) {
+  const double n = std::sqrt(dot3(a, a));
+  return n > 0 ? V3{a.x / n, a.y / n, a.z / n} : a;
+}
+
+std::string shade(const char* hex, double light) {
+  unsigned r = 0, g = 0, b = 0;
+  std::sscanf(hex, "#%02x%02x%02x", &r, &g, &b);
+  auto c = [&](unsigned v) { return std::min(255, static_cast<int>(std::lround(v * light))); };
+  char out[8];
+  std::snprintf(out, sizeof out, "#%02x%02x%02x", c(r), c(g), c(b));
+  return out;
+}
+
+}  // namespace
+
+std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& solid_cells,
+                       const BoundarySurface& surface, const std::vector<int>& piece_patch,
+                       const std::vector<int>& patch_colour_group, const std::string& title, int width_px) {
+  const Arrangement3& arr = arranged.arrangement;
+  auto fail = [](const std::string& why) { throw std::invalid_argument("nhrep_svg3: " + why); };
+  if (surface.dimension != 3) fail("the boundary is not 3D");
+  if (solid_cells.size() != arr.cells().size()) fail("one solid flag per cell expected");
+  if (static_cast<std::size_t>(arr.halfspace_count()) != scene.halfspaces.size())
+    fail("the arrangement's halfspaces are not the scene's");
+  if (piece_patch.size() != surface.pieces.size()) fail("one patch id per piece expected");
+  const auto& tris = arr.triangles();
+  const auto& verts = arr.vertices();
+  const auto& edges = arr.edges();
+
+  // Each live piece as a triangle in doubles.
+  struct Drawn {
+    int piece = -1, patch = -1;
+    V3 p[3];
+  };
+  std::vector<Drawn> drawn;
+  std::vector<int> first_piece;  // per patch, index into drawn of its lowest piece
+  for (std::size_t k = 0; k < surface.pieces.size(); ++k) {
+    const BoundaryPiece& piece = surface.pieces[k];
+    if (piece.retired) continue;
+    if (piece.origin < 0 || static_cast<std::size_t>(piece.origin) >= tris.size())
+      fail("piece " + std::to_string(k) + ": origin is not an arrangement triangle");
+    const int patch = piece_patch[k];
+    if (patch < 0) fail("piece " + std::to_string(k) + ": live but in no patch");
+    if (!patch_colour_group.empty() && static_cast<std::size_t>(patch) >= patch_colour_group.size())
+      fail("piece " + std::to_string(k) + ": patch " + std::to_string(patch) + " has no colour group");
+    const ArrTriangle3& t = tris[static_cast<std::size_t>(piece.origin)];
+    Drawn d;
+    d.piece = static_cast<int>(k);
+    d.patch = patch;
+    for (int i = 0; i < 3; ++i) d.p[i] = to_v3(verts.at(static_cast<std::size_t>(t.vertices[static_cast<std::size_t>(i)])));
+    if (piece.split_of >= 0 && piece.kept_link >= 0 && static_cast<std::size_t>(piece.kept_link) < surface.links.size()) {
+      const int e = surface.links[static_cast<std::size_t>(piece.kept_link)].origin;
+      if (e >= 0 && static_cast<std::size_t>(e) < edges.size()) {
+        const V3 c{(d.p[0].x + d.p[1].x + d.p[2].x) / 3, (d.p[0].y + d.p[1].y + d.p[2].y) / 3,
+                   (d.p[0].z + d.p[1].z + d.p[2].z) / 3};
+        d.p[0] = c;
+        d.p[1] = to_v3(verts.at(static_cast<std::size_t>(edges[static_cast<std::size_t>(e)].a)));
+        d.p[2] = to_v3(verts.at(static_cast<std::size_t>(edges[static_cast<std::size_t>(e)].b)));
+      }
+    }
+    if (static_cast<std::size_t>(patch) >= first_piece.size()) first_piece.resize(static_cast<std::size_t>(patch) + 1, -1);
+    if (first_piece[static_cast<std::size_t>(patch)] < 0) first_piece[static_cast<std::size_t>(patch)] = static_cast<int>(drawn.size());
+    drawn.push_back(d);
+  }
+
+  // Views: screen axes of io/svg3.hpp's default views, one scale fitted to the domain box's corners.
+  struct View {
+    std::string name;
+    V3 dir, right, up;
+  };
+  std::vector<View> views;
+  for (const SvgView3& v : default_svg_views3()) {
+    View w;
+    w.name = v.name;
+    w.dir = unit(to_v3(v.direction));
+    const V3 up = to_v3(v.up);
+    w.right = unit(cross3(w.dir, up));
+    w.up = unit(cross3(w.right, w.dir));
+    views.push_back(w);
+  }
+  const Box3& box = arr.domain();
+  std::vector<V3> corners;
+  for (int i = 0; i < 8; ++i)
+    corners.push_back(to_v3({i & 1 ? box.max.x : box.min.x, i & 2 ? box.max.y : box.min.y, i & 4 ? box.max.z : box.min.z}));
+  double extent = 0;
+  std::vector<std::pair<double, double>> centre(views.size());
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    double lx = 1e300, hx = -1e300, ly = 1e300, hy = -1e300;
+    for (const V3& c : corners) {
+      const double x = dot3(c, views[v].right), y = dot3(c, views[v].up);
+      lx = std::min(lx, x), hx = std::max(hx, x), ly = std::min(ly, y), hy = std::max(hy, y);
+    }
+    extent = std::max({extent, hx - lx, hy - ly});
+    centre[v] = {(lx + hx) / 2, (ly + hy) / 2};
+  }
+  const double width = std::max(width_px, 200);
+  const double cell = width / 2, margin = 12, title_height = title.empty() ? 0 : 26;
+  const double scale = extent > 0 ? (cell - 2 * margin - 18) / extent : 1;
+  const std::size_t rows = (views.size() + 1) / 2;
+  const double legend_top = title_height + rows * cell + 6;
+  const double height = legend_top + 24;
+  auto* const n = &svg_number;
+  const V3 light = unit({-0.3, 0.5, 0.8});
+  auto colour_index = [&](int patch) { return patch_colour_group.empty() ? patch : patch_colour_group[static_cast<std::size_t>(patch)]; };
+
+  std::string s;
+  s += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + n(width) + "\" height=\"" + n(height) +
+       "\" viewBox=\"0 0 " + n(width) + " " + n(height) + "\" font-family=\"Helvetica, Arial, sans-serif\">\n";
+  s += "<rect x=\"0\" y=\"0\" width=\"" + n(width) + "\" height=\"" + n(height) + "\" fill=\"#ffffff\"/>\n";
+  if (!title.empty())
+    s += "<text class=\"title\" x=\"" + n(width / 2) + "\" y=\"18\" text-anchor=\"middle\" font-size=\"15\">" +
+         svg_escape(title) + "</text>\n";
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const View& w = views[v];
+    const double left = (v % 2) * cell, top = title_height + (v / 2) * cell;
+    auto X = [&](V3 p) { return left + cell / 2 + (dot3(p, w.right) - centre[v].first) * scale; };
+    auto Y = [&](V3 p) { return top + 18 + (cell - 18) / 2 - (dot3(p, w.up) - centre[v].second) * scale; };
+    s += "<g class=\"view\" data-name=\"" + w.name + "\">\n";
+    s += "<text x=\"" + n(left + cell / 2) + "\" y=\"" + n(top + 14) + "\" text-anchor=\"middle\" font-size=\"12\">" +
+         w.name + "</text>\n";
+    std::vector<std::pair<double, int>> order;
+    for (std::size_t k = 0; k < drawn.size(); ++k) {
+      const Drawn& d = drawn[k];
+      const V3 c{(d.p[0].x + d.p[1].x + d.p[2].x) / 3, (d.p[0].y + d.p[1].y + d.p[2].y) / 3,
+                 (d.p[0].z + d.p[1].z + d.p[2].z) / 3};
+      order.emplace_back(-dot3(c, w.dir), static_cast<int>(k));  // far first: larger depth along dir
+    }
+    std::sort(order.begin(), order.end());
+    for (const auto& [depth, k] : order) {
+      const Drawn& d = drawn[static_cast<std::size_t>(k)];
+      const V3 normal = unit(cross3(minus(d.p[1], d.p[0]), minus(d.p[2], d.p[0])));
+      const double lit = 0.35 + 0.65 * std::fabs(dot3(normal, light));
+      s += "<polygon class=\"piece\" data-id=\"" + std::to_string(d.piece) + "\" data-patch=\"" +
+           std::to_string(d.patch) + "\" fill=\"" + shade(svg_palette_colour(colour_index(d.patch)), lit) +
+           "\" fill-opacity=\"0.85\" stroke=\"none\" points=\"";
+      for (int i = 0; i < 3; ++i) s += (i ? " " : "") + n(X(d.p[i])) + "," + n(Y(d.p[i]));
+      s += "\"/>\n";
+    }
+    for (std::size_t l = 0; l < surface.links.size(); ++l) {
+      const BoundaryLink& link = surface.links[l];
+      if (!link.feature || link.origin < 0 || static_cast<std::size_t>(link.origin) >= edges.size()) continue;
+      const ArrEdge3& e = edges[static_cast<std::size_t>(link.origin)];
+      const V3 a = to_v3(verts.at(static_cast<std::size_t>(e.a))), b = to_v3(verts.at(static_cast<std::size_t>(e.b)));
+      s += "<line class=\"feature\" data-id=\"" + std::to_string(l) + "\" data-type=\"" + feature_type_name(link.type) +
+           "\" x1=\"" + n(X(a)) + "\" y1=\"" + n(Y(a)) + "\" x2=\"" + n(X(b)) + "\" y2=\"" + n(Y(b)) + "\" stroke=\"" +
+           corner_colour(link.type) + "\" stroke-width=\"1.5\"/>\n";
+    }
+    for (std::size_t patch = 0; patch < first_piece.size(); ++patch) {
+      if (first_piece[patch] < 0) continue;
+      const Drawn& d = drawn[static_cast<std::size_t>(first_piece[patch])];
+      const BoundaryPiece& piece = surface.pieces[static_cast<std::size_t>(d.piece)];
+      std::string label = "P" + std::to_string(patch);
+      if (piece.carrier >= 0 && static_cast<std::size_t>(piece.carrier) < scene.halfspaces.size())
+        label += " " + std::string(piece.carrier_complemented ? "~" : "") +
+                 scene.halfspaces[static_cast<std::size_t>(piece.carrier)].name;
+      const V3 c{(d.p[0].x + d.p[1].x + d.p[2].x) / 3, (d.p[0].y + d.p[1].y + d.p[2].y) / 3,
+                 (d.p[0].z + d.p[1].z + d.p[2].z) / 3};
+      s += "<text class=\"patch-id\" x=\"" + n(X(c)) + "\" y=\"" + n(Y(c)) + "\" font-size=\"10\" text-anchor=\"middle\" "
+           "stroke=\"#ffffff\" stroke-width=\"2\" paint-order=\"stroke\">" + svg_escape(label) + "</text>\n";
+    }
+    s += "</g>\n";
+  }
+  s += "<g class=\"legend\" font-size=\"12\">\n";
+  double x = margin;
+  for (FeatureType type : {FeatureType::Convex, FeatureType::Concave, FeatureType::Smooth}) {
+    s += "<line x1=\"" + n(x) + "\" y1=\"" + n(legend_top + 9) + "\" x2=\"" + n(x + 16) + "\" y2=\"" + n(legend_top + 9) +
+         "\" stroke=\"" + corner_colour(type) + "\" stroke-width=\"2\"/>\n";
+    s += "<text x=\"" + n(x + 20) + "\" y=\"" + n(legend_top + 13) + "\" fill=\"#222222\">" + feature_type_name(type) +
+         " feature edge</text>\n";
+    x += 150;
+  }
+  s += "</g>\n</svg>\n";
   return s;
 }
 

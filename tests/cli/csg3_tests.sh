@@ -14,7 +14,11 @@
 #   (data/scenes3d/bhc_bracket.json) is describable with the tree figures docs/csg3.md reports; the rounded pocket
 #   (bhc_pocket.json, its solid by the rule of docs/csg3.md) has 9 mixed terms, needs 8 edge-vertex planes, then
 #   has a verified tree (27 leaves) and an OpenSCAD program with the separators; --max-separators 3 stops short
-#   (exit 3); --separators on a complex is refused (exit 2).
+#   (exit 3); --separators on a complex is refused (exit 2);
+# - convert and samples on 3D CSG solids (issue 14 section 2): the BSH scene written, complements and complemented
+#   copies where the solid runs along a halfspace reversed, exact `at` samples, the domain written out, and hsx
+#   extract on the written file gives the solid's cells and volume back; solids reaching the domain refused; our
+#   rebuild of the BSH CAD model (data/scenes3d/cad_notched.json): 23 samples = 23 components of 88 patches.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
 hsx="$(realpath "${1:?usage: csg3_tests.sh HSX SOURCE_DIR}")"
@@ -202,5 +206,66 @@ expect 3 "" -- "$hsx" describe pocket12.json --shape pocket12_s.json
 has out "(132 canonical intersection terms, 9 mixed)" "12 segments: 9 mixed terms"
 expect 0 "" -- "$hsx" describe pocket18.json --shape pocket18_s.json
 has out "(132 canonical intersection terms, 0 mixed)" "18 segments: describable"
+
+# ---- issue 14 section 2: convert and samples on 3D CSG solids, checked by hsx extract on the written scene ----
+# convert_check NAME SCENE EXPR SAMPLES FLIPPED: hsx convert writes a BSH scene with SAMPLES samples and FLIPPED
+# complemented halfspaces (a Python list); hsx extract on the written file returns exactly the solid's cells
+# (convert --json inside_cells), the same volume as hsx csg's on the input, and every sample is an exact `at`.
+convert_check() {
+  local name="$1" scene="$2" expr="$3" samples="$4" flipped="$5"
+  expect 0 "" -- "$hsx" csg "$scene" --csg "$expr" --json "$name.csg.json" || return
+  expect 0 "" -- "$hsx" convert "$scene" --csg "$expr" --out "$name.bsh.json" --json "$name.conv.json" || return
+  has out "hsx extract gives the solid back: yes" "$name: convert summary"
+  check "$name: convert JSON" "$name.conv.json" "d['dimension'] == 3 and d['round_trip'] is True and
+    d['samples'] == $samples and d['complemented'] == $flipped and len(d['sample_patches']) == $samples"
+  check "$name: written scene, 3D, domain given, exact at samples only" "$name.bsh.json" "
+    d['dimension'] == 3 and 'domain' in d and len(d['samples']) == $samples and
+    all(set(s) == {'on', 'at'} for s in d['samples'])"
+  expect 0 "" -- "$hsx" extract "$name.bsh.json" --json "$name.back.json" --no-timing || return
+  expect 0 "" -- python3 -c '
+import json, sys
+conv, back, tree = (json.load(open(f)) for f in sys.argv[1:4])
+sys.exit(0 if back["inside_cells"] == conv["inside_cells"] and back["volume"]["exact"] == conv["volume"]["exact"]
+         == tree["volume"]["exact"] else 1)' "$name.conv.json" "$name.back.json" "$name.csg.json"
+}
+# Union, difference (C complemented), and a solid running along both B and C both ways (complemented copies).
+convert_check split_union "$SPLIT" "B | C" 3 '[]'
+convert_check split_minus "$SPLIT" "B - C" 4 '["C"]'
+convert_check split_xor "$SPLIT" "(B - C) | (C - B)" 6 '["B~ (a complemented copy of B)", "C~ (a complemented copy of C)"]'
+check "xor: the written scene has the copies, complemented" split_xor.bsh.json '
+  [(h["name"], h.get("complement", False)) for h in d["halfspaces"]] ==
+  [("B", False), ("C", False), ("B~", True), ("C~", True)]'
+# The CAD part (a complemented box, tori, a cylinder, planes): 9 samples, its 23 cells' solid back.
+convert_check cad "$S3/cad_part.json" "$CAD" 9 '[]'
+check "cad: bounds" cad.conv.json 'd["lower_bound"] == 9 and d["upper_bound"] == 15 and d["cells"] == 23'
+# A solid reaching the domain box is refused (exit 2, nothing written).
+expect 2 "reaches the domain boundary" -- "$hsx" convert "$SPLIT" --csg "~B" --out never.json
+if [ -e never.json ]; then bad "convert wrote a file on bad input"; else ok; fi
+# hsx samples on a 3D CSG solid: --out is checked by extracting it back; a target needing complements is refused
+# with a pointer to convert.
+if expect 0 "" -- "$hsx" samples "$S3/cad_part.json" --csg "$CAD" --out cad_s.json --json cad_sj.json; then
+  has out "wrote cad_s.json; hsx extract gives the target back: yes" "samples --out 3D round trip"
+  check "samples 3D JSON" cad_sj.json 'd["samples"] == 9 and d["reproduced"] is True and d["round_trip"] is True'
+  check "samples 3D scene: the domain written out" cad_s.json '"domain" in d and len(d["samples"]) == 9'
+  expect 0 "" -- "$hsx" extract cad_s.json --json cad_s_back.json --no-timing
+  expect 0 "" -- python3 -c '
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+sys.exit(0 if a["inside_cells"] == b["inside_cells"] else 1)' cad.conv.json cad_s_back.json
+fi
+expect 2 "(hsx convert complements such halfspaces)" -- "$hsx" samples "$SPLIT" --csg "B - C" --out never.json
+if [ -e never.json ]; then bad "samples wrote a file on bad input"; else ok; fi
+
+# Our rebuild of the BSH paper's CAD model (Fig. 19(a); data/scenes3d/cad_notched.json, docs/csg3.md): a cylinder
+# and a prism, minus three notches, union six tori. BHC gives each of the 17 halfspaces once; the conversion needs
+# 23 samples, the lower bound (23 components), of 88 boundary patches; extracting the written scene gives it back.
+NOTCHED="(Cyl & X0 & Y0 & Top & Bottom) - (~X1 & ~Y1 & ~M1 & ~M2) - (~X1 & ~Y1 & ~U) - (~X1 & ~Y1 & ~L) | T1 | T2 | T3 | T4 | T5 | T6"
+convert_check notched "$S3/cad_notched.json" "$NOTCHED" 23 '[]'
+check "notched: bounds (Table 1's lower bound reached)" notched.conv.json \
+  'd["lower_bound"] == 23 and d["upper_bound"] == 88 and d["rounds"] == 1 and d["cells"] == 167'
+check "notched: BHC tree, each halfspace once" notched.csg.json '
+  d["verified"] is True and d["stats"]["leaves"] == 17 and d["stats"]["duplicated_halfspaces"] == 0 and
+  d["stats"]["internal_nodes"] == 5 and
+  d["text"] == "T1 | T2 | T3 | T4 | T5 | T6 | Cyl & X0 & Y0 & Top & Bottom & (X1 | Y1 | U & L & (M1 | M2))"'
 
 finish

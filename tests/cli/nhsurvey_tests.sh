@@ -8,6 +8,7 @@
 #   and a .csg that `hsx describe` reads back as describable;
 # - the kept counterexamples in data/counterexamples/nhrep are classified "describable but the tree fails";
 # - a missing CSGNet corpus is reported as skipped (exit 0); a small CSGNet run when the corpus is present;
+# - --dimension 3: random 3D solids, the pinned rows, the cavity line with and without --nest-holes, determinism;
 # - bad input exits 2.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
@@ -135,6 +136,28 @@ if grep -q "does-not-exist.json" "$TMP/e.txt"; then pass; else fail "missing sce
 expect_rc 2 $? "--methods beam"
 "$HSX" nhsurvey --random 5 --random-mode everything >/dev/null 2>&1
 expect_rc 2 $? "--random-mode everything"
+
+# ---- 3D (--dimension 3): random 3D CSG solids; the pinned --seed 1 rows; hollow solids fail as in 2D (the
+# cavity's boundary is united, Section 5.2) and are correct with --nest-holes; deterministic; bad input exits 2
+"$HSX" nhsurvey --dimension 3 --random 8 --seed 1 >"$TMP/d3.txt" 2>"$TMP/d3.err"
+expect_rc 0 $? "3D random run"
+if grep -qF "all structural checks hold" "$TMP/d3.txt"; then pass; else fail "3D: checks line"; cat "$TMP/d3.txt" >&2; fi
+r=$(row "$TMP/d3.txt" "random3 csg")
+if [[ "$r" =~ ^random3\ csg\ +4\ +0\ +0\ +1\ .*\ 3\ \(75\.0%\)\ +1\ \(25\.0%\)\ +0\ +0\ \(0\.0%\) ]]; then pass; else fail "3D csg row: $r"; fi
+r=$(row "$TMP/d3.txt" "random3 hollow")
+if [[ "$r" =~ ^random3\ hollow\ +4\ +0\ +0\ .*\ 1\ \(25\.0%\)\ +3\ \(75\.0%\)\ +3\ +0\ \(0\.0%\) ]]; then pass; else fail "3D hollow row: $r"; fi
+if grep -qF "with a hole or cavity: 3 solids: 0 tree correct, 3 describable but fails, 0 not describable" "$TMP/d3.txt"; then pass; else fail "3D cavities line"; fi
+"$HSX" nhsurvey --dimension 3 --random 8 --seed 1 --nest-holes >"$TMP/d3n.txt" 2>/dev/null
+expect_rc 0 $? "3D --nest-holes run"
+if grep -qF "with a hole or cavity: 3 solids: 3 tree correct, 0 describable but fails, 0 not describable" "$TMP/d3n.txt"; then pass; else fail "3D --nest-holes cavities line"; cat "$TMP/d3n.txt" >&2; fi
+"$HSX" nhsurvey --dimension 3 --random 8 --seed 1 >"$TMP/d3b.txt" 2>/dev/null
+if cmp -s "$TMP/d3.txt" "$TMP/d3b.txt"; then pass; else fail "3D survey not deterministic"; fi
+"$HSX" nhsurvey --dimension 3 --random 2 --random-mode cells >/dev/null 2>&1
+expect_rc 2 $? "3D --random-mode cells"
+"$HSX" nhsurvey --dimension 3 >/dev/null 2>&1
+expect_rc 2 $? "3D without --random"
+"$HSX" nhsurvey --dimension 4 --random 2 >/dev/null 2>&1
+expect_rc 2 $? "--dimension 4"
 
 echo "$passed passed, $failed failed"
 ((failed == 0))

@@ -3,7 +3,9 @@
 # - meshes: the cube is one max node, the L-prism puts its concave edge's two sides under a min node, and the
 #   L-prism with one corner edge left unmarked needs a decomposition; .conf and JSON are written and agree;
 # - 2D: trees, exact evaluation and an SVG for CSG solids on data/scenes/lens.json, and the union of two disks
-#   as a min root;
+#   as a min root; Graphviz diagrams of the tree and the patch graph (2D scene, mesh);
+# - 3D scenes (issue 14): a hollow sphere's tree fails (its cavity united) and is correct with --nest-holes, with
+#   JSON, diagrams and the 3D SVG; the L-bracket of docs/csg3.md is describable but its tree fails;
 # - one patch numbering: the printed tree is the .conf's (NH-Rep's numbering) also after decomposition, where
 #   Algorithm 1's ids differ; the text prints the mapping and the JSON's conf_id maps its tree to the .conf;
 # - bad input exits 2 naming the problem and leaves no output file behind; bad reference files (--reference,
@@ -146,6 +148,16 @@ assert len(halves)==2 and halves[0]['split_point']==halves[1]['split_point'], ha
 assert d['evaluation']['verdict']=='describable-fails'"; then pass; else fail "pentagram JSON split point"; fi
 run_ok "$TMP/union.txt" "$S" --csg "A | B"
 expect_line "$TMP/union.txt" "tree: min(0, 1)" "union of two disks"
+# 2D diagrams: the lens's tree max(0, min(1, 2)) as nodes and edges; the pentagram's patch graph names its curves
+run_ok "$TMP/lens2.txt" "$S" --csg "(A | B) & ~C" --tree-dot "$TMP/lens.tree.dot" --graph-dot "$TMP/lens.graph.dot"
+expect_line "$TMP/lens.tree.dot" 'n0 -> p0;' "lens tree diagram: leaf of the root"
+expect_line "$TMP/lens.tree.dot" 'n0 -> n1;' "lens tree diagram: child node"
+expect_line "$TMP/lens.tree.dot" 'n1 -> p2;' "lens tree diagram: leaf of the min node"
+expect_line "$TMP/lens.tree.dot" 'label="P0\n~C"' "lens tree diagram: natural halfspace"
+if [ "$(grep -c ' -- ' "$TMP/lens.graph.dot")" -eq "$(python3 -c "
+import json,sys; print(len(json.load(open('$TMP/lens.json'))['patch_graph']))")" ]; then pass; else fail "lens patch graph diagram: one edge per curve"; fi
+run_ok "$TMP/mesh.dot.txt" "$M/lprism.obj" --fea "$M/lprism.fea" --graph-dot "$TMP/lprism.graph.dot"
+expect_line "$TMP/lprism.graph.dot" 'label="concave (' "L-prism patch graph diagram: its concave edge"
 
 # ---- bad input ----
 run_bad 2 "--fea" "$TMP/x.conf" "$M/cube.obj" --conf "$TMP/x.conf"
@@ -206,6 +218,28 @@ expect_line "$TMP/cube.fp.txt" "same tree up to original patches" "cube through 
 if (ulimit -v 150000; "$HSX" nhtree "$M/cube.obj" --fea "$M/cube.fea" --reference "$TMP/huge.conf" >"$TMP/huge.txt" 2>&1); then
   pass; else fail "huge patch id: exited $?: $(tail -3 "$TMP/huge.txt")"; fi
 expect_line "$TMP/huge.txt" "theirs: max{0,1,2,3,4,5,99999999}" "huge patch id compared"
+
+# ---- 3D solids on scenes (issue 14): a hollow sphere fails (Section 5.2 unites the cavity) and is correct with
+# --nest-holes; JSON, .dot diagrams and the 3D SVG are written; the L-bracket's tree is describable but fails
+S3="$ROOT/data/scenes3d"
+run_ok "$TMP/hollow.txt" "$S3/sphere_cavity.json" --csg "Outer & Cavity" --json "$TMP/hollow.json" \
+  --tree-dot "$TMP/hollow.tree.dot" --graph-dot "$TMP/hollow.graph.dot" --svg "$TMP/hollow.svg"
+expect_line "$TMP/hollow.txt" "tree: min(max(0), max(1))" "hollow sphere tree"
+expect_line "$TMP/hollow.txt" "on the whole space (4 cells of a domain holding every vertex): 3 cells wrong; describable but the tree fails" "hollow sphere verdict"
+expect_line "$TMP/hollow.txt" "the solid has cavities" "hollow sphere diagnosis"
+expect_line "$TMP/hollow.json" '"verdict": "describable-fails"' "hollow sphere JSON verdict"
+expect_line "$TMP/hollow.json" '"patch_triangles"' "hollow sphere JSON triangles"
+expect_line "$TMP/hollow.tree.dot" 'n0 -> n1;' "tree diagram edge"
+expect_line "$TMP/hollow.tree.dot" 'label="P1\nCavity"' "tree diagram leaf"
+expect_line "$TMP/hollow.graph.dot" 'graph nhrep {' "patch graph diagram"
+if [ "$(grep -c 'class="piece"' "$TMP/hollow.svg")" -eq $((4 * (224 + 80))) ]; then pass; else fail "3D svg: not 4 views of 304 pieces"; fi
+run_ok "$TMP/nested.txt" "$S3/sphere_cavity.json" --csg "Outer & Cavity" --nest-holes
+expect_line "$TMP/nested.txt" "tree: max(0, min(1))" "hollow sphere nested tree"
+expect_line "$TMP/nested.txt" "correct on every cell; tree correct" "hollow sphere nested verdict"
+run_ok "$TMP/bracket.txt" "$S3/bhc_bracket.json" --csg "X0 & Y0 & Y1 & Z0 & ((X1 & Z1 & Ch1) | (U1 & Z2 & Ch2) | (G0 & G1 & Gd) | Boss) & ~H1 & ~H2 & ~H3 & ~(S0 & S1 & Sz)"
+expect_line "$TMP/bracket.txt" "patch graph: 25 patches (25 original), 68 feature curves: 53 convex, 15 concave" "bracket graph"
+expect_line "$TMP/bracket.txt" "(384 cells of a domain holding every vertex): 9 cells wrong; describable but the tree fails" "bracket verdict"
+run_bad 2 "unknown halfspace" "$TMP/x3.dot" "$S3/sphere_cavity.json" --csg "Nope" --tree-dot "$TMP/x3.dot"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -8,19 +8,27 @@
 //                   is written; a line is complete when its newline is written
 //   failures/       scene-<index>.json: each scene with a failed check or an error, as an hsx-scene/1 file
 //                   (`hsx check` reads it) whose description is a one-line note (what failed, and how to
-//                   regenerate it); written before the scene's line, so a recorded failure always has its file
-//   summary.json    the tallies (summary_to_json), written when the plan is done
+//                   regenerate it); written before the scene's line, so a recorded failure always has its file;
+//                   scene-<index>.min.json beside it when the scene was minimised (algorithms/campaign/
+//                   minimise.hpp), its description the minimised scene's note (minimised_note). The folder is laid
+//                   out as data/counterexamples/: scene files whose descriptions say what fails.
+//   summary.json    the tallies (summary_to_json), written when the plan is done, with summary.svg (summary_svg)
+// The records never depend on minimisation (a minimised scene is a file of failures/ only), so a campaign run with
+// or without it has the same results.jsonl and summary bytes.
 // The folder policy (no file that is not ours is ever replaced): a new folder is made when its parent exists; an
 // existing folder must be empty, or hold a campaign (campaign.json) and be resumed; --resume of a campaign with
 // other settings is refused. Every refusal is an InputError (exit 2 in the CLI).
 #pragma once
 
 #include <hsx/algorithms/campaign/campaign.hpp>
+#include <hsx/algorithms/campaign/minimise.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <fstream>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -69,9 +77,37 @@ nlohmann::json summary_to_json(const campaign::Summary& summary);
 /// against is tallied. The same bytes for the same summary.
 std::string summary_table(const campaign::Summary& summary);
 
+/// The rates as an SVG picture (deterministic bytes: numbers with 4 decimals, fixed order): one panel per tallied
+/// check, in the summary's order, plotting against the number of halfspaces its held rate held / (held + failed)
+/// as a dot ("rate" circles) with its 95% Wilson interval as a bar ("interval" lines), only where some scene
+/// decided; then, when beam1 is tallied, a panel of beam K=1's optimality rate likewise. Every panel has the same
+/// x axis (each number of halfspaces any check saw) and a y axis 0..100%; its title gives the rate over all
+/// halfspace counts. Element classes: "panel", "axis", "grid", "rate", "interval", "title", "label".
+std::string summary_svg(const campaign::Summary& summary);
+
 /// The one-line note of a kept scene: which checks failed (or the error), the first failure's witness (cut at
 /// 400 characters), and the command that regenerates the scene.
 std::string failure_note(const campaign::SceneRecord& record);
+
+/// The minimised scene of `record` (a failed record) as failures/scene-<index>.min.json keeps it: result.scene with
+/// its description the one-line note "hsx campaign --seed S, scene K minimised (H -> h halfspaces, N -> n samples,
+/// C coordinates simplified, T steps[, the step budget ran out]): failed CHECKS: WITNESS" (the minimised scene's
+/// first target witness, cut at 400 characters; "error: MESSAGE" for an error), ending with where the original
+/// is. std::nullopt when the scene did not fail again under the restricted checks (result.reproduced false).
+std::optional<Scene2> minimised_failure(const campaign::SceneRecord& record, const campaign::MinimiseResult& result);
+
+/// hsx campaign --merge: the shard folders `shards` (finished campaigns --shard i/k of one campaign: campaign.json
+/// equal but for plan.shard, every shard 0/k .. (k-1)/k given once, each with all its scenes) merged into `out`, a
+/// new or empty folder (the folder policy above), as the folder a single run of the whole range would have written:
+/// campaign.json with plan shard 0/1, results.jsonl's lines in index order (the shards' lines, byte for byte),
+/// failures/ copied (scene-K.json and scene-K.min.json), summary.json and summary.svg recounted. Everything is
+/// checked before `out` is made: differing settings, a shard given twice, missing shards and unfinished shards
+/// (with how many of their scenes are missing) are one InputError saying all of it. The shards' results.jsonl are
+/// read one line at a time, twice (checked, then merged), so memory does not grow with the campaign. An
+/// OutputError, or a shard changed between the two readings, can leave `out` part-written. `each` (when set) is called
+/// with every record, in index order. Returns the summary.
+campaign::Summary merge_campaigns(const std::string& out, const std::vector<std::string>& shards,
+                                  const std::function<void(const campaign::SceneRecord&)>& each = {});
 
 /// A campaign folder under the policy above.
 class CampaignFolder {
@@ -90,12 +126,17 @@ class CampaignFolder {
   bool cut_torn_line() const { return cut_torn_line_; }
 
   /// Keeps a record: its scene as failures/scene-<index>.json first when record.failed() (record.scene must be
-  /// set then), then its line appended to results.jsonl and flushed. Throws OutputError.
-  void append(const campaign::SceneRecord& record);
-  /// Writes summary.json (atomically). Throws OutputError.
+  /// set then), and `minimised` (minimised_failure's, description included) as failures/scene-<index>.min.json,
+  /// then its line appended to results.jsonl and flushed. Throws OutputError.
+  void append(const campaign::SceneRecord& record, const std::optional<Scene2>& minimised = std::nullopt);
+  /// Writes summary.json and summary.svg (each atomically). Throws OutputError.
   void write_summary(const campaign::Summary& summary);
 
   const std::string& path() const { return dir_; }
+
+  /// Appends one results.jsonl line as it is (`line` without its newline) and flushes (merge_campaigns copies the
+  /// shards' lines). Throws OutputError.
+  void append_line(const std::string& line);
 
  private:
   std::string dir_;

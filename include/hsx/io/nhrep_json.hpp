@@ -29,6 +29,7 @@
 
 #include <hsx/algorithms/nhrep/compare.hpp>
 #include <hsx/algorithms/nhrep/planar.hpp>
+#include <hsx/algorithms/nhrep/solid3.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/geometry/scene.hpp>
 
@@ -51,6 +52,11 @@ nlohmann::json nhtree_to_json(const nhrep::BuildResult& result, const std::vecto
 
 /// The 2D keys above, to merge into nhtree_to_json's document.
 nlohmann::json nhtree_planar_json(const nhrep::PlanarTree& tree, const nhrep::PlanarEvaluation& evaluation);
+
+/// The 3D keys, to merge into nhtree_to_json's document: "natural_halfspaces" (per live patch), "patch_triangles"
+/// (per live patch, its pieces' arrangement triangles, a split piece as {"triangle", "kept_edge"}: the arrangement
+/// edge whose sub-triangle it is), "evaluation" as in 2D with points of three exact coordinates.
+nlohmann::json nhtree_solid3_json(const nhrep::SolidTree3& tree, const nhrep::CellEvaluation& evaluation);
 
 /// NH-Rep's `.conf` text.
 std::string nhtree_conf(const nhrep::BuildResult& result);

@@ -18,7 +18,9 @@
 
 #include <hsx/complex/boundary.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement3.hpp>
 #include <hsx/geometry/scene.hpp>
+#include <hsx/geometry/scene3.hpp>
 
 #include <string>
 #include <vector>
@@ -31,5 +33,19 @@ namespace hsx {
 std::string nhrep_svg(const Scene2& scene, const Arranged2& arranged, const std::vector<char>& solid_cells,
                       const BoundarySurface& surface, const std::vector<int>& piece_patch,
                       const std::vector<int>& patch_colour_group, const std::string& title, int width = 800);
+
+/// The 3D picture (a boundary from complex/boundary_from_arrangement3.hpp): the four views of io/svg3.hpp
+/// (default_svg_views3: directions and screen axes; one scale for all), each drawing every live piece as a "piece"
+/// polygon (data-patch = its patch) filled with the colour of its patch's group (svg_palette_colour) lit by its
+/// normal (0.35 + 0.65 |n . l|, the light of io/svg3.hpp), painted back to front by centroid depth (ties by piece
+/// id), opacity 0.85; then every feature link as a "feature" line along its arrangement edge, coloured by type
+/// (data-type), and "patch-id" labels "P<k> <halfspace>" at the centroid of each patch's lowest piece. A piece
+/// split by face-splitting is drawn as its sub-triangle (the split triangle's centroid and the kept link's edge);
+/// a piece whose kept link is not an arrangement edge (a split of a split) is drawn as its whole triangle. Doubles
+/// for drawing only. Arguments as nhrep_svg (`arranged` built from `scene`); throws std::invalid_argument when they
+/// do not fit together.
+std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& solid_cells,
+                       const BoundarySurface& surface, const std::vector<int>& piece_patch,
+                       const std::vector<int>& patch_colour_group, const std::string& title, int width = 1000);
 
 }  // namespace hsx

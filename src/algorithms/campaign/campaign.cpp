@@ -478,38 +478,23 @@ std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene2
   return out;
 }
 
-SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+namespace {
+
+/// check_scene with the scene's time limit counted from `start` (run_scene's: before generating the scene), and,
+/// when the generator already arranged it (SamplePolicy::Intended), its arrangement and intended solid.
+SceneRecord check_scene_since(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
+                              const std::function<bool()>& cancel, Clock::time_point start,
+                              std::optional<Arranged2> arranged = std::nullopt,
+                              const std::vector<char>& intended = {}) {
   const std::vector<std::string> checks = recorded_checks(s);
-  const Clock::time_point start = Clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
   SceneRecord r;
   r.index = index;
   r.seed = s.seed;
-  Generated g;
-  try {
-    if (s.sample_policy == SamplePolicy::Intended) g = generate_intended(s, index);
-    else g.generated = random_scene(s.scene, s.seed, index);
-  } catch (const InputError& e) {  // choosing samples arranges the scene: the arrangement limits refused it
-    r.outcome = SceneOutcome::Refused;
-    r.note = s.sample_policy == SamplePolicy::Intended
-                 ? std::string("arranging it to choose its intended shape: ") + e.what()
-                 : std::string("choosing its samples (under the default arrangement limits, which the campaign's do "
-                               "not change): ") + e.what();
-    all_checks(r, checks, CheckStatus::Skipped, "not run: the scene was refused: " + r.note);
-    return r;
-  } catch (const std::exception& e) {
-    r.outcome = SceneOutcome::Error;
-    r.note = std::string("the generator threw: ") + e.what();
-    all_checks(r, checks, CheckStatus::Skipped, "not run: " + r.note);
-    return r;
-  }
-  const Scene2& scene = g.generated.scene;
   r.halfspaces = static_cast<int>(scene.halfspaces.size());
   r.samples = static_cast<int>(scene.samples.size());
-  for (Degeneracy d : g.generated.degeneracies) r.degeneracies.push_back(to_string(d));
-  for (std::size_t k = 0; k < g.intended.size(); ++k)
-    if (g.intended[k]) r.intended.push_back(static_cast<int>(k));
-  std::optional<Arranged2>& arranged = g.arranged;
+  for (std::size_t k = 0; k < intended.size(); ++k)
+    if (intended[k]) r.intended.push_back(static_cast<int>(k));
   try {
     if (!arranged) {
       try {
@@ -526,7 +511,7 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
     // The scene's time limit covers its arrangement too: the checks get what is left (at least a nanosecond, so
     // that a spent limit skips them instead of meaning "no limit").
     const double left = s.time_limit > 0 ? std::max(s.time_limit - elapsed(), 1e-9) : 0;
-    r.checks = check_arranged(s, scene, *arranged, g.intended, left, cancel);
+    r.checks = check_arranged(s, scene, *arranged, intended, left, cancel);
   } catch (const CatalogueMismatch&) {
     throw;  // the catalogue does not match check_all: a bug of this file, not of the scene
   } catch (const std::exception& e) {
@@ -544,6 +529,45 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
       r.checks.push_back(std::move(outcome));
     }
   if (r.failed()) r.scene = scene;
+  return r;
+}
+
+/// A record of a scene the generator could not make: refused by the arrangement limits, or an error.
+SceneRecord not_generated(const CampaignSettings& s, std::uint64_t index, SceneOutcome outcome, std::string note) {
+  SceneRecord r;
+  r.index = index;
+  r.seed = s.seed;
+  r.outcome = outcome;
+  r.note = std::move(note);
+  all_checks(r, recorded_checks(s), CheckStatus::Skipped,
+             outcome == SceneOutcome::Refused ? "not run: the scene was refused: " + r.note : "not run: " + r.note);
+  return r;
+}
+
+}  // namespace
+
+SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
+                        const std::function<bool()>& cancel) {
+  return check_scene_since(s, scene, index, cancel, Clock::now());
+}
+
+SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+  const Clock::time_point start = Clock::now();
+  Generated g;
+  try {
+    if (s.sample_policy == SamplePolicy::Intended) g = generate_intended(s, index);
+    else g.generated = random_scene(s.scene, s.seed, index);
+  } catch (const InputError& e) {  // choosing samples arranges the scene: the arrangement limits refused it
+    return not_generated(s, index, SceneOutcome::Refused,
+                         s.sample_policy == SamplePolicy::Intended
+                             ? std::string("arranging it to choose its intended shape: ") + e.what()
+                             : std::string("choosing its samples (under the default arrangement limits, which the "
+                                           "campaign's do not change): ") + e.what());
+  } catch (const std::exception& e) {
+    return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what());
+  }
+  SceneRecord r = check_scene_since(s, g.generated.scene, index, cancel, start, std::move(g.arranged), g.intended);
+  for (Degeneracy d : g.generated.degeneracies) r.degeneracies.push_back(to_string(d));
   return r;
 }
 

@@ -2,6 +2,7 @@
 
 #include <hsx/algorithms/bsh/problem.hpp>
 #include <hsx/algorithms/bsh/sample_scene.hpp>
+#include <hsx/algorithms/csg/separators3.hpp>
 #include <hsx/algorithms/csg/solid_tree.hpp>
 #include <hsx/complex/carry_solid2.hpp>
 
@@ -51,8 +52,9 @@ void choose_changes(const Complex& complex, const SupportUse& use, std::vector<c
   }
 }
 
-Halfspace2 complemented_copy(const Scene2& scene, const Halfspace2& h) {
-  Halfspace2 out = h;
+template <class SceneT, class HalfspaceT>
+HalfspaceT complemented_copy(const SceneT& scene, const HalfspaceT& h) {
+  HalfspaceT out = h;
   out.complement = !out.complement;
   out.name += "~";
   while (scene.find_halfspace(out.name) >= 0) out.name += "~";
@@ -66,7 +68,8 @@ void check_bounded(const Complex& complex, const std::vector<char>& solid) {
                        " touches it); enlarge the domain");
 }
 
-std::string conversion_description(const ConversionReport& report) {
+template <class Report>
+std::string conversion_description(const Report& report) {
   std::string d = "BSH conversion: " + std::to_string(report.samples.sample_patches.size()) +
                   " samples from GENERATE-SAMPLES";
   if (!report.flipped.empty()) {
@@ -96,25 +99,96 @@ bool extracts_to(const Scene2& scene, const std::vector<char>& solid, bsh::Metho
   return bsh::extract(problem, options).labelling == solid;
 }
 
-}  // namespace
-
-OrientedScene orient_for_bsh(const Scene2& scene, const Complex& complex, const std::vector<char>& solid) {
+/// The orientation rule on either dimension's scene.
+template <class Oriented, class SceneT>
+Oriented orient_scene(const SceneT& scene, const Complex& complex, const std::vector<char>& solid) {
   const SupportUse use = support_use(complex, solid);
   std::vector<char> complement(scene.halfspaces.size(), 0), copy(scene.halfspaces.size(), 0);
   choose_changes(complex, use, complement, copy);
-  OrientedScene out{scene, {}};
+  Oriented out{scene, {}};
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
     if (complement[i]) {
       out.scene.halfspaces[i].complement = !out.scene.halfspaces[i].complement;
       out.flipped.push_back(scene.halfspaces[i].name);
     }
     if (copy[i]) {
-      const Halfspace2 h = complemented_copy(out.scene, scene.halfspaces[i]);
+      const auto h = complemented_copy(out.scene, scene.halfspaces[i]);
       out.flipped.push_back(h.name + " (a complemented copy of " + scene.halfspaces[i].name + ")");
       out.scene.halfspaces.push_back(h);
     }
   }
   return out;
+}
+
+/// The 3D scene as its file holds it (halfspaces, domain, `at` points), validated again.
+Scene3 as_read_back(const Scene3& scene) {
+  Scene3 back = scene;
+  back.notes.clear();
+  for (Sample3& s : back.samples) {
+    s.snapped = false;
+    s.location = s.given;
+    s.distance2 = Rational(0);
+  }
+  validate_and_resolve(back);
+  return back;
+}
+
+}  // namespace
+
+OrientedScene orient_for_bsh(const Scene2& scene, const Complex& complex, const std::vector<char>& solid) {
+  return orient_scene<OrientedScene>(scene, complex, solid);
+}
+
+OrientedScene3 orient_for_bsh(const Scene3& scene, const Complex& complex, const std::vector<char>& solid) {
+  return orient_scene<OrientedScene3>(scene, complex, solid);
+}
+
+bool extracts_back(const Scene2& written, const std::vector<char>& solid, bsh::Method search) {
+  return extracts_to(written, solid, search);
+}
+
+bool extracts_back(const Scene3& written, const Arranged3& on, const std::vector<char>& solid, bsh::Method search,
+                   const ArrangementLimits& limits) {
+  const Arranged3 again = arrange(as_read_back(written), limits);
+  bsh::ExtractOptions extract_options;
+  extract_options.method = search;
+  extract_options.enumerate_ties = false;
+  const bsh::Problem problem(again.complex);
+  const std::vector<char> back = bsh::extract(problem, extract_options).labelling;
+  // The same scene without samples arranges to the same cells in the same order; compare through point
+  // location all the same, so that a different cell order could not pass unnoticed.
+  return back.size() == solid.size() && carry_solid3(again, back, on) == solid;
+}
+
+ConversionReport3 convert_to_bsh(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& solid,
+                                 bsh::Method search, const ArrangementLimits& limits) {
+  if (solid.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("convert_to_bsh: the solid needs one entry per cell");
+  check_bounded(arranged.complex, solid);
+  ConversionReport3 report;
+  OrientedScene3 oriented = orient_for_bsh(scene, arranged.complex, solid);
+  report.flipped = oriented.flipped;
+  Scene3 bare = std::move(oriented.scene);
+  bare.samples.clear();
+  bare.notes.clear();
+  // The domain is written out: hsx would otherwise choose it again from the samples and could pick another box.
+  bare.domain_given = true;
+  const bool unchanged = report.flipped.empty() && scene.samples.empty();
+  report.oriented = unchanged ? arranged : arrange(bare, limits);
+  // Cell order may differ after adding copies: carry the solid over by point location.
+  report.oriented_solid = unchanged ? solid : carry_solid3(arranged, solid, report.oriented);
+  bsh::SampleGenOptions options;
+  options.search = search;
+  report.samples = bsh::generate_samples(report.oriented.complex, report.oriented_solid, options);
+  if (!report.samples.reproduced) {
+    report.failure = report.samples.failure;
+    return report;
+  }
+  report.scene = bsh::scene_with_samples(bare, report.oriented, report.samples.sample_patches,
+                                         conversion_description(report));
+  report.round_trip = extracts_back(report.scene, report.oriented, report.oriented_solid, search, limits);
+  if (!report.round_trip) report.failure = "extracting the written scene does not give the solid back";
+  return report;
 }
 
 ConversionReport convert_to_bsh(const Scene2& scene, const Arranged2& arranged, const std::vector<char>& solid,

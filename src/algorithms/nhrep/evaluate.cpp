@@ -130,4 +130,37 @@ Evaluation evaluate_tree(const BuildResult& result, const Complex& complex, cons
   return e;
 }
 
+CellEvaluation evaluate_on_cells(const BuildResult& result, const BuildOptions& options, const Complex& complex,
+                                 const std::vector<char>& solid) {
+  CellEvaluation out;
+  out.evaluation = evaluate_tree(result, complex, solid);
+  out.cells = complex.cells.size();
+  for (int c : out.evaluation.wrong_inside) out.missed.push_back(complex.cells.at(at(c)).witness);
+  for (int c : out.evaluation.wrong_outside) out.added.push_back(complex.cells.at(at(c)).witness);
+  if (out.evaluation.verdict == Verdict::DescribableButFails) {
+    const auto& pieces = result.graph.surface.pieces;
+    const bool holes = std::any_of(pieces.begin(), pieces.end(), [](const BoundaryPiece& p) { return p.hole; });
+    out.diagnosis = holes && !options.nest_holes ? Diagnosis::HolesUnited : Diagnosis::NeedsExtendedSurfaces;
+  }
+  return out;
+}
+
+std::vector<int> leaf_nodes(const BuildResult& r) {
+  std::vector<int> node_of(r.graph.patches.size(), -1);
+  for (std::size_t n = 0; n < r.tree.nodes.size(); ++n)
+    for (int leaf : r.tree.nodes[n].leaves) node_of.at(at(leaf)) = static_cast<int>(n);
+  return node_of;
+}
+
+std::vector<std::string> leaf_names(const PatchGraph& g, const Complex& complex) {
+  std::vector<std::string> names(g.patches.size());
+  const std::vector<NaturalHalfspace> natural = natural_halfspaces(g, complex.halfspace_count());
+  for (int p : g.live_patches()) {
+    const NaturalHalfspace& h = natural[at(p)];
+    if (h.halfspace < 0) continue;  // a violated check, reported by the evaluation
+    names[at(p)] = (h.complemented ? "~" : "") + complex.halfspace_names[at(h.halfspace)];
+  }
+  return names;
+}
+
 }  // namespace hsx::nhrep

@@ -23,17 +23,6 @@ void check_solid(const Arranged2& arranged, const std::vector<char>& solid) {
                        " touches it): NH-Rep needs a bounded solid inside the domain");
 }
 
-std::vector<std::string> leaf_names(const PatchGraph& g, const Complex& complex) {
-  std::vector<std::string> names(g.patches.size());
-  const std::vector<NaturalHalfspace> natural = natural_halfspaces(g, complex.halfspace_count());
-  for (int p : g.live_patches()) {
-    const NaturalHalfspace& h = natural[at(p)];
-    if (h.halfspace < 0) continue;  // a violated check, reported by the evaluation
-    names[at(p)] = (h.complemented ? "~" : "") + complex.halfspace_names[at(h.halfspace)];
-  }
-  return names;
-}
-
 std::vector<std::vector<PlanarPiece>> patch_pieces(const PatchGraph& g, const Arrangement2& arrangement) {
   std::vector<std::vector<PlanarPiece>> pieces(g.patches.size());
   for (int p : g.live_patches())
@@ -48,26 +37,6 @@ std::vector<std::vector<PlanarPiece>> patch_pieces(const PatchGraph& g, const Ar
       pieces[at(p)].push_back(entry);
     }
   return pieces;
-}
-
-std::vector<int> leaf_nodes(const BuildResult& r) {
-  std::vector<int> node_of(r.graph.patches.size(), -1);
-  for (std::size_t n = 0; n < r.tree.nodes.size(); ++n)
-    for (int leaf : r.tree.nodes[n].leaves) node_of[at(leaf)] = static_cast<int>(n);
-  return node_of;
-}
-
-std::vector<std::vector<Rational>> witnesses(const Complex& complex, const std::vector<int>& cells) {
-  std::vector<std::vector<Rational>> points;
-  for (int c : cells) points.push_back(complex.cells.at(at(c)).witness);
-  return points;
-}
-
-Diagnosis diagnose(const PlanarTree& tree, const Evaluation& e) {
-  if (e.verdict != Verdict::DescribableButFails) return Diagnosis::None;
-  const auto& pieces = tree.built.graph.surface.pieces;
-  const bool holes = std::any_of(pieces.begin(), pieces.end(), [](const BoundaryPiece& p) { return p.hole; });
-  return holes && !tree.options.nest_holes ? Diagnosis::HolesUnited : Diagnosis::NeedsExtendedSurfaces;
 }
 
 }  // namespace
@@ -86,13 +55,7 @@ PlanarTree build_planar_tree(const Arranged2& arranged, const std::vector<char>&
 
 PlanarEvaluation evaluate_planar_tree(const PlanarTree& tree, const Arranged2& whole,
                                       const std::vector<char>& whole_solid) {
-  PlanarEvaluation result;
-  result.evaluation = evaluate_tree(tree.built, whole.complex, whole_solid);
-  result.cells = whole.complex.cells.size();
-  result.missed = witnesses(whole.complex, result.evaluation.wrong_inside);
-  result.added = witnesses(whole.complex, result.evaluation.wrong_outside);
-  result.diagnosis = diagnose(tree, result.evaluation);
-  return result;
+  return evaluate_on_cells(tree.built, tree.options, whole.complex, whole_solid);
 }
 
 PlanarEvaluation evaluate_on_whole_plane(const PlanarTree& tree, const Scene2& scene, const Arranged2& arranged,

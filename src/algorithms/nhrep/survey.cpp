@@ -4,6 +4,7 @@
 #include <hsx/algorithms/csg/bhc.hpp>
 #include <hsx/algorithms/nhrep/patch_graph.hpp>
 #include <hsx/complex/boundary_from_arrangement2.hpp>
+#include <hsx/complex/boundary_from_arrangement3.hpp>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/connected_components.hpp>
@@ -25,11 +26,17 @@ void check_size(const Complex& complex, const std::vector<char>& solid, const ch
 }  // namespace
 
 PipelineRun run_pipeline(const Arranged2& arranged, const std::vector<char>& solid, const BuildOptions& options) {
+  return run_pipeline_on([&] { return boundary_from_arrangement2(arranged, solid); }, arranged.complex, solid,
+                         options);
+}
+
+PipelineRun run_pipeline_on(const std::function<BoundarySurface()>& boundary, const Complex& complex,
+                            const std::vector<char>& solid, const BuildOptions& options) {
   PipelineRun o;
   try {
-    o.built = build_tree(build_patch_graph(boundary_from_arrangement2(arranged, solid)), options);
+    o.built = build_tree(build_patch_graph(boundary()), options);
     for (const std::string& p : check_tree(o.built)) o.problems.push_back("check_tree: " + p);
-    o.eval = evaluate_tree(o.built, arranged.complex, solid);
+    o.eval = evaluate_tree(o.built, complex, solid);
     o.evaluated = true;
     for (const std::string& p : o.eval.violations) o.problems.push_back("evaluation: " + p);
     if (!o.eval.describable && o.eval.correct) o.problems.push_back("evaluation: correct but not describable");
@@ -77,7 +84,23 @@ SurveyOutcome survey_solid(const SurveySolid& s, const BuildOptions& options) {
   return o;
 }
 
+SurveyOutcome survey_solid3(const SurveySolid3& s, const BuildOptions& options) {
+  check_size(s.arranged.complex, s.solid, "the solid");
+  SurveyOutcome o;
+  o.status = csg::solid_status(s.arranged.complex, s.solid);
+  if (o.status != csg::SolidStatus::Bounded) return o;
+  o.whole = run_pipeline_on([&] { return boundary_from_arrangement3(s.arranged, s.solid); }, s.arranged.complex,
+                            s.solid, options);
+  o.problems = o.whole.problems;
+  o.holes = count_holes(s.arranged.complex, s.solid);
+  return o;
+}
+
 bool SurveyTally::add(const SurveySolid& s, const SurveyOutcome& o) {
+  return add(s.name + " (" + s.origin + ")", s.arranged.complex.cells.size(), o);
+}
+
+bool SurveyTally::add(const std::string& label, std::size_t cell_count, const SurveyOutcome& o) {
   switch (o.status) {
     case csg::SolidStatus::Empty: ++empty; return false;
     case csg::SolidStatus::Unbounded: ++unbounded; return false;
@@ -91,7 +114,12 @@ bool SurveyTally::add(const SurveySolid& s, const SurveyOutcome& o) {
     if (o.own_differs) ++own_domain_differs;
   }
   patches += static_cast<long>(o.whole.built.graph.live_patches().size());
-  cells += static_cast<long>(s.arranged.complex.cells.size());
+  cells += static_cast<long>(cell_count);
+  if (o.holes > 0) {
+    ++with_holes;
+    if (o.whole.eval.verdict == Verdict::TreeCorrect) ++correct_with_holes;
+    if (o.whole.eval.verdict == Verdict::NotDescribable) ++not_describable_with_holes;
+  }
   if (!o.whole.built.decompositions.empty()) ++decomposed;
   decompositions += static_cast<long>(o.whole.built.decompositions.size());
   switch (o.whole.eval.verdict) {
@@ -104,7 +132,7 @@ bool SurveyTally::add(const SurveySolid& s, const SurveyOutcome& o) {
   }
   if (o.whole.eval.verdict != Verdict::DescribableButFails || static_cast<int>(examples.size()) >= max_examples)
     return false;
-  examples.push_back(s.name + " (" + s.origin + ")");
+  examples.push_back(label);
   return true;
 }
 

@@ -220,6 +220,16 @@ std::vector<CheckOutcome> check_arranged(const CampaignSettings& settings, const
                                          const Arranged2& arranged, const std::vector<char>& intended,
                                          double time_limit = 0, const std::function<bool()>& cancel = {});
 
+/// The checks of run_scene on a given scene (run_scene is random_scene, then this, then the generator's
+/// degeneracies added to the record): `scene` arranged within settings.limits and checked (the catalogue's selected
+/// checks, then settings.extra's), its record filled as run_scene's (index and seed from `index` and settings.seed,
+/// `degeneracies` left empty, `scene` set when failed()). `scene` must be resolved (validate_and_resolve, as
+/// read_scene2 and random_scene return it). settings.time_limit counts from this call. Never throws for the
+/// scene; throws what an extra check's function throws. Used to minimise a failing scene
+/// (algorithms/campaign/minimise.hpp).
+SceneRecord check_scene(const CampaignSettings& settings, const Scene2& scene, std::uint64_t index,
+                        const std::function<bool()>& cancel = {});
+
 /// Runs the scenes `indices` on `jobs` threads (>= 1) and calls `sink` with each record, on the calling thread,
 /// in the order of `indices`, as soon as it and every record before it are done (at most about 4 x jobs records
 /// wait for their turn). An exception from `sink` stops the run (the threads finish their current scene) and is

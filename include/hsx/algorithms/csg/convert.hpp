@@ -6,12 +6,18 @@
 // solid on its inside). A solid may run along a boundary reversed (A - B runs along B with the solid outside B):
 // such a halfspace is complemented in the BSH scene; when the solid also runs along the same boundary the right way
 // somewhere, a complemented copy named "<name>~" (more "~" until unique) is appended instead.
+//
+// 3D (Scene3, docs/csg3.md): the same rule on the 3D complex (a complemented surface swaps inside and outside, its
+// triangles keep their orientation); samples are placed by bsh::scene_with_samples(Scene3...) (the centroid of the
+// patch's largest arrangement triangle: an exact rational point in the patch's relative interior, on the
+// halfspace's tessellated boundary, so an `at` sample); the round trip re-arranges the written scene.
 #pragma once
 
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/bsh/samples.hpp>
 #include <hsx/algorithms/csg/expression.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement3.hpp>
 
 #include <string>
 #include <vector>
@@ -47,6 +53,44 @@ ConversionReport convert_to_bsh(const Scene2& scene, const Arranged2& arranged, 
 
 /// The same for the solid of `expression` (over scene's halfspaces) on arrange(scene).
 ConversionReport convert_to_bsh(const Scene2& scene, const Expr& expression, bsh::Method search);
+
+/// The orientation rule in 3D. `scene`: a validated 3D scene; `complex`: arrange(scene).complex; `solid`: per cell.
+struct OrientedScene3 {
+  Scene3 scene;                      ///< as OrientedScene::scene
+  std::vector<std::string> flipped;  ///< as OrientedScene::flipped
+};
+OrientedScene3 orient_for_bsh(const Scene3& scene, const Complex& complex, const std::vector<char>& solid);
+
+struct ConversionReport3 {
+  Scene3 scene;                      ///< the BSH scene (no samples besides the generated ones; the domain given,
+                                     ///< the input's); see `ok`
+  bsh::SampleGenResult samples;      ///< GENERATE-SAMPLES on the oriented scene
+  std::vector<std::string> flipped;  ///< OrientedScene3::flipped
+  /// Extracting `scene` as its file holds it (halfspaces, domain, `at` samples; validated and arranged again)
+  /// gives the solid back, cell for cell (the cells of `oriented`).
+  bool round_trip = false;
+  std::string failure;               ///< why not ok
+  Arranged3 oriented;                ///< arrange(scene without samples): the complex the samples are on
+  std::vector<char> oriented_solid;  ///< the solid on oriented.complex (per cell, 1 inside)
+  bool ok() const { return samples.reproduced && round_trip; }
+};
+
+/// Converts a bounded 3D solid to a BSH scene.
+/// - `scene`, `arranged`: a validated 3D scene and arrange(scene); `solid`: per cell of arranged.complex, 1 inside;
+/// - `search`: the extraction used by GENERATE-SAMPLES and by the round-trip check;
+/// - `limits`: for the arrangements made here (the oriented scene when it differs, the round trip).
+/// Throws InputError when the solid reaches the domain box, or an arrangement exceeds `limits`.
+ConversionReport3 convert_to_bsh(const Scene3& scene, const Arranged3& arranged, const std::vector<char>& solid,
+                                 bsh::Method search, const ArrangementLimits& limits = {});
+
+/// The round-trip check: extracting `written` as its file holds it (halfspaces, domain when given, `at` samples;
+/// validated and arranged again) gives `solid` back, cell for cell.
+/// - 2D: `solid` per cell of arrange(written without its samples).
+/// - 3D: `on`, an arrangement of the same halfspaces (e.g. of `written` without its samples); `solid` per cell of
+///   on.complex; cells are matched by point location (carry_solid3). `limits` bound the arrangement made here.
+bool extracts_back(const Scene2& written, const std::vector<char>& solid, bsh::Method search);
+bool extracts_back(const Scene3& written, const Arranged3& on, const std::vector<char>& solid, bsh::Method search,
+                   const ArrangementLimits& limits = {});
 
 /// One CSG program end to end (the CSGNet corpus pipeline): describability, BHC (verified), conversion to BSH and
 /// extraction back. The first stage that fails decides the outcome.

@@ -83,4 +83,34 @@ bool tree_value(const Tree& tree, const std::vector<NaturalHalfspace>& leaf_half
 std::vector<NaturalHalfspace> natural_halfspaces(const PatchGraph& graph, int halfspace_count,
                                                  std::vector<std::string>* violations = nullptr);
 
+enum class Diagnosis {
+  None,                   ///< the tree is correct, or the solid is not describable by its natural halfspaces
+  HolesUnited,            ///< describable, fails, has holes (2D) or cavities (3D), built without nest_holes
+  NeedsExtendedSurfaces,  ///< describable, fails otherwise (Appendix B)
+};
+
+/// The evaluation of a tree on every cell of a complex, with the witness points of the wrong cells. Dimension-free:
+/// nothing here knows whether the complex is 2D or 3D (the cells' sign vectors decide; witnesses have the
+/// complex's `dimension` coordinates).
+struct CellEvaluation {
+  Evaluation evaluation;                       ///< on the cells of the (whole-plane / whole-space) complex
+  std::size_t cells = 0;                       ///< cells of that complex
+  /// Exact interior points (Cell::witness) of the cells in evaluation.wrong_inside (solid points the tree misses)
+  /// and evaluation.wrong_outside (points it adds), in the same order.
+  std::vector<std::vector<Rational>> missed, added;
+  Diagnosis diagnosis = Diagnosis::None;
+};
+
+/// evaluate_tree on `complex`, the witnesses of the wrong cells, and the diagnosis (HolesUnited when a piece of
+/// result.graph bounds a hole and `options` did not nest holes).
+CellEvaluation evaluate_on_cells(const BuildResult& result, const BuildOptions& options, const Complex& complex,
+                                 const std::vector<char>& solid);
+
+/// Per patch id of `result.graph`: the tree node it is a leaf of (-1 for dead patches), for colouring pictures.
+std::vector<int> leaf_nodes(const BuildResult& result);
+
+/// Per patch id of `graph`: its natural halfspace's name (Complex::halfspace_names), "~name" when complemented, ""
+/// for dead patches and patches without a usable carrier.
+std::vector<std::string> leaf_names(const PatchGraph& graph, const Complex& complex);
+
 }  // namespace hsx::nhrep

@@ -56,20 +56,8 @@ struct PlanarTree {
 PlanarTree build_planar_tree(const Arranged2& arranged, const std::vector<char>& solid_cells,
                              const BuildOptions& options = {}, CurveRule rule = CurveRule::Paper);
 
-enum class Diagnosis {
-  None,                   ///< the tree is correct, or the solid is not describable by its natural halfspaces
-  HolesUnited,            ///< describable, fails, has holes, built without nest_holes
-  NeedsExtendedSurfaces,  ///< describable, fails otherwise (Appendix B)
-};
-
-struct PlanarEvaluation {
-  Evaluation evaluation;                       ///< on the cells of the whole-plane complex
-  std::size_t cells = 0;                       ///< cells of that complex
-  /// Exact interior points (2 coordinates each) of the cells in evaluation.wrong_inside (solid points the tree
-  /// misses) and evaluation.wrong_outside (points it adds), in the same order.
-  std::vector<std::vector<Rational>> missed, added;
-  Diagnosis diagnosis = Diagnosis::None;
-};
+/// The 2D evaluation: CellEvaluation (evaluate.hpp) on the whole-plane complex (witnesses have 2 coordinates).
+using PlanarEvaluation = CellEvaluation;
 
 /// Evaluates `tree` exactly with natural halfspaces on the whole plane.
 /// @param[in] tree         build_planar_tree's result

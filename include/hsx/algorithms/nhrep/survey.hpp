@@ -1,4 +1,5 @@
-// The NH-Rep survey (hsx nhsurvey; proofs/nhrep.md "Rates"): one 2D solid through the pipeline
+// The NH-Rep survey (hsx nhsurvey; proofs/nhrep.md "Rates", Section 5b for 3D): one 2D (or, survey_solid3, 3D)
+// solid through the pipeline
 // boundary_from_arrangement2 -> build_patch_graph -> build_tree -> check_tree -> evaluate_tree, classified as
 // "tree correct", "describable but the tree fails" (NH-Rep needs its extended surfaces, Appendix B) or "not
 // describable by its patches' halfspaces", and the per-source tallies of many such solids.
@@ -15,6 +16,9 @@
 #include <hsx/algorithms/nhrep/evaluate.hpp>
 #include <hsx/algorithms/nhrep/tree.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement3.hpp>
+
+#include <functional>
 
 #include <optional>
 #include <string>
@@ -48,6 +52,11 @@ struct PipelineRun {
 /// exceptions (std::exception): they become an "error: " problem with evaluated = false.
 PipelineRun run_pipeline(const Arranged2& arranged, const std::vector<char>& solid, const BuildOptions& options);
 
+/// The same pipeline on any boundary: `boundary` builds the solid's BoundarySurface (called inside the pipeline's
+/// guard, so its exceptions become problems too); `complex` holds the cells the tree is evaluated on. Dimension-free.
+PipelineRun run_pipeline_on(const std::function<BoundarySurface()>& boundary, const Complex& complex,
+                            const std::vector<char>& solid, const BuildOptions& options);
+
 /// What the survey found for one solid.
 struct SurveyOutcome {
   csg::SolidStatus status = csg::SolidStatus::Empty;  ///< empty and unbounded solids are not run
@@ -65,6 +74,20 @@ struct SurveyOutcome {
 /// flag per cell.
 SurveyOutcome survey_solid(const SurveySolid& solid, const BuildOptions& options = {});
 
+/// One 3D solid to survey (hsx nhsurvey --dimension 3): `arranged` must hold every vertex (a domain chosen by
+/// hsx, as random_solid3 gives), so that every sign vector of space is some cell's.
+struct SurveySolid3 {
+  std::string name, origin;
+  Scene3 scene;
+  Arranged3 arranged;
+  std::vector<char> solid;    ///< per cell of arranged.complex
+  csg::ExprPtr expression;    ///< when the source has one
+};
+
+/// Surveys one 3D solid: boundary_from_arrangement3 -> build_patch_graph -> build_tree -> check_tree ->
+/// evaluate_tree on arranged.complex, and its holes (cavities and tunnels' voids: count_holes). No own domain.
+SurveyOutcome survey_solid3(const SurveySolid3& solid, const BuildOptions& options = {});
+
 /// Holes of a solid (one flag per cell of `complex`): connected components of non-solid cells (adjacent across a
 /// patch) that contain no outer cell.
 int count_holes(const Complex& complex, const std::vector<char>& solid);
@@ -80,6 +103,8 @@ struct SurveyTally {
   long decomposed = 0, decompositions = 0;
   long correct = 0, describable_fails = 0, not_describable = 0;
   long fails_with_holes = 0;  ///< describable-but-fails solids that have a hole
+  long with_holes = 0;        ///< evaluated solids with a hole (2D) or cavity (3D)
+  long correct_with_holes = 0, not_describable_with_holes = 0;  ///< of those, by verdict
   long own_domain_runs = 0, own_domain_differs = 0;
   long patches = 0, cells = 0;
   double seconds = 0;                 ///< filled by the caller
@@ -88,6 +113,8 @@ struct SurveyTally {
 
   /// Counts one surveyed solid. Returns true when it was added to `examples`.
   bool add(const SurveySolid& solid, const SurveyOutcome& outcome);
+  /// The same for any solid: `label` is "name (origin)" for `examples`, `cells` the evaluated complex's cell count.
+  bool add(const std::string& label, std::size_t cells, const SurveyOutcome& outcome);
 };
 
 /// The union of the solid's canonical terms over `natural` (halfspace indices of `complex`): an expression equal to

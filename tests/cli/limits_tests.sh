@@ -112,8 +112,8 @@ expect 2 "adir: is a directory" -- "$hsx" describe "$lens" --shape adir
 
 # Options that do not apply are refused, not ignored.
 mesh="$src/data/meshes/lprism.obj"; fea="$src/data/meshes/lprism_open_corner.fea"
-expect 2 "--csg gives a 2D solid" -- "$hsx" nhtree "$mesh" --fea "$fea" --csg "A"
-expect 2 "--shape gives a 2D solid" -- "$hsx" nhtree "$mesh" --fea "$fea" --shape lensr.json
+expect 2 "--csg gives a solid on a scene" -- "$hsx" nhtree "$mesh" --fea "$fea" --csg "A"
+expect 2 "--shape gives a solid on a scene" -- "$hsx" nhtree "$mesh" --fea "$fea" --shape lensr.json
 expect 2 "--reference" -- "$hsx" nhtree "$lens" --csg "A" --reference "$work/x.conf"
 expect 2 "is a directory" -- "$hsx" nhtree "$mesh" --fea "$fea" --reference "$work/adir"
 grep -q "too large" out && bad "a directory as --reference is called too large" || ok

@@ -41,6 +41,9 @@
 namespace hsx::cli {
 namespace {
 
+/// --campaign's second default check list: every check but Props. 5.2 and 5.1 (the checks of best-first itself).
+constexpr const char* kWithoutBestFirst = "existence,beam1,prop41-optimum,prop41-beam,uniqueness,certificates,manifold";
+
 struct BenchOptions {
   ArrangementLimits limits;  ///< --max-cells, --max-side-table
   std::vector<std::string> dirs{"data/scenes", "data/figures"};
@@ -60,6 +63,9 @@ struct BenchOptions {
   std::vector<int> campaign_halfspaces{4, 8};  ///< campaign mode: one row per scene size
   long campaign_scenes = 40;        ///< campaign mode: scenes per run
   double campaign_time_limit = 2;   ///< campaign mode: seconds per scene
+  /// Campaign mode: one row per scene size and check list (hsx campaign --checks): every check, and every check
+  /// but the two about best-first itself (Props. 5.2 and 5.1, whose complete best-first search dominates).
+  std::vector<std::string> campaign_checks{"all", kWithoutBestFirst};
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -705,19 +711,21 @@ void run_bench3(const BenchOptions& o, OutputFiles& files) {
 
 /// `scenes` scenes of `halfspaces` halfspaces (seed 1, every check, the CLI's default generator otherwise) run
 /// through the campaign runner on 1 and on 2 threads, each run timed; the records of the two compared.
-BenchRow bench_campaign(int halfspaces, const BenchOptions& o, const RepeatOptions& repeat) {
+BenchRow bench_campaign(int halfspaces, const std::string& checks, const BenchOptions& o,
+                        const RepeatOptions& repeat) {
   campaign::CampaignSettings settings;
   settings.scene.max_samples = 6;  // as `hsx campaign`
   settings.scene.min_halfspaces = settings.scene.max_halfspaces = halfspaces;
   settings.seed = 1;
   settings.time_limit = o.campaign_time_limit;
   settings.limits = o.limits;
-  settings.checks = campaign::parse_check_list("all");
+  settings.checks = campaign::parse_check_list(checks);
   campaign::validate(settings);
   std::vector<std::uint64_t> indices(static_cast<std::size_t>(o.campaign_scenes));
   for (std::size_t k = 0; k < indices.size(); ++k) indices[k] = k;
   BenchRow row;
-  row.input = std::to_string(halfspaces) + " halfspaces";
+  row.input = std::to_string(halfspaces) + " halfspaces, " +
+              (checks == "all" ? std::string("all checks") : checks == kWithoutBestFirst ? "no 5.2/5.1" : checks);
   row.sizes = {halfspaces, o.campaign_scenes};
   std::vector<std::string> lines[2];
   for (int jobs : {1, 2}) {
@@ -747,6 +755,8 @@ void run_campaign_bench(const BenchOptions& o, OutputFiles& files) {
   if (o.campaign_scenes < 1) throw InputError("--campaign-scenes: at least 1");
   if (!std::isfinite(o.campaign_time_limit) || o.campaign_time_limit < 0)
     throw InputError("--campaign-time-limit: a finite number of seconds >= 0");
+  if (o.campaign_checks.empty()) throw InputError("--campaign-checks: at least one check list");
+  for (const std::string& checks : o.campaign_checks) (void)campaign::parse_check_list(checks);  // before timing
   Report report;
   report.mode = "campaign";
   report.input_name = "scenes";
@@ -758,10 +768,11 @@ void run_campaign_bench(const BenchOptions& o, OutputFiles& files) {
   report.repeat = repeat_options(o);
   for (int h : o.campaign_halfspaces) {
     if (h < 1) throw InputError("--campaign-halfspaces: every size must be at least 1");
-    report.rows.push_back(bench_campaign(h, o, report.repeat));
+    for (const std::string& checks : o.campaign_checks) report.rows.push_back(bench_campaign(h, checks, o, report.repeat));
   }
   report.footer = {
-      "each run: the scenes 0..N-1 of seed 1 generated, arranged and given every check (hsx campaign --checks all), "
+      "each run: the scenes 0..N-1 of seed 1 generated, arranged and given the row's checks (hsx campaign --checks: "
+      "all, or \"no 5.2/5.1\" = every check but prop52 and prop51, whose complete best-first search dominates), "
       "at most --campaign-time-limit seconds per scene; scenes/s: on one thread (median run); speed-up: jobs 1 / "
       "jobs 2; timed out: scenes cut by the time limit in the last run of each (which ones depends on the machine's "
       "load); same: the two runs' records are the same bytes (compared when no scene timed out)",
@@ -823,6 +834,9 @@ void add_bench_command(CLI::App& app) {
                       "--campaign: one row per scene size (default 4,8)")
           ->delimiter(','),
       cmd->add_option("--campaign-scenes", o->campaign_scenes, "--campaign: scenes per run (default 40)"),
+      cmd->add_option("--campaign-checks", o->campaign_checks,
+                      "--campaign: one row per check list and size, each as hsx campaign --checks (default: all, "
+                      "and every check but prop52 and prop51)"),
       cmd->add_option("--campaign-time-limit", o->campaign_time_limit,
                       "--campaign: seconds per scene (default 2; 0: none)")
           ->check(seconds())};

@@ -19,14 +19,8 @@ using campaign::CheckStatus;
 
 CheckOutcome grade_answer(const Complex& c, const bsh::Labelling& theirs, const bsh::ExtractOptions& oracle) {
   const bsh::Problem problem(c);
-  bsh::Grade g = bsh::grade(problem, theirs, oracle);
-  if (!g.optimum.optimal && g.optimum.stopped_by.empty()) {
-    // Best-first left unproven by no limit (non-generic junctions and an oracle too large, or a graph cut whose
-    // measures did not separate): the exact branch and bound under the same limits decides instead.
-    bsh::ExtractOptions exact = oracle;
-    exact.method = bsh::Method::Exact;
-    g = bsh::grade(problem, theirs, exact);
-  }
+  // bsh::grade's reference falls back to the exact branch and bound where best-first is left unproven.
+  const bsh::Grade g = bsh::grade(problem, theirs, oracle);
   const BoundaryDifference d = boundary_difference(problem, c, theirs, g.optimum.labelling);
   const std::string where = "; theirs only:" + patch_list(c, d.theirs_only) + "; optimum only:" + patch_list(c, d.optimum_only);
   const std::string energies =

@@ -14,9 +14,8 @@ namespace hsx::cli {
 /// program's failure, time-out or unreadable labelling is the verdict "no answer") and the labelling it wrote is
 /// graded (bsh::grade with the best-first oracle under the campaign's limits: `settings`' max_states,
 /// max_graph_cuts, brute_force_limit and precision_bits, and its time_limit as the reference's time limit; where
-/// best-first is left unproven without a limit stopping it (non-generic junctions and an oracle too large, or a
-/// graph cut whose measures did not separate), the exact branch and bound under the same limits is the reference
-/// instead). The outcome's witness
+/// best-first is left unproven without a limit stopping it, bsh::reference_optimum's exact branch and bound is the
+/// reference instead). The outcome's witness
 /// is deterministic (no timings): the verdict, the energy or the gap (missing samples and the measure's decimal
 /// to 17 digits), both energies (with their closed forms) and the patches where the boundary differs from the
 /// optimum's. `solver` must be valid

@@ -256,7 +256,9 @@ void add_grade_command(CLI::App& app) {
                   "their labelling: an hsx-result/1, the BSH graph cut's {\"labels\": [...]} (true: inside), a JSON "
                   "array or a plain list of 0/1, one per cell in the order of `hsx arrange INPUT --json`'s cells "
                   "(`hsx arrange INPUT --export bsh-graphcut F` writes their graph-cut input); or --run");
-  cmd->add_option("--method", o->method, "the reference search: best-first (default), exact or brute-force");
+  cmd->add_option("--method", o->method,
+                  "the reference search: best-first (default; where it is left unproven without a limit, exact "
+                  "decides), exact or brute-force");
   cmd->add_option("--max-states", o->max_states, "reference: stop after expanding N states (0: no limit)");
   cmd->add_option("--max-nodes", o->max_nodes, "reference, exact: stop after N branch-and-bound nodes (0: no limit)");
   cmd->add_option("--max-graph-cuts", o->max_graph_cuts, "reference: stop after N graph cuts (0: no limit)");

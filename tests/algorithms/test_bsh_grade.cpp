@@ -3,6 +3,7 @@
 // are its energy minus the optimum's.
 #include <hsx/algorithms/bsh/grade.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/geometry/random_scene.hpp>
 #include <hsx/io/scene_json.hpp>
 #include "support/random_labellings.hpp"
 #include "support/random_scenes.hpp"
@@ -73,4 +74,28 @@ TEST_CASE("grade: a labelling of the wrong size is refused", "[bsh][grade]") {
   const Complex complex = arrange(read_scene_file(std::string(HSX_SOURCE_DIR) + "/data/scenes/lens.json")).complex;
   const Problem problem(complex);
   CHECK_THROWS_AS(grade(problem, Labelling(complex.cells.size() + 1, 0)), std::invalid_argument);
+}
+
+TEST_CASE("grade: the reference falls back to exact where best-first is left unproven", "[bsh][grade]") {
+  // Scene 153 of seed 1 under hsx campaign's generator settings: best-first ends unproven with no limit stopping
+  // it (a graph cut whose measures did not separate).
+  RandomSceneSettings settings;
+  settings.max_samples = 6;
+  const Complex complex = arrange(random_scene(settings, 1, 153).scene).complex;
+  const Problem problem(complex);
+  const ExtractResult best = extract(problem, best_first_oracle());
+  REQUIRE_FALSE(best.optimal);
+  REQUIRE(best.stopped_by.empty());
+  const ExtractResult reference = reference_optimum(problem);
+  CHECK(reference.method == Method::Exact);
+  CHECK(reference.optimal);
+  CHECK(reference.optimality_note.find("exact branch and bound decided") != std::string::npos);
+  const BruteForceResult bf = brute_force(problem, true);
+  CHECK(compare(reference.energy, bf.energy, {}) == Order::Equal);
+  const Grade g = grade(problem, reference.labelling);
+  CHECK(g.optimal());
+  // Elsewhere (here a proven best-first, and any other method) the reference is the oracle's own result.
+  ExtractOptions exact;
+  exact.method = Method::Exact;
+  CHECK(reference_optimum(problem, exact).method == Method::Exact);
 }

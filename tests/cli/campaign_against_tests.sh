@@ -8,8 +8,8 @@
 # - a command that fails, one that times out (--against-time-limit) and one that writes a labelling of the wrong
 #   size are "no answer"; one that puts every cell inside is "invalid"; --against-input complex hands it the
 #   hsx-complex/1 document;
-# - where best-first is unproven without a limit (scene 153 of seed 1), hsx grade --run is undecided and the
-#   campaign decides with the exact branch and bound;
+# - where best-first is unproven without a limit (scene 153 of seed 1), the library's reference
+#   (bsh::reference_optimum) falls back to the exact branch and bound: hsx grade --run and the campaign both decide;
 # - --resume refuses another --against (or none), and finishes a campaign cut short to the same bytes;
 # - bad --against (no placeholders, empty), --against-input, --against-time-limit, and the two without --against
 #   exit 2.
@@ -65,10 +65,12 @@ has "a1/failures/${first%.json}.min.json" "failed against:" "the minimised scene
 expect 3 "" -- "$hsx" grade "a1/failures/${first%.json}.min.json" --run "$cmd" -q
 
 # ---- best-first unproven without a limit (scene 153 of seed 1: a graph cut whose measures did not separate):
-# hsx grade --run says undecided (exit 4), the campaign's reference falls back to the exact branch and bound ----
+# the reference falls back to the exact branch and bound (bsh::reference_optimum), so hsx grade --run decides
+# (optimal, exit 0) as the campaign does ----
 expect 3 "" -- "$hsx" campaign --seed 1 --start 153 --count 1 --checks existence --against "exit 1 # {input} {output}" --out k
-expect 4 "" -- "$hsx" grade k/failures/scene-153.json --run "$cmd"
-has out "NOT proven optimal" "hsx grade says why the reference is unproven"
+expect 0 "" -- "$hsx" grade k/failures/scene-153.json --run "$cmd"
+has out "verdict optimal" "hsx grade decides scene 153"
+has out "(exact, proven optimal)" "hsx grade's reference is exact's where best-first is unproven"
 expect 0 "" -- "$hsx" campaign --seed 1 --start 153 --count 1 --checks existence --against "$cmd" --out k2
 has k2/results.jsonl '"check":"against","status":"held","witness":"optimal: 3 missing samples' "scene 153 graded by the exact reference"
 

@@ -344,7 +344,9 @@ if "$HSX" bench --campaign --campaign-halfspaces 2,3 --campaign-scenes 10 --camp
 import json, sys
 d = json.load(open(sys.argv[1]))
 rows = d["rows"]
-assert d["mode"] == "campaign" and [r["halfsp"] for r in rows] == [2, 3], rows
+# one row per size and check list: every check, and every check but Props. 5.2 and 5.1
+assert d["mode"] == "campaign" and [r["halfsp"] for r in rows] == [2, 2, 3, 3], rows
+assert [r["input"].endswith("all checks") for r in rows] == [True, False, True, False], rows
 for r in rows:
     assert [s["stage"] for s in r["stages"]] == ["jobs 1", "jobs 2"], r
     assert r["same"] == "yes" and r["timed out"] == "0/0" and float(r["scenes/s"]) > 0, r
@@ -356,6 +358,9 @@ fi
 "$HSX" bench --campaign --campaign-scenes 0 >/dev/null 2>"$TMP/stderr.txt"
 rc=$?
 if ((rc == 2)) && grep -q -- "--campaign-scenes: at least 1" "$TMP/stderr.txt"; then pass; else fail "bench --campaign --campaign-scenes 0: exit $rc"; fi
+"$HSX" bench --campaign --campaign-checks nosuch >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "nosuch" "$TMP/stderr.txt"; then pass; else fail "bench --campaign --campaign-checks nosuch: exit $rc"; fi
 # ---- arrange/extract --labels: cell and patch ids in the picture ----
 if "$HSX" arrange "$ROOT/data/scenes/lens.json" --svg "$TMP/labels.svg" --labels -q &&
   grep -q 'class="cell-id"' "$TMP/labels.svg" && grep -q 'class="patch-id"' "$TMP/labels.svg"; then

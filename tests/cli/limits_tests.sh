@@ -76,9 +76,10 @@ json t.json "d['optimal'] and d['ties']['count'] == 16 and d['ties']['capped'] a
 expect 0 "ties 16+ (best-first stopped by max-ties) of 32" -- "$hsx" check rooms5.json --json c.json
 json c.json "d['passed'] and d['checks'][1]['status'] == 'pass'"
 # check has extract's limits; a check they cut short is "stopped", one they leave no room for "skipped".
-expect 0 "stopped  best-first stopped by max-states" -- "$hsx" check "$lens" --max-states 2 --json c.json
+# --max-states is also the exact search's node limit (the optimum of the beam, Prop. 4.1 and uniqueness checks).
+expect 0 "stopped  exact stopped by max-nodes" -- "$hsx" check "$lens" --max-states 2 --json c.json
 json c.json "d['passed'] and not d['complete'] and any(c['status'] == 'stopped' for c in d['checks'])"
-expect 0 "" -- "$hsx" check "$lens" --max-graph-cuts 5 --json c.json
+expect 0 "best-first stopped by max-graph-cuts" -- "$hsx" check "$lens" --max-graph-cuts 1 --json c.json
 json c.json "d['passed'] and not d['complete']"
 # Where brute force is too large, Prop. 5.2 is checked against the exact branch and bound instead.
 expect 0 "Prop. 5.2 (best-first = exact branch and bound; brute force too large) pass" -- \
@@ -112,8 +113,8 @@ expect 2 "adir: is a directory" -- "$hsx" describe "$lens" --shape adir
 
 # Options that do not apply are refused, not ignored.
 mesh="$src/data/meshes/lprism.obj"; fea="$src/data/meshes/lprism_open_corner.fea"
-expect 2 "--csg gives a 2D solid" -- "$hsx" nhtree "$mesh" --fea "$fea" --csg "A"
-expect 2 "--shape gives a 2D solid" -- "$hsx" nhtree "$mesh" --fea "$fea" --shape lensr.json
+expect 2 "--csg gives a solid on a scene" -- "$hsx" nhtree "$mesh" --fea "$fea" --csg "A"
+expect 2 "--shape gives a solid on a scene" -- "$hsx" nhtree "$mesh" --fea "$fea" --shape lensr.json
 expect 2 "--reference" -- "$hsx" nhtree "$lens" --csg "A" --reference "$work/x.conf"
 expect 2 "is a directory" -- "$hsx" nhtree "$mesh" --fea "$fea" --reference "$work/adir"
 grep -q "too large" out && bad "a directory as --reference is called too large" || ok

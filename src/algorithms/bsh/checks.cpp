@@ -49,20 +49,22 @@ std::string cells_text(const Labelling& l) {
 /// Prop. 5.2 where the oracle is too large: best-first against the exact branch and bound (bsh/exact.hpp),
 /// which is right at any junction. Skipped when exact stops at its time limit. `reference` gets exact's optimum.
 /// `options`: the check's limits for one search (its time limit what is left, 60 s at most).
+/// `shared`: check_all's exact optimum (computed with `shared_max_ties`), reused when it has the tie cap this check
+/// asks for and was not stopped; null when there is none.
 CheckResult best_first_against_exact(const Problem& problem, const ExtractResult& best, ExtractOptions options,
-                                     const std::string& genericity, Labelling& reference) {
+                                     const std::string& genericity, const ExtractResult* shared, int shared_max_ties) {
   CheckResult r{"Prop. 5.2 (best-first = exact branch and bound; brute force too large)", CheckResult::Pass, ""};
   const CompareOptions& compare = options.compare;
   options.method = Method::Exact;
   options.time_limit = options.time_limit > 0 ? std::min(options.time_limit, 60.0) : 60;
   options.max_ties = std::max(best.ties.count + 1, 16);
-  const ExtractResult exact = extract(problem, options);
+  const bool reuse = shared && shared->optimal && shared_max_ties == options.max_ties;
+  const ExtractResult exact = reuse ? *shared : extract(problem, options);
   if (!exact.optimal) {
     r.status = CheckResult::Stopped;
     r.witness = "exact stopped by " + exact.stopped_by + " and brute force is too large";
     return r;
   }
-  reference = exact.labelling;
   const Order o = bsh::compare(best.energy, exact.energy, compare);
   const bool same = best.labelling == exact.labelling || exact.ties.capped ||
                     std::find(exact.tied.begin(), exact.tied.end(), best.labelling) != exact.tied.end();
@@ -129,20 +131,20 @@ CheckResult check_prop41(const Complex& complex, const Labelling& labelling, con
     return r;
   }
   ExtractOptions options = limits;
-  options.method = Method::BestFirst;
+  options.method = Method::Exact;
   options.enumerate_ties = true;
   options.record_states = false;
   options.progress = nullptr;
   const ExtractResult result = extract(problem, options);
   if (!result.stopped_by.empty() || (result.ties.capped && result.ties.count == 1)) {
     r.status = CheckResult::Stopped;
-    r.witness = "best-first with " + std::to_string(sampled.samples.size()) + " samples stopped by " +
+    r.witness = "exact with " + std::to_string(sampled.samples.size()) + " samples stopped by " +
                 (result.stopped_by.empty() ? result.ties.stopped_by : result.stopped_by);
     return r;
   }
   if (result.labelling != labelling || result.ties.count != 1) {
     r.status = CheckResult::Fail;
-    r.witness = "with " + std::to_string(sampled.samples.size()) + " samples best-first returned cells " +
+    r.witness = "with " + std::to_string(sampled.samples.size()) + " samples exact returned cells " +
                 cells_text(result.labelling) + " (ties " + std::to_string(result.ties.count) + "), expected " +
                 cells_text(labelling);
     return r;
@@ -283,6 +285,7 @@ class CheckBudget {
     o.method = method;
     o.compare = options_.compare;
     o.max_states = options_.max_states;
+    o.max_nodes = options_.max_states;  // the exact search's deterministic limit (CheckOptions::max_states)
     o.max_graph_cuts = options_.max_graph_cuts;
     o.time_limit = options_.time_limit > 0 ? std::max(seconds_left(), 1e-9) : 0;
     o.cancel = options_.cancel;
@@ -318,9 +321,10 @@ CheckResult check_existence(const Problem& problem) {
   return r;
 }
 
-/// Prop. 5.2: best-first = brute force. Sets `reference` to the oracle's optimum when it ran to the end.
+/// Prop. 5.2: best-first = brute force (= exact where brute force is too large; `exact`, `exact_max_ties`: see
+/// best_first_against_exact).
 CheckResult check_prop52(const Problem& problem, const ExtractResult& best, const CheckBudget& budget,
-                         Labelling& reference) {
+                         const ExtractResult* exact, int exact_max_ties) {
   const std::string name = "Prop. 5.2 (best-first = brute force)";
   CheckResult r{name, CheckResult::Pass, ""};
   const CompareOptions& compare = budget.options().compare;
@@ -339,14 +343,13 @@ CheckResult check_prop52(const Problem& problem, const ExtractResult& best, cons
   try {
     bf = brute_force(problem, true, budget.oracle());
   } catch (const LabellingLimitExceeded&) {
-    return best_first_against_exact(problem, best, budget.search(Method::Exact), genericity, reference);
+    return best_first_against_exact(problem, best, budget.search(Method::Exact), genericity, exact, exact_max_ties);
   }
   if (bf.stopped) {
     r.status = CheckResult::Stopped;
     r.witness = "brute force stopped by " + bf.stopped_by + " after " + std::to_string(bf.enumerated) + " labellings";
     return r;
   }
-  reference = bf.optimal.front();
   const Order o = bsh::compare(best.energy, bf.energy, compare);
   const bool same = std::find(bf.optimal.begin(), bf.optimal.end(), best.labelling) != bf.optimal.end();
   // A capped tie count is a lower bound: it may only be at most the oracle's.
@@ -393,53 +396,54 @@ CheckResult check_prop51_on_states(const Problem& problem, const ExtractResult& 
   return r;
 }
 
-/// Beam K = 1: admissible and never better than the optimum.
-CheckResult check_beam(const Problem& problem, const ExtractResult& beam, const ExtractResult& best,
+/// Beam K = 1: admissible and never better than the optimum (`optimum`: the exact branch and bound's).
+CheckResult check_beam(const Problem& problem, const ExtractResult& beam, const ExtractResult& optimum,
                        const CompareOptions& compare) {
   CheckResult r{"Beam K=1 (admissible, energy >= optimum)", CheckResult::Pass, ""};
-  if (!beam.stopped_by.empty() || !best.stopped_by.empty()) {
+  if (!beam.stopped_by.empty() || !optimum.stopped_by.empty()) {
     r.status = CheckResult::Stopped;
-    r.witness = beam.stopped_by.empty() ? "best-first (the optimum) stopped by " + best.stopped_by
+    r.witness = beam.stopped_by.empty() ? "exact (the optimum) stopped by " + optimum.stopped_by
                                           : "beam stopped by " + beam.stopped_by;
     return r;
   }
   std::string why;
-  const Order o = bsh::compare(beam.energy, best.energy, compare);
+  const Order o = bsh::compare(beam.energy, optimum.energy, compare);
   if (!is_orientation_preserving(problem, beam.labelling, &why) || !beam.sample_connected || o == Order::Less) {
     r.status = CheckResult::Fail;
-    r.witness = "beam " + energy_text(beam.energy) + " vs optimum " + energy_text(best.energy) + " " + why;
+    r.witness = "beam " + energy_text(beam.energy) + " vs optimum " + energy_text(optimum.energy) + " " + why;
   } else {
     r.witness = std::string(o == Order::Greater ? "sub-optimal: " : "optimal: ") + energy_text(beam.energy);
   }
   return r;
 }
 
-/// Uniqueness (Section 4.2) or a reported tie.
-CheckResult check_uniqueness(const ExtractResult& best) {
+/// Uniqueness (Section 4.2) or a reported tie, from the exact branch and bound's tie enumeration.
+CheckResult check_uniqueness(const ExtractResult& optimum) {
   CheckResult r{"Sec. 4.2 (uniqueness or reported tie)", CheckResult::Pass, ""};
-  const bool cut = best.ties.capped && best.ties.stopped_by != "max-ties";
-  if (!best.stopped_by.empty() || (cut && best.ties.count == 1)) {
+  const bool cut = optimum.ties.capped && optimum.ties.stopped_by != "max-ties";
+  if (!optimum.stopped_by.empty() || (cut && optimum.ties.count == 1)) {
     r.status = CheckResult::Stopped;
-    r.witness = "best-first stopped by " + (best.stopped_by.empty() ? best.ties.stopped_by : best.stopped_by) +
-                (best.stopped_by.empty() ? " while enumerating ties" : "");
-  } else if (!best.ties.checked) {
+    r.witness = "exact stopped by " + (optimum.stopped_by.empty() ? optimum.ties.stopped_by : optimum.stopped_by) +
+                (optimum.stopped_by.empty() ? " while enumerating ties" : "");
+  } else if (!optimum.ties.checked) {
     r.status = CheckResult::Skipped;
     r.witness = "ties not enumerated";
-  } else if (best.ties.count == 1) {
-    r.witness = best.ties.certified ? "unique" : "unique up to unseparated comparisons";
+  } else if (optimum.ties.count == 1) {
+    r.witness = optimum.ties.certified ? "unique" : "unique up to unseparated comparisons";
   } else {
-    r.witness = std::to_string(best.ties.count) + (best.ties.capped ? "+" : "") + " optimal boundaries, " +
-                (best.ties.certified ? "proven equal" : "not separated at the precision cap") +
-                (best.ties.capped ? " (enumeration stopped by " + best.ties.stopped_by + ")" : "");
+    r.witness = std::to_string(optimum.ties.count) + (optimum.ties.capped ? "+" : "") + " optimal boundaries, " +
+                (optimum.ties.certified ? "proven equal" : "not separated at the precision cap") +
+                (optimum.ties.capped ? " (enumeration stopped by " + optimum.ties.stopped_by + ")" : "");
   }
   return r;
 }
 
-/// Every graph cut certified (flow feasible, value = energy).
-CheckResult check_certificates(const Complex& complex, const ExtractResult& best, const ExtractResult* beam) {
+/// Every graph cut certified (flow feasible, value = energy): those of the exact search (its certified bounds)
+/// and of the beam search.
+CheckResult check_certificates(const Complex& complex, const ExtractResult* optimum, const ExtractResult* beam) {
   CheckResult r{"Eqs. 2-4 (every graph cut certified)", CheckResult::Pass, ""};
-  const long cuts = best.stats.graph_cuts + (beam ? beam->stats.graph_cuts : 0);
-  const long bad = best.stats.uncertified_cuts + (beam ? beam->stats.uncertified_cuts : 0);
+  const long cuts = (optimum ? optimum->stats.graph_cuts : 0) + (beam ? beam->stats.graph_cuts : 0);
+  const long bad = (optimum ? optimum->stats.uncertified_cuts : 0) + (beam ? beam->stats.uncertified_cuts : 0);
   r.witness = std::to_string(cuts - bad) + " of " + std::to_string(cuts) + " cuts certified";
   // With curved boundaries a certificate may fail only because equal-looking measures did not separate;
   // with straight ones every comparison is exact, so an uncertified cut is a failure.
@@ -469,22 +473,31 @@ std::vector<CheckResult> check_all(const Complex& complex, const CheckOptions& o
   std::vector<CheckResult> out;
   const Problem problem(complex);
   if (want(Check::Existence)) out.push_back(check_existence(problem));
-  const bool need_best = std::any_of(options.only.begin(), options.only.end(),
-                                     [](Check c) { return c != Check::Existence; }) || options.only.empty();
-  if (!need_best) return out;
 
-  ExtractOptions best_options = budget.search(Method::BestFirst);
-  best_options.record_states = true;
-  best_options.certify_limit = 0;  // check the search itself, not its oracle-backed fallback
-  const ExtractResult best = extract(problem, best_options);
-
-  // The reference optimum for the checks below: the oracle's when it ran, else best-first's.
-  Labelling reference = best.labelling;
-  if (want(Check::Prop52) || want(Check::Prop51)) {
-    CheckResult prop52 = check_prop52(problem, best, budget, reference);
-    if (want(Check::Prop52)) out.push_back(std::move(prop52));
+  // The optimum, for every check that needs only an optimum (Prop. 5.1's reference, the beam's comparison,
+  // Prop. 4.1 on it, uniqueness, manifold parity) and the certificates: the exact branch and bound, with its tie
+  // enumeration (kExactTies, which Prop. 5.2 reuses when brute force is too large and its cap is the same).
+  constexpr int kExactTies = 16;
+  std::optional<ExtractResult> exact;
+  const bool need_exact = want(Check::Prop51) || want(Check::Beam) || want(Check::Prop41Optimum) ||
+                          want(Check::Uniqueness) || want(Check::Certificates) || want(Check::Manifold);
+  if (need_exact) {
+    ExtractOptions o = budget.search(Method::Exact);
+    o.max_ties = kExactTies;
+    exact = extract(problem, o);
   }
-  if (want(Check::Prop51)) out.push_back(check_prop51_on_states(problem, best, reference));
+  // Best-first only for the checks about best-first itself: Prop. 5.2 and Prop. 5.1 on its expanded states.
+  if (want(Check::Prop52) || want(Check::Prop51)) {
+    ExtractOptions best_options = budget.search(Method::BestFirst);
+    best_options.record_states = want(Check::Prop51);
+    best_options.certify_limit = 0;  // check the search itself, not its oracle-backed fallback
+    const ExtractResult best = extract(problem, best_options);
+    if (want(Check::Prop52))
+      out.push_back(check_prop52(problem, best, budget, exact ? &*exact : nullptr, kExactTies));
+    // Prop. 5.1 holds against any sample-connected b': the exact optimum when proven, else best-first's result.
+    if (want(Check::Prop51))
+      out.push_back(check_prop51_on_states(problem, best, exact && exact->optimal ? exact->labelling : best.labelling));
+  }
 
   std::optional<ExtractResult> beam;
   if (want(Check::Beam) || want(Check::Prop41Beam) || want(Check::Certificates)) {
@@ -492,27 +505,40 @@ std::vector<CheckResult> check_all(const Complex& complex, const CheckOptions& o
       if (want(Check::Beam)) out.push_back(skipped_for_time("Beam K=1 (admissible, energy >= optimum)"));
     } else {
       beam = extract(problem, budget.search(Method::Beam));
-      if (want(Check::Beam)) out.push_back(check_beam(problem, *beam, best, options.compare));
+      if (want(Check::Beam)) out.push_back(check_beam(problem, *beam, *exact, options.compare));
     }
   }
 
   // Prop. 4.1 on the optimum and on the beam result (any orientation-preserving boundary will do).
+  // The check depends only on the labelling (and the limits): when the beam found the optimum's very labelling, the
+  // optimum's result is the beam's too (computed once).
   const std::string prop41 = "Prop. 4.1 (one sample per patch reproduces b)";
+  std::optional<CheckResult> prop41_optimum;
   if (want(Check::Prop41Optimum)) {
-    out.push_back(budget.spent() ? skipped_for_time(prop41)
-                                 : check_prop41(complex, best.labelling, budget.search(Method::BestFirst)));
+    if (budget.spent()) {
+      out.push_back(skipped_for_time(prop41));
+    } else if (!exact->optimal) {
+      out.push_back({prop41, CheckResult::Stopped, "exact (the optimum) stopped by " + exact->stopped_by});
+    } else {
+      prop41_optimum = check_prop41(complex, exact->labelling, budget.search(Method::Exact));
+      out.push_back(*prop41_optimum);
+    }
     out.back().name += " on the optimum";
   }
   if (want(Check::Prop41Beam)) {
-    out.push_back(!beam || budget.spent() ? skipped_for_time(prop41)
-                                          : check_prop41(complex, beam->labelling, budget.search(Method::BestFirst)));
+    if (!beam || budget.spent())
+      out.push_back(skipped_for_time(prop41));
+    else if (prop41_optimum && beam->labelling == exact->labelling)
+      out.push_back(*prop41_optimum);
+    else
+      out.push_back(check_prop41(complex, beam->labelling, budget.search(Method::Exact)));
     out.back().name += " on the beam result";
   }
 
-  if (want(Check::Uniqueness)) out.push_back(check_uniqueness(best));
-  if (want(Check::Certificates)) out.push_back(check_certificates(complex, best, beam ? &*beam : nullptr));
+  if (want(Check::Uniqueness)) out.push_back(check_uniqueness(*exact));
+  if (want(Check::Certificates)) out.push_back(check_certificates(complex, &*exact, beam ? &*beam : nullptr));
   if (want(Check::Manifold)) {
-    out.push_back(check_manifold_parity(problem, best.labelling));
+    out.push_back(check_manifold_parity(problem, exact->labelling));
     out.back().name += " on the optimum";
   }
   return out;

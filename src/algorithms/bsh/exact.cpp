@@ -651,6 +651,7 @@ class ExactSearch {
     result.ties.count = static_cast<int>(optimal_.size());
     result.ties.certified = !unseparated_;
     result.ties.capped = result.ties.checked && !want_ties();
+    if (result.ties.capped) result.ties.stopped_by = "max-ties";
     for (const Labelling& l : optimal_)
       if (l != incumbent_) result.tied.push_back(l);
     stats_.lower_bound = lower_bound();

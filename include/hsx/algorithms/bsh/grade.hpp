@@ -21,7 +21,7 @@ struct Grade {
   bool sample_connected = false;
   std::vector<Component> islands;
   Energy energy;                 ///< E(b) of the graded labelling (computed even when it is not valid)
-  ExtractResult optimum;         ///< the reference: the oracle's result (its `optimal` says whether it is proven)
+  ExtractResult optimum;         ///< the reference: reference_optimum's result (`optimal`: proven; `method`: which)
   /// The graded energy against the optimum's: Equal (optimal), Greater (worse), Less (better: only possible when
   /// the labelling is invalid or the reference is not proven), Tie (the measures did not separate).
   Order versus_optimum = Order::Tie;
@@ -37,11 +37,20 @@ struct Grade {
 /// The default oracle options of `grade`: Method::BestFirst, no limits.
 ExtractOptions best_first_oracle();
 
+/// The reference optimum of `grade`: extract(problem, oracle), except where the oracle is best-first and ends
+/// unproven without a limit stopping it (non-generic junctions with the oracle-backed certification too large, or
+/// a graph cut whose measures did not separate: ExtractResult::optimality_note): then the exact branch and bound
+/// (bsh/exact.hpp, right at any junction) under the same limits decides, and its result is returned, with
+/// optimality_note saying so. When exact too is stopped by a limit, best-first's unproven result is returned (its
+/// note saying that exact was stopped). Deterministic without a time limit. `oracle` as in `grade`.
+ExtractResult reference_optimum(const Problem& problem, const ExtractOptions& oracle = best_first_oracle());
+
 /// Grades `labelling` on `problem`'s complex.
 /// - `labelling`: one entry per cell of the complex (1 inside, 0 outside). Throws std::invalid_argument when its
 ///   size is not the cell count.
-/// - `oracle`: how the reference optimum is computed; the default is the complete best-first search with tie
-///   enumeration. With limits (max_states, time_limit) the reference may be unproven: Grade::optimum.optimal says.
+/// - `oracle`: how the reference optimum is computed (reference_optimum: best-first falls back to exact where it
+///   is left unproven without a limit); the default is the complete best-first search with tie enumeration. With
+///   limits (max_states, max_nodes, time_limit) the reference may be unproven: Grade::optimum.optimal says.
 Grade grade(const Problem& problem, const Labelling& labelling, const ExtractOptions& oracle = best_first_oracle());
 
 }  // namespace hsx::bsh

@@ -47,10 +47,9 @@ struct CheckLimits {
 /// (bsh::Problem::non_generic_junctions), else "".
 std::string genericity_note(const Complex& complex);
 
-/// The optimum the checks below compare with: best-first (complete at generic junctions, certified by the
-/// oracle at non-generic ones when small), then, when it is not proven optimal although no limit stopped it, the
-/// exact branch and bound. No tie enumeration. Its `stopped_by` names a limit that stopped it; `optimal` false
-/// then.
+/// The optimum the checks below compare with: the exact branch and bound (bsh/exact.hpp; right at any junction,
+/// as check_all's optimum), within `limits` (max_states bounds its nodes). No tie enumeration. Its `stopped_by`
+/// names a limit that stopped it; `optimal` false then.
 bsh::ExtractResult reference_optimum(const Complex& complex, const CheckLimits& limits);
 
 /// Prop. 6.1 (`search` BestFirst) or Prop. B.1 (`search` Beam, K = 1) on `target`: bsh::generate_samples with

@@ -1,5 +1,6 @@
 // Graphviz diagrams of NH-Rep results: see nhrep_dot.hpp.
 #include <hsx/io/nhrep_dot.hpp>
+#include <hsx/io/nhrep_svg.hpp>
 
 #include <hsx/io/svg.hpp>
 
@@ -20,16 +21,6 @@ std::string quoted(const std::string& s) {
       out += c;
   }
   return out + "\"";
-}
-
-const char* type_colour(FeatureType type) {
-  switch (type) {
-    case FeatureType::Convex: return "#e41a1c";
-    case FeatureType::Concave: return "#377eb8";
-    case FeatureType::Smooth: return "#4daf4a";
-    case FeatureType::Hybrid: return "#984ea3";
-  }
-  return "#000000";
 }
 
 void check(const nhrep::BuildResult& r, const std::vector<std::string>& names, const char* who) {
@@ -96,7 +87,7 @@ std::string nhrep_patch_graph_dot(const nhrep::BuildResult& r, const std::vector
   for (int p : r.graph.live_patches()) s += patch_node(p, node_of.at(at(p)), names);
   for (const nhrep::Curve& c : r.graph.curves)
     s += "  p" + std::to_string(c.patch_a) + " -- p" + std::to_string(c.patch_b) + " [color=\"" +
-         type_colour(c.type) + "\", penwidth=2, label=\"" + feature_type_name(c.type) + " (" +
+         feature_type_colour(c.type) + "\", penwidth=2, label=\"" + feature_type_name(c.type) + " (" +
          std::to_string(c.links.size()) + ")\"];\n";
   return s + "}\n";
 }

@@ -14,10 +14,7 @@
 
 namespace hsx {
 
-namespace {
-
-// Corner colours after the paper's Fig. 4 (convex red, concave blue), smooth green.
-const char* corner_colour(FeatureType type) {
+const char* feature_type_colour(FeatureType type) {
   switch (type) {
     case FeatureType::Convex: return "#e41a1c";
     case FeatureType::Concave: return "#377eb8";
@@ -26,6 +23,8 @@ const char* corner_colour(FeatureType type) {
   }
   return "#000000";
 }
+
+namespace {
 
 struct Frame {
   SvgView view;
@@ -214,7 +213,7 @@ std::string nhrep_svg(const Scene2& scene, const Arranged2& arranged, const std:
     const FeatureType type = surface.links[static_cast<std::size_t>(l)].type;
     s += "<circle class=\"feature\" data-id=\"" + std::to_string(l) + "\" data-type=\"" + feature_type_name(type) +
          "\" cx=\"" + n(frame.X(at.x.to_double())) + "\" cy=\"" + n(frame.Y(at.y.to_double())) +
-         "\" r=\"4\" fill=\"" + corner_colour(type) + "\"/>\n";
+         "\" r=\"4\" fill=\"" + feature_type_colour(type) + "\"/>\n";
   }
   s += "</g>\n";
 
@@ -238,7 +237,7 @@ std::string nhrep_svg(const Scene2& scene, const Arranged2& arranged, const std:
   double x = margin;
   const double y = legend_top + 9;
   for (FeatureType type : {FeatureType::Convex, FeatureType::Concave, FeatureType::Smooth}) {
-    s += "<circle cx=\"" + n(x + 5) + "\" cy=\"" + n(y) + "\" r=\"4\" fill=\"" + corner_colour(type) +
+    s += "<circle cx=\"" + n(x + 5) + "\" cy=\"" + n(y) + "\" r=\"4\" fill=\"" + feature_type_colour(type) +
          "\" stroke=\"#000000\" stroke-width=\"0.8\"/>\n";
     s += "<text x=\"" + n(x + 14) + "\" y=\"" + n(y + 4) + "\" fill=\"#222222\">" + feature_type_name(type) +
          " corner</text>\n";
@@ -404,7 +403,7 @@ std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std
       const V3 a = to_v3(verts.at(static_cast<std::size_t>(e.a))), b = to_v3(verts.at(static_cast<std::size_t>(e.b)));
       s += "<line class=\"feature\" data-id=\"" + std::to_string(l) + "\" data-type=\"" + feature_type_name(link.type) +
            "\" x1=\"" + n(X(a)) + "\" y1=\"" + n(Y(a)) + "\" x2=\"" + n(X(b)) + "\" y2=\"" + n(Y(b)) + "\" stroke=\"" +
-           corner_colour(link.type) + "\" stroke-width=\"1.5\"/>\n";
+           feature_type_colour(link.type) + "\" stroke-width=\"1.5\"/>\n";
     }
     for (std::size_t patch = 0; patch < first_piece.size(); ++patch) {
       if (first_piece[patch] < 0) continue;
@@ -425,7 +424,7 @@ std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std
   double x = margin;
   for (FeatureType type : {FeatureType::Convex, FeatureType::Concave, FeatureType::Smooth}) {
     s += "<line x1=\"" + n(x) + "\" y1=\"" + n(legend_top + 9) + "\" x2=\"" + n(x + 16) + "\" y2=\"" + n(legend_top + 9) +
-         "\" stroke=\"" + corner_colour(type) + "\" stroke-width=\"2\"/>\n";
+         "\" stroke=\"" + feature_type_colour(type) + "\" stroke-width=\"2\"/>\n";
     s += "<text x=\"" + n(x + 20) + "\" y=\"" + n(legend_top + 13) + "\" fill=\"#222222\">" + feature_type_name(type) +
          " feature edge</text>\n";
     x += 150;

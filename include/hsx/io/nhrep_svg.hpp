@@ -27,6 +27,10 @@
 
 namespace hsx {
 
+/// The colour of a feature type in hsx's NH-Rep pictures (SVG and Graphviz), after NH-Rep's Fig. 4: convex red
+/// "#e41a1c", concave blue "#377eb8", smooth green "#4daf4a", hybrid purple "#984ea3".
+const char* feature_type_colour(FeatureType type);
+
 /// `solid_cells`: per cell, 1 = in the solid. `piece_patch`: per piece of `surface`, its patch id (-1 for retired
 /// pieces). `patch_colour_group`: per patch id, the colour index to draw it with (e.g. its tree node); empty:
 /// colour by patch id. Throws std::invalid_argument when the inputs do not fit together.

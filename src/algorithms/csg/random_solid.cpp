@@ -91,23 +91,6 @@ class PrimitiveDrawer {
   Scene2& scene_;
 };
 
-/// Step 2's Csg combination: pairs of random parts until one is left.
-ExprPtr combine(Random& rng, std::vector<ExprPtr> parts) {
-  while (parts.size() > 1) {
-    const std::size_t i = rng.index(parts.size());
-    ExprPtr a = parts[i];
-    parts.erase(parts.begin() + static_cast<long>(i));
-    const std::size_t j = rng.index(parts.size());
-    ExprPtr b = parts[j];
-    switch (rng.in(0, 3)) {
-      case 0: parts[j] = unite({a, b}); break;
-      case 1: parts[j] = intersect({a, b}); break;
-      case 2: parts[j] = difference(a, b); break;
-      default: parts[j] = difference(b, a); break;
-    }
-  }
-  return parts.front();
-}
 
 std::vector<char> random_cells(Random& rng, const Complex& complex) {
   std::vector<char> solid(complex.cells.size(), 0);
@@ -123,6 +106,24 @@ void check_settings(const RandomSolidSettings& s) {
 }
 
 }  // namespace
+
+ExprPtr random_combination(Random& rng, std::vector<ExprPtr> parts) {
+  if (parts.empty()) throw std::invalid_argument("random_combination: no parts");
+  while (parts.size() > 1) {
+    const std::size_t i = rng.index(parts.size());
+    ExprPtr a = parts[i];
+    parts.erase(parts.begin() + static_cast<long>(i));
+    const std::size_t j = rng.index(parts.size());
+    ExprPtr b = parts[j];
+    switch (rng.in(0, 3)) {
+      case 0: parts[j] = unite({a, b}); break;
+      case 1: parts[j] = intersect({a, b}); break;
+      case 2: parts[j] = difference(a, b); break;
+      default: parts[j] = difference(b, a); break;
+    }
+  }
+  return parts.front();
+}
 
 SolidStatus solid_status(const Complex& complex, const std::vector<char>& solid) {
   if (solid.size() != complex.cells.size())
@@ -153,7 +154,7 @@ RandomSolid random_solid(const RandomSolidSettings& settings, RandomSolidKind ki
     if (kind == RandomSolidKind::Cells) {
       r.solid = random_cells(rng, r.arranged.complex);
     } else {
-      r.expression = combine(rng, std::move(parts));
+      r.expression = random_combination(rng, std::move(parts));
       r.solid = evaluate(*r.expression, r.arranged.complex);
     }
     r.status = solid_status(r.arranged.complex, r.solid);

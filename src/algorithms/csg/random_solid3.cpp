@@ -123,23 +123,6 @@ class Drawer {
   Scene3& scene_;
 };
 
-ExprPtr combine(Random& rng, std::vector<ExprPtr> parts) {
-  while (parts.size() > 1) {
-    const std::size_t i = rng.index(parts.size());
-    ExprPtr a = parts[i];
-    parts.erase(parts.begin() + static_cast<long>(i));
-    const std::size_t j = rng.index(parts.size());
-    ExprPtr b = parts[j];
-    switch (rng.in(0, 3)) {
-      case 0: parts[j] = unite({a, b}); break;
-      case 1: parts[j] = intersect({a, b}); break;
-      case 2: parts[j] = difference(a, b); break;
-      default: parts[j] = difference(b, a); break;
-    }
-  }
-  return parts.front();
-}
-
 }  // namespace
 
 RandomSolid3 random_solid3(const RandomSolid3Settings& settings, std::uint64_t seed, std::uint64_t index,
@@ -157,7 +140,7 @@ RandomSolid3 random_solid3(const RandomSolid3Settings& settings, std::uint64_t s
     std::optional<ExprPtr> inner;
     Drawer drawer(rng, settings.segments, r.scene);
     for (int k = 0; k < primitives; ++k) parts.push_back(drawer.draw(k, settings.hollow && k == 0 ? &inner : nullptr));
-    r.expression = combine(rng, parts);
+    r.expression = random_combination(rng, parts);
     if (inner) {
       r.expression = difference(unite({r.expression, parts.front()}), *inner);
       r.hollowed = true;

@@ -26,6 +26,7 @@
 #include <hsx/algorithms/csg/expression.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
 #include <hsx/geometry/scene.hpp>
+#include <hsx/kernel/random.hpp>
 
 #include <cstdint>
 #include <vector>
@@ -61,6 +62,11 @@ struct RandomSolid {
   SolidStatus status = SolidStatus::Empty;  ///< of the returned draw (Bounded unless max_draws ran out)
   int draws = 1;            ///< draws made (1 when the first was bounded)
 };
+
+/// Step 2's Csg combination (the header comment), shared with random_solid3.hpp: while more than one part is left,
+/// a = part rng.in(0, parts - 1) removed, b = part rng.in(0, parts - 1), which becomes a | b, a & b, a - b or b - a
+/// by rng.in(0, 3). Returns the last part. `parts`: at least one (std::invalid_argument otherwise).
+ExprPtr random_combination(Random& rng, std::vector<ExprPtr> parts);
 
 /// Solid `index` of `seed` of the given kind, by the procedure in the header comment. Throws
 /// std::invalid_argument for settings out of range.

@@ -1,7 +1,7 @@
 // A 2D solid's boundary as a BoundarySurface: see boundary_from_arrangement2.hpp.
 #include <hsx/complex/boundary_from_arrangement2.hpp>
 
-#include "geometry/components.hpp"
+#include "complex/solid_components.hpp"
 #include "geometry/planar_corners.hpp"
 
 #include <stdexcept>
@@ -20,31 +20,6 @@ FeatureType feature_type_of(CornerAngle angle) {
   return FeatureType::Smooth;
 }
 
-/// Connected components of the faces with solid[f] == want, adjacent across non-box edges; per face its component
-/// (-1 for the others), and per component whether it holds an outer face (reaches the domain box, hence infinity).
-std::vector<int> face_components(const Arrangement2& arr, const std::vector<char>& solid, char want,
-                                 std::vector<char>& touches_box) {
-  const std::size_t n = arr.faces().size();
-  std::vector<std::pair<int, int>> edges;
-  for (const ArrEdge2& e : arr.edges())
-    if (e.left_face >= 0 && e.right_face >= 0 && solid[static_cast<std::size_t>(e.left_face)] == want &&
-        solid[static_cast<std::size_t>(e.right_face)] == want)
-      edges.emplace_back(e.left_face, e.right_face);
-  std::vector<char> wanted(n);
-  for (std::size_t f = 0; f < n; ++f) wanted[f] = solid[f] == want;
-  std::vector<int> component(n, -1);
-  touches_box.clear();
-  for (const std::vector<int>& faces : graph_components(n, edges).members(wanted)) {  // by lowest face
-    char outer = 0;
-    for (int f : faces) {
-      component[static_cast<std::size_t>(f)] = static_cast<int>(touches_box.size());
-      if (arr.faces()[static_cast<std::size_t>(f)].outer) outer = 1;
-    }
-    touches_box.push_back(outer);
-  }
-  return component;
-}
-
 }  // namespace
 
 BoundarySurface boundary_from_arrangement2(const Arranged2& arranged, const std::vector<char>& solid_cells) {
@@ -61,8 +36,8 @@ BoundarySurface boundary_from_arrangement2(const Arranged2& arranged, const std:
   // solid part's parent is the void around it, and its other adjacent voids are its holes (an island in a hole
   // of another part has that hole as its outside).
   std::vector<char> part_touches_box, void_touches_box;
-  const std::vector<int> solid_part = face_components(arr, solid_cells, 1, part_touches_box);
-  const std::vector<int> void_part = face_components(arr, solid_cells, 0, void_touches_box);
+  const std::vector<int> solid_part = detail::solid_components(complex, solid_cells, 1, part_touches_box);
+  const std::vector<int> void_part = detail::solid_components(complex, solid_cells, 0, void_touches_box);
   const std::size_t parts = part_touches_box.size(), voids = void_touches_box.size();
   std::vector<std::vector<int>> part_voids(parts), void_parts(voids);
   for (const SolidBoundaryEdge2& b : boundary.edges) {

@@ -1,7 +1,7 @@
 // A 3D solid's boundary as a BoundarySurface: see boundary_from_arrangement3.hpp.
 #include <hsx/complex/boundary_from_arrangement3.hpp>
 
-#include "geometry/components.hpp"
+#include "complex/solid_components.hpp"
 
 #include <algorithm>
 #include <array>
@@ -19,30 +19,6 @@ PointQ3 cross(const PointQ3& a, const PointQ3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 int dot_sign(const PointQ3& a, const PointQ3& b) { return sgn(a.x * b.x + a.y * b.y + a.z * b.z); }
-
-/// Components of the cells with solid[c] == want, adjacent across triangles with such cells on both sides; per
-/// cell its component (-1 for the others) and per component whether it holds an outer cell.
-std::vector<int> cell_components(const Arrangement3& arr, const std::vector<char>& solid, char want,
-                                 std::vector<char>& touches_box) {
-  const std::size_t n = arr.cells().size();
-  std::vector<std::pair<int, int>> edges;
-  for (const ArrTriangle3& t : arr.triangles())
-    if (t.front_cell >= 0 && t.back_cell >= 0 && solid[at(t.front_cell)] == want && solid[at(t.back_cell)] == want)
-      edges.emplace_back(t.front_cell, t.back_cell);
-  std::vector<char> wanted(n);
-  for (std::size_t c = 0; c < n; ++c) wanted[c] = solid[c] == want;
-  std::vector<int> component(n, -1);
-  touches_box.clear();
-  for (const std::vector<int>& cells : graph_components(n, edges).members(wanted)) {
-    char outer = 0;
-    for (int c : cells) {
-      component[at(c)] = static_cast<int>(touches_box.size());
-      if (arr.cells()[at(c)].outer) outer = 1;
-    }
-    touches_box.push_back(outer);
-  }
-  return component;
-}
 
 }  // namespace
 
@@ -64,8 +40,8 @@ BoundarySurface boundary_from_arrangement3(const Arranged3& arranged, const std:
 
   // Nesting (as boundary_from_arrangement2).
   std::vector<char> part_touches_box, void_touches_box;
-  const std::vector<int> solid_part = cell_components(arr, solid_cells, 1, part_touches_box);
-  const std::vector<int> void_part = cell_components(arr, solid_cells, 0, void_touches_box);
+  const std::vector<int> solid_part = detail::solid_components(complex, solid_cells, 1, part_touches_box);
+  const std::vector<int> void_part = detail::solid_components(complex, solid_cells, 0, void_touches_box);
   const std::size_t parts = part_touches_box.size(), voids = void_touches_box.size();
   std::vector<std::vector<int>> part_voids(parts), void_parts(voids);
   for (const ArrTriangle3& t : tris) {

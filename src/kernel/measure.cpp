@@ -892,7 +892,10 @@ std::optional<DoubleBounds> Measure::double_bounds() const {
 void DoubleCombination::add(long k, const DoubleBounds& m) {
   if (!(m.lo <= m.hi)) throw std::invalid_argument("DoubleCombination::add: not an interval (lo > hi or NaN)");
   if (k == 0) return;
-  const IntervalNT sum = IntervalNT(sum_.lo, sum_.hi) + to_interval_nt(k) * IntervalNT(m.lo, m.hi);
+  const IntervalNT term(m.lo, m.hi);
+  const IntervalNT sum = k == 1    ? IntervalNT(sum_.lo, sum_.hi) + term
+                         : k == -1 ? IntervalNT(sum_.lo, sum_.hi) - term
+                                   : IntervalNT(sum_.lo, sum_.hi) + to_interval_nt(k) * term;
   sum_ = {sum.inf(), sum.sup()};
 }
 

@@ -134,14 +134,83 @@ bool before(const State& a, const State& b, const CompareOptions& options) {
   return a.cut.labelling < b.cut.labelling;
 }
 
-/// Index of the preferred state in `queue` (linear scan: no ordering axioms are assumed of ties).
-std::size_t best_index(const std::vector<int>& queue, const std::vector<State>& archive,
-                       const CompareOptions& options) {
-  std::size_t best = 0;
-  for (std::size_t k = 1; k < queue.size(); ++k)
-    if (before(archive[queue[k]], archive[queue[best]], options)) best = k;
-  return best;
-}
+/// The open states of a search. pop() returns the state before() prefers to every other open state, without
+/// comparing it with all of them: states are kept ordered by missing samples, then by a certified double lower
+/// bound `lo` of their boundary's measure (the sum of its supports' enclosures, Problem::support_enclosures,
+/// rounded outward), with the upper bound `hi` beside it. The preferred state m has the fewest missing samples,
+/// and |b_m| <= |b_t| <= hi_t for the first state t in that order, so it lies in the window of states with as
+/// many missing samples and lo <= hi_t. pop() scans the window in order, keeping the state before() prefers so
+/// far and widening the window to that state's hi; every state left outside is then proven no better than the
+/// choice (more missing samples, or lo > hi of the choice). When before() is a total order (always, unless two
+/// energies did not separate: Order::Tie) this is the minimum of the whole queue, the state a linear scan finds.
+class Frontier {
+ public:
+  struct Key {
+    long missing = 0;
+    double lo = 0, hi = 0;  ///< certified bounds of the boundary's measure
+    int state = -1;         ///< index into the archive
+    bool operator<(const Key& o) const {
+      if (missing != o.missing) return missing < o.missing;
+      if (lo != o.lo) return lo < o.lo;
+      return state < o.state;
+    }
+  };
+
+  /// `archive` grows while the frontier lives; states are pushed by index.
+  Frontier(const Problem& problem, const std::vector<State>& archive, const CompareOptions& compare)
+      : problem_(problem), archive_(archive), compare_(compare) {}
+
+  bool empty() const { return open_.empty(); }
+  long size() const { return static_cast<long>(open_.size()); }
+
+  void push(int state) {
+    const CutResult& cut = archive_[state].cut;
+    DoubleCombination sum;
+    for (int g : boundary_supports(problem_, cut.labelling)) {
+      const auto& [lo, hi] = problem_.support_enclosures()[g];
+      sum.add(1, DoubleBounds{lo, hi});
+    }
+    open_.insert(Key{cut.energy.missing_samples, sum.bounds().lo, sum.bounds().hi, state});
+  }
+
+  /// Removes and returns the preferred open state (see the class comment); the frontier is not empty.
+  Key pop() {
+    const auto first = open_.begin();
+    auto best = first;
+    double reach = first->hi;
+    for (auto it = std::next(first); it != open_.end() && it->missing == first->missing && it->lo <= reach; ++it)
+      if (before(archive_[it->state], archive_[best->state], compare_)) {
+        best = it;
+        reach = std::max(reach, best->hi);
+      }
+    const Key key = *best;
+    open_.erase(best);
+    return key;
+  }
+
+  /// Calls f(state) for every open state whose energy may equal or tie with `popped`'s (as many missing samples,
+  /// lo <= popped.hi): every other open state is proven more costly.
+  template <class F>
+  void for_each_rival(const Key& popped, F f) const {
+    for (auto it = open_.begin(); it != open_.end() && it->missing == popped.missing && it->lo <= popped.hi; ++it)
+      f(it->state);
+  }
+
+  /// Beam: keeps the `width` preferred open states.
+  void keep_best(int width) {
+    if (size() <= width) return;
+    std::vector<Key> kept;
+    while (static_cast<int>(kept.size()) < width) kept.push_back(pop());
+    open_.clear();
+    open_.insert(kept.begin(), kept.end());
+  }
+
+ private:
+  const Problem& problem_;
+  const std::vector<State>& archive_;
+  const CompareOptions& compare_;
+  std::set<Key> open_;
+};
 
 std::vector<int> merged(const std::vector<int>& a, const std::vector<int>& b) {
   std::vector<int> out;
@@ -167,13 +236,13 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   State root{base_removed, ctx.cut(base_removed, forced), -1};
   if (root.cut.energy.missing_samples < 0) return out;  // the constraints admit no labelling
   out.archive.push_back(std::move(root));
-  std::vector<int> queue{0};
+  Frontier queue(problem, out.archive, cmp);
+  queue.push(0);
   ++ctx.stats().states_created;
   while (!queue.empty()) {
-    if (ctx.out_of_budget(static_cast<long>(queue.size()))) return out;
-    const std::size_t pick = best_index(queue, out.archive, cmp);
-    const int current = queue[pick];
-    queue.erase(queue.begin() + static_cast<std::ptrdiff_t>(pick));
+    if (ctx.out_of_budget(queue.size())) return out;
+    const Frontier::Key picked = queue.pop();
+    const int current = picked.state;
     ++ctx.stats().states_expanded;
     const Labelling labelling = out.archive[current].cut.labelling;
     if (ctx.options().record_states) ctx.expanded.push_back(labelling);
@@ -181,9 +250,10 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
     if (connectivity.sample_connected()) {
       // Optimal only if proven no worse than every state still queued (their descendants cost at least as much).
       if (beam_width <= 0)
-        for (int other : queue)
+        queue.for_each_rival(picked, [&](int other) {
           if (compare(out.archive[other].cut.energy, out.archive[current].cut.energy, cmp) == Order::Tie)
             ctx.unseparated = true;
+        });
       ctx.offer_feasible(out.archive[current].cut);
       out.found = true;
       out.result = current;
@@ -197,19 +267,11 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
       if (cut.energy.missing_samples < 0) continue;
       if (sample_connectivity(problem, cut.labelling).sample_connected()) ctx.offer_feasible(cut);
       out.archive.push_back(State{std::move(removed), std::move(cut), current});
-      queue.push_back(static_cast<int>(out.archive.size()) - 1);
+      queue.push(static_cast<int>(out.archive.size()) - 1);
       ++ctx.stats().states_created;
     }
-    if (beam_width > 0 && static_cast<int>(queue.size()) > beam_width) {
-      std::vector<int> kept;
-      while (static_cast<int>(kept.size()) < beam_width) {
-        const std::size_t k = best_index(queue, out.archive, cmp);
-        kept.push_back(queue[k]);
-        queue.erase(queue.begin() + static_cast<std::ptrdiff_t>(k));
-      }
-      queue = std::move(kept);
-    }
-    ctx.stats().max_queue = std::max(ctx.stats().max_queue, static_cast<long>(queue.size()));
+    if (beam_width > 0) queue.keep_best(beam_width);
+    ctx.stats().max_queue = std::max(ctx.stats().max_queue, queue.size());
   }
   return out;
 }

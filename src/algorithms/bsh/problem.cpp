@@ -36,34 +36,43 @@ const Measure& Energy::measure() const {
 
 namespace {
 
-/// Sign of |a| - |b| for two support lists of one problem: the supports in only one of them, enclosed by the
-/// kernel's certified double combination, then summed exactly when that does not decide. nullopt: not separated.
-std::optional<int> support_difference_sign(const Problem::SupportAtoms& atoms, const std::vector<int>& a,
-                                           const std::vector<int>& b, const CompareOptions& options) {
-  std::vector<std::pair<int, long>> diff;
+/// Calls f(g, +1) for each support g only in `a` and f(g, -1) for each only in `b` (both ascending), in order.
+template <class F>
+void for_each_difference(const std::vector<int>& a, const std::vector<int>& b, F f) {
   std::size_t i = 0, j = 0;
   while (i < a.size() || j < b.size()) {
     if (j == b.size() || (i < a.size() && a[i] < b[j])) {
-      diff.emplace_back(a[i++], 1);
+      f(a[i++], 1);
     } else if (i == a.size() || b[j] < a[i]) {
-      diff.emplace_back(b[j++], -1);
+      f(b[j++], -1);
     } else {
       ++i;
       ++j;
     }
   }
-  if (diff.empty()) return 0;
+}
+
+/// Sign of |a| - |b| for two support lists of one problem: the supports in only one of them, enclosed by the
+/// kernel's certified double combination, then summed exactly when that does not decide. nullopt: not separated.
+/// (No allocation on the common path: best-first and the beam compare energies millions of times.)
+std::optional<int> support_difference_sign(const Problem::SupportAtoms& atoms, const std::vector<int>& a,
+                                           const std::vector<int>& b, const CompareOptions& options) {
   DoubleCombination bounds;
-  for (const auto& [g, k] : diff) bounds.add(k, DoubleBounds{atoms.enclosures[g].first, atoms.enclosures[g].second});
+  bool differ = false;
+  for_each_difference(a, b, [&](int g, long k) {
+    differ = true;
+    bounds.add(k, DoubleBounds{atoms.enclosures[g].first, atoms.enclosures[g].second});
+  });
+  if (!differ) return 0;
   if (const int s = bounds.bounds().certain_sign()) return s;
   Measure d;
-  for (const auto& [g, k] : diff) {
+  for_each_difference(a, b, [&](int g, long k) {
     if (k > 0) {
       d += atoms.measures[g];
     } else {
       d -= atoms.measures[g];
     }
-  }
+  });
   return d.sign(options);
 }
 

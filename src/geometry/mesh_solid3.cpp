@@ -3,6 +3,8 @@
 #include <hsx/geometry/text3.hpp>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -65,27 +67,37 @@ bool face_holds(const Mesh3& mesh, std::size_t f, const PointQ3& p) {
   return true;
 }
 
-PointQ3 centroid(const Arrangement3& arrangement, const ArrTriangle3& t) {
-  const PointQ3& a = arrangement.vertices()[static_cast<std::size_t>(t.vertices[0])];
-  const PointQ3& b = arrangement.vertices()[static_cast<std::size_t>(t.vertices[1])];
-  const PointQ3& c = arrangement.vertices()[static_cast<std::size_t>(t.vertices[2])];
-  return {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3, (a.z + b.z + c.z) / 3};
+/// A plane's exact key, the same for both orientations: (n, n . a) divided by n's first non-zero coordinate.
+using PlaneKey = std::array<Rational, 4>;
+PlaneKey plane_key(const PointQ3& n, const PointQ3& a) {
+  const Rational first = sgn(n.x) != 0 ? n.x : sgn(n.y) != 0 ? n.y : n.z;
+  return {n.x / first, n.y / first, n.z / first, dot3(n, a) / first};
 }
 
 /// Throws naming the lowest mesh face holding a triangle of `with` that carries the mesh (halfspace `m`) alone.
 /// Each such triangle lies inside one mesh face (coplanar input triangles are triangulated with their edges as
 /// constraints), so its centroid, strictly inside it, is strictly inside that face.
 void check_on_halfspaces(const Arrangement3& with, int m, const Mesh3& mesh) {
+  std::map<PlaneKey, std::vector<std::size_t>> faces_by_plane;  // a triangle is looked for in its plane's faces
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+    faces_by_plane[plane_key(mesh.normals[f], mesh.vertices[static_cast<std::size_t>(mesh.faces[f][0])])].push_back(f);
   std::vector<char> off(mesh.faces.size(), 0);
   std::vector<PointQ3> witness(mesh.faces.size());
   std::vector<char> on_box(mesh.faces.size(), 0);
   for (const ArrTriangle3& t : with.triangles()) {
     if (t.halfspaces.size() != 1 || t.halfspaces.front() != m) continue;
-    const PointQ3 c = centroid(with, t);
-    std::size_t f = 0;
-    while (f < mesh.faces.size() && !face_holds(mesh, f, c)) ++f;
-    if (f == mesh.faces.size())
+    const PointQ3& a = with.vertices()[static_cast<std::size_t>(t.vertices[0])];
+    const PointQ3& b = with.vertices()[static_cast<std::size_t>(t.vertices[1])];
+    const PointQ3& d = with.vertices()[static_cast<std::size_t>(t.vertices[2])];
+    const PointQ3 c{(a.x + b.x + d.x) / 3, (a.y + b.y + d.y) / 3, (a.z + b.z + d.z) / 3};
+    const auto plane = faces_by_plane.find(plane_key(triangle_normal(a, b, d), a));
+    const std::vector<std::size_t> none;
+    const std::vector<std::size_t>& candidates = plane == faces_by_plane.end() ? none : plane->second;
+    const auto holder = std::find_if(candidates.begin(), candidates.end(),
+                                     [&](std::size_t f) { return face_holds(mesh, f, c); });
+    if (holder == candidates.end())
       throw std::logic_error("cells_inside_mesh: a triangle of the mesh lies in none of its faces");
+    const std::size_t f = *holder;
     if (!off[f]) witness[f] = c;
     off[f] = 1;
     on_box[f] = static_cast<char>(on_box[f] || t.on_box);

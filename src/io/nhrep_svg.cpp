@@ -372,9 +372,12 @@ std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + n(width) + "\" height=\"" + n(height) +
        "\" viewBox=\"0 0 " + n(width) + " " + n(height) + "\" font-family=\"Helvetica, Arial, sans-serif\">\n";
   s += "<rect x=\"0\" y=\"0\" width=\"" + n(width) + "\" height=\"" + n(height) + "\" fill=\"#ffffff\"/>\n";
-  if (!title.empty())
-    s += "<text class=\"title\" x=\"" + n(width / 2) + "\" y=\"18\" text-anchor=\"middle\" font-size=\"15\">" +
-         svg_escape(title) + "</text>\n";
+  if (!title.empty()) {
+    // A long tree's title is set smaller to fit the width (down to 8 px; beyond that it runs over).
+    const double fits = 15 * (width - 2 * margin) / std::max(1.0, svg_text_width(title, 15));
+    s += "<text class=\"title\" x=\"" + n(width / 2) + "\" y=\"18\" text-anchor=\"middle\" font-size=\"" +
+         n(std::clamp(fits, 8.0, 15.0)) + "\">" + svg_escape(title) + "</text>\n";
+  }
   for (std::size_t v = 0; v < views.size(); ++v) {
     const View& w = views[v];
     const double left = (v % 2) * cell, top = title_height + (v / 2) * cell;

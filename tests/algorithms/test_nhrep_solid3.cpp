@@ -126,6 +126,13 @@ TEST_CASE("3D NH-Rep: an L of two boxes has concave edges and a min node; correc
     ++swatches;
   CHECK(swatches == groups.size());
   CHECK(swatches >= 2);
+  // A title too long for the width is set smaller (15 px otherwise).
+  CHECK(svg.find("class=\"title\" x=\"500.0000\" y=\"18\" text-anchor=\"middle\" font-size=\"15.0000\"") !=
+        std::string::npos);
+  const std::string long_title = nhrep_svg3(s, a, solid, t.built.graph.surface, t.built.graph.piece_patch,
+                                            t.leaf_node, std::string(200, 'x'));
+  CHECK(long_title.find("font-size=\"15.0000\">xxx") == std::string::npos);
+  CHECK(long_title.find("\">" + std::string(200, 'x') + "</text>") != std::string::npos);
 }
 
 TEST_CASE("boundary_from_arrangement3: two boxes touching along an edge give two links there", "[nhrep][solid3]") {

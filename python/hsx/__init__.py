@@ -170,15 +170,20 @@ def check(scene_or_complex, *, max_labellings: int = 200000, time_limit: float =
     return _hsx._check(cx, max_labellings, time_limit, max_states, max_graph_cuts, precision, cancel)
 
 
-def solid(scene_or_complex, csg: Optional[str] = None, shape=None):
+def solid(scene_or_complex, csg: Optional[str] = None, shape=None, *, mesh=None):
     """A solid of the complex's cells as a numpy bool array, from exactly one of: ``csg``, a CSG expression over
-    the halfspace names ("(A | B) & ~C", io/csg_text.hpp), and ``shape``: an hsx.Result, an hsx-result/1 document
-    (dict, JSON text or file path; its complex_id must match) or a per-cell sequence of bools."""
+    the halfspace names ("(A | B) & ~C", io/csg_text.hpp), ``shape``: an hsx.Result, an hsx-result/1 document
+    (dict, JSON text or file path; its complex_id must match) or a per-cell sequence of bools, and (3D scenes)
+    ``mesh``: the path of a closed triangle mesh (.obj, .off, .ply) whose faces lie on the scene's halfspaces, the
+    solid being the cells inside it (`--mesh`, docs/csg3.md; a face off the halfspaces raises InputError naming
+    it)."""
     cx = arrange(scene_or_complex)
-    if (csg is None) == (shape is None):
-        raise InputError("give exactly one of csg= and shape=")
+    if (csg is not None) + (shape is not None) + (mesh is not None) != 1:
+        raise InputError("give exactly one of csg=, shape= and mesh=")
     if csg is not None:
         return _hsx._solid_from_csg(cx, csg)
+    if mesh is not None:
+        return _hsx._solid_from_mesh(cx, os.fspath(mesh))
     if isinstance(shape, Result):
         if shape.complex.identity != cx.identity:
             raise InputError("shape: the result was computed from another input (its complex_id differs)")
@@ -197,42 +202,45 @@ def solid(scene_or_complex, csg: Optional[str] = None, shape=None):
     return _hsx._flags(cx, shape)
 
 
-def describe(scene_or_complex, csg: Optional[str] = None, shape=None) -> Describability:
+def describe(scene_or_complex, csg: Optional[str] = None, shape=None, *, mesh=None) -> Describability:
     """Shapiro-Vossler describability of a solid (see solid()) by the halfspaces, with the mixed terms."""
     cx = arrange(scene_or_complex)
-    return _hsx._describe(cx, solid(cx, csg=csg, shape=shape))
+    return _hsx._describe(cx, solid(cx, csg=csg, shape=shape, mesh=mesh))
 
 
-def csg(scene_or_complex, csg: Optional[str] = None, shape=None, *, separators: bool = False,
+def csg(scene_or_complex, csg: Optional[str] = None, shape=None, *, mesh=None, separators: bool = False,
         max_separators: int = 8) -> CsgTree:
     """Buchele-Crawford's BHC tree of a solid (see solid()), verified on every cell (`hsx csg`); with
     ``separators``, separating half-planes are added first when the solid is not describable."""
     cx = arrange(scene_or_complex)
-    return _hsx._csg(cx, solid(cx, csg=csg, shape=shape), separators, max_separators)
+    return _hsx._csg(cx, solid(cx, csg=csg, shape=shape, mesh=mesh), separators, max_separators)
 
 
-def samples(scene_or_complex, target=None, csg: Optional[str] = None, *, search: str = "beam", beam_width: int = 1,
-            exhaustive_patches: int = 14) -> Samples:
+def samples(scene_or_complex, target=None, csg: Optional[str] = None, *, mesh=None, search: str = "beam",
+            beam_width: int = 1, exhaustive_patches: int = 14) -> Samples:
     """GENERATE-SAMPLES (BSH Fig. 12): samples that make extraction give back ``target`` (a solid as in solid()'s
-    shape=) or the solid of ``csg``; with the lower and upper bounds and the exhaustive minimum."""
+    shape=), the solid of ``csg`` or (3D) the cells inside ``mesh``; with the lower and upper bounds and the
+    exhaustive minimum."""
     cx = arrange(scene_or_complex)
-    cells = solid(cx, csg=csg, shape=target)
+    cells = solid(cx, csg=csg, shape=target, mesh=mesh)
     return _hsx._samples(cx, cells, search, beam_width, exhaustive_patches)
 
 
-def convert(scene_or_complex=None, csg: Optional[str] = None, shape=None, *, csgnet: Optional[str] = None,
+def convert(scene_or_complex=None, csg: Optional[str] = None, shape=None, *, mesh=None, csgnet: Optional[str] = None,
             search: str = "beam") -> Conversion:
-    """A CSG solid as a BSH scene (`hsx convert`, BSH Section 6): the solid (see solid()) of a scene, or a CSGNet
-    program (``csgnet="c(32,32,16)s(32,40,12)-"``, which defines both). ``search``: "beam" or "best-first", for
-    GENERATE-SAMPLES and the round trip. ``Conversion.scene_json()`` is the scene; ``ok`` says it extracts back."""
+    """A CSG solid as a BSH scene (`hsx convert`, BSH Section 6): the solid (see solid()) of a 2D or 3D scene, or a
+    CSGNet program (``csgnet="c(32,32,16)s(32,40,12)-"``, which defines both). ``search``: "beam" or "best-first",
+    for GENERATE-SAMPLES and the round trip. ``Conversion.scene_json()`` is the scene; ``ok`` says it extracts
+    back; in 3D, ``inside_cells``, ``cells``, ``patches`` and ``volume`` are those of the oriented scene's complex
+    the samples are on (`hsx convert --json`'s)."""
     if csgnet is not None:
-        if scene_or_complex is not None or csg is not None or shape is not None:
+        if scene_or_complex is not None or csg is not None or shape is not None or mesh is not None:
             raise InputError("csgnet: give the program alone (it defines the scene and the solid)")
         return _hsx._convert_csgnet(csgnet, search)
     if scene_or_complex is None:
-        raise InputError("give a scene with csg= or shape=, or csgnet=")
+        raise InputError("give a scene with csg=, shape= or mesh=, or csgnet=")
     cx = arrange(scene_or_complex)
-    return _hsx._convert(cx, solid(cx, csg=csg, shape=shape), search)
+    return _hsx._convert(cx, solid(cx, csg=csg, shape=shape, mesh=mesh), search)
 
 
 def nhtree(scene_or_complex, csg: Optional[str] = None, shape=None, *, nest_holes: bool = False) -> NhTree:

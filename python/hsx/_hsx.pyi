@@ -209,13 +209,19 @@ class Samples:
 
 class Conversion:
     ok: bool
+    dimension: int
     round_trip: bool
     failure: str
     flipped: List[str]
     samples: int
+    sample_patches: List[int]
     lower_bound: int
     upper_bound: int
     rounds: int
+    cells: Optional[int]
+    patches: Optional[int]
+    inside_cells: Optional[List[int]]
+    volume: Optional[Measure]
     def scene_json(self) -> str: ...
     def __bool__(self) -> bool: ...
 

@@ -3,6 +3,7 @@
 // arguments, runs the library's call with the GIL released and wraps the result.
 #include "bindings.hpp"
 
+#include <hsx/algorithms/bsh/problem.hpp>
 #include <hsx/algorithms/csg/convert.hpp>
 #include <hsx/algorithms/csg/solid_tree.hpp>
 #include <hsx/io/csg_text.hpp>
@@ -10,6 +11,7 @@
 #include <hsx/io/exact_json.hpp>
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/scene_json.hpp>
+#include <hsx/io/solid.hpp>
 #include <hsx/io/svg.hpp>
 
 namespace hsxpy {
@@ -67,6 +69,17 @@ void bind_csg(py::module_& m) {
           return bool_array(hsx::solid_from_csg(h.complex(), expression));
         },
         py::arg("complex"), py::arg("expression"));
+  m.def("_solid_from_mesh",
+        [](const ComplexHandle& h, const std::string& path) {
+          hsx::SolidSource source{"", "", path, "shape=", "csg=", "mesh="};
+          std::vector<char> cells;
+          {
+            py::gil_scoped_release release;
+            cells = hsx::load_solid(*h.input, source).cells;
+          }
+          return bool_array(cells);
+        },
+        py::arg("complex"), py::arg("path"));
   m.def("_result_labelling",
         [](const ComplexHandle& h, const std::string& json_text) {
           return bool_array(hsx::read_result_labelling(hsx::parse_exact_json(json_text), h.complex()));
@@ -163,35 +176,82 @@ bsh::Method search_named(const std::string& search) {
   return m;
 }
 
+/// A conversion as Python sees it, 2D or 3D: `hsx convert`'s summary (its --json) and the scene it writes.
+struct Conversion {
+  int dimension = 2;
+  bsh::SampleGenResult samples;
+  std::vector<std::string> flipped;
+  bool round_trip = false;
+  std::string failure;
+  std::string scene_json;  ///< what `hsx convert --out` writes
+  // 3D: the complex the samples are on (the oriented scene's) and the solid on it
+  std::size_t cells = 0, patches = 0;
+  std::vector<int> inside_cells;
+  std::optional<hsx::Measure> volume;
+  bool ok() const { return samples.reproduced && round_trip; }
+};
+
+Conversion conversion_of(const csg::ConversionReport& r) {
+  return Conversion{2, r.samples, r.flipped, r.round_trip, r.failure, hsx::write_scene2(r.scene).dump(2) + "\n",
+                    0, 0, {}, std::nullopt};
+}
+
+Conversion conversion_of(const csg::ConversionReport3& r) {
+  Conversion c{3, r.samples, r.flipped, r.round_trip, r.failure, hsx::write_scene3(r.scene).dump(2) + "\n",
+               r.oriented.complex.cells.size(), r.oriented.complex.patches.size(), {},
+               bsh::inside_measure(r.oriented.complex, r.oriented_solid)};
+  for (std::size_t k = 0; k < r.oriented_solid.size(); ++k)
+    if (r.oriented_solid[k]) c.inside_cells.push_back(static_cast<int>(k));
+  return c;
+}
+
 void bind_convert(py::module_& m) {
-  py::class_<csg::ConversionReport>(m, "Conversion",
-                                    "A CSG solid as a BSH scene (`hsx convert`): samples from GENERATE-SAMPLES, "
-                                    "checked by extracting the scene back")
-      .def_property_readonly("ok", &csg::ConversionReport::ok, "The samples reproduce the solid and the round trip "
-                                                               "gives it back")
-      .def_readonly("round_trip", &csg::ConversionReport::round_trip)
-      .def_readonly("failure", &csg::ConversionReport::failure)
-      .def_readonly("flipped", &csg::ConversionReport::flipped,
+  py::class_<Conversion>(m, "Conversion",
+                         "A CSG solid as a BSH scene (`hsx convert`, 2D or 3D): samples from GENERATE-SAMPLES, "
+                         "checked by extracting the scene back")
+      .def_property_readonly("ok", &Conversion::ok, "The samples reproduce the solid and the round trip gives it "
+                                                    "back")
+      .def_readonly("dimension", &Conversion::dimension, "2 or 3")
+      .def_readonly("round_trip", &Conversion::round_trip)
+      .def_readonly("failure", &Conversion::failure)
+      .def_readonly("flipped", &Conversion::flipped,
                     "Halfspaces complemented (or copied complemented) for the orientation rule")
-      .def_property_readonly("samples", [](const csg::ConversionReport& r) { return r.samples.sample_patches.size(); })
-      .def_property_readonly("lower_bound", [](const csg::ConversionReport& r) { return r.samples.initial; })
-      .def_property_readonly("upper_bound", [](const csg::ConversionReport& r) { return r.samples.upper_bound; })
-      .def_property_readonly("rounds", [](const csg::ConversionReport& r) { return r.samples.rounds; })
-      .def("scene_json", [](const csg::ConversionReport& r) { return hsx::write_scene2(r.scene).dump(2) + "\n"; },
+      .def_property_readonly("samples", [](const Conversion& r) { return r.samples.sample_patches.size(); })
+      .def_property_readonly("sample_patches", [](const Conversion& r) { return r.samples.sample_patches; },
+                             "The patches sampled (3D: ids on the oriented scene's complex)")
+      .def_property_readonly("lower_bound", [](const Conversion& r) { return r.samples.initial; })
+      .def_property_readonly("upper_bound", [](const Conversion& r) { return r.samples.upper_bound; })
+      .def_property_readonly("rounds", [](const Conversion& r) { return r.samples.rounds; })
+      .def_property_readonly(
+          "cells", [](const Conversion& r) { return r.dimension == 3 ? py::cast(r.cells) : py::none(); },
+          "3D: cells of the complex the samples are on (the oriented scene's); None in 2D")
+      .def_property_readonly(
+          "patches", [](const Conversion& r) { return r.dimension == 3 ? py::cast(r.patches) : py::none(); },
+          "3D: patches of that complex; None in 2D")
+      .def_property_readonly(
+          "inside_cells",
+          [](const Conversion& r) { return r.dimension == 3 ? py::cast(r.inside_cells) : py::none(); },
+          "3D: the solid's cells on that complex, ascending; None in 2D")
+      .def_property_readonly(
+          "volume", [](const Conversion& r) { return r.volume ? py::cast(*r.volume) : py::none(); },
+          "3D: the solid's exact volume (a Measure); None in 2D")
+      .def("scene_json", [](const Conversion& r) { return r.scene_json; },
            "The BSH scene as hsx-scene/1 JSON text (what `hsx convert --out` writes)")
-      .def("__bool__", &csg::ConversionReport::ok);
+      .def("__bool__", &Conversion::ok);
   m.def("_convert", [](const ComplexHandle& h, py::handle solid, const std::string& search) {
-    if (!h.input->scene) throw hsx::InputError("convert needs a scene, not a complex");
+    const hsx::LoadedInput& in = *h.input;
+    if (!in.scene && !in.scene3) throw hsx::InputError("convert needs a scene, not a complex");
     const std::vector<char> cells = flags_from(solid, h.complex().cells.size(), "solid");
     const bsh::Method method = search_named(search);
     py::gil_scoped_release release;
-    return csg::convert_to_bsh(*h.input->scene, *h.input->arranged, cells, method);
+    if (in.scene3) return conversion_of(csg::convert_to_bsh(*in.scene3, *in.arranged3, cells, method));
+    return conversion_of(csg::convert_to_bsh(*in.scene, *in.arranged, cells, method));
   });
   m.def("_convert_csgnet", [](const std::string& program, const std::string& search) {
     const bsh::Method method = search_named(search);
     py::gil_scoped_release release;
     const hsx::CsgnetProgram p = hsx::read_csgnet(program, "csgnet");
-    return csg::convert_to_bsh(p.scene, *p.expression, method);
+    return conversion_of(csg::convert_to_bsh(p.scene, *p.expression, method));
   });
 }
 

@@ -210,6 +210,7 @@ def test_error_messages_match_the_cli(hsx_program, tmp_path):
 def test_convert(lens):
     conv = hsx.convert(lens, csg="(A | B) & C")
     assert conv.ok and bool(conv) and conv.round_trip and conv.lower_bound <= conv.samples <= conv.upper_bound
+    assert conv.dimension == 2 and conv.inside_cells is None and conv.volume is None
     back = hsx.extract(conv.scene_json(), method="beam")
     cells = hsx.solid(lens, csg="(A | B) & C")
     area = sum((lens.cells[k].measure for k in range(len(cells)) if cells[k]), hsx.Measure())

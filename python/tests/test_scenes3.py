@@ -409,3 +409,40 @@ def test_3d_picture_views(source_dir, scenes_dir):
         c.svg(views=[])
     with pytest.raises(hsx.InputError, match="only 3D pictures have views"):
         hsx.load(str(scenes_dir / "lens.json")).svg(views=["top"])
+
+
+def test_convert_3d_matches_the_cli(source_dir, hsx_program, tmp_path):
+    """hsx.convert on a 3D scene is `hsx convert SCENE3 --csg EXPR`: the same scene written, the same summary; a
+    solid given as a mesh on the halfspaces (mesh=) is converted alike."""
+    path = source_dir / "data" / "scenes3d" / "mesh_solids.json"
+    conv = hsx.convert(str(path), csg="A | B")
+    assert conv.ok and bool(conv) and conv.dimension == 3 and conv.round_trip
+    assert conv.lower_bound <= conv.samples <= conv.upper_bound and len(conv.sample_patches) == conv.samples
+    out, summary = tmp_path / "bsh.json", tmp_path / "summary.json"
+    subprocess.run([hsx_program, "convert", str(path), "--csg", "A | B", "--out", str(out), "--json", str(summary)],
+                   capture_output=True, text=True, check=True)
+    assert conv.scene_json() == out.read_text()
+    doc = json.loads(summary.read_text())
+    assert (conv.samples, conv.sample_patches, conv.inside_cells, conv.cells, conv.patches) == (
+        doc["samples"], doc["sample_patches"], doc["inside_cells"], doc["cells"], doc["patches"])
+    assert conv.volume.exact == doc["volume"]["exact"] == "3"
+    assert conv.flipped == doc["complemented"]
+    # The written scene extracts back to a solid of the same volume.
+    back = hsx.extract(conv.scene_json(), method="beam")
+    assert back.sample_connected and back.volume.compare(hsx.Measure(3)) == hsx.Order.Equal
+    by_mesh = hsx.convert(str(path), mesh=source_dir / "data" / "meshes" / "lprism.obj")
+    assert by_mesh.scene_json() == conv.scene_json() and by_mesh.inside_cells == conv.inside_cells
+    # A difference runs along B reversed: B is complemented (or copied complemented) in the BSH scene.
+    diff = hsx.convert(str(path), csg="A & ~B")
+    assert diff.ok and diff.flipped
+    with pytest.raises(hsx.InputError, match="face 10 does not lie on the scene's halfspaces"):
+        hsx.convert(str(path), mesh=source_dir / "data" / "scenes3d" / "mesh_solid_cut.obj")
+    with pytest.raises(hsx.InputError, match="exactly one"):
+        hsx.solid(str(path), csg="A", mesh=source_dir / "data" / "meshes" / "cube.obj")
+    assert list(hsx.solid(str(path), mesh=source_dir / "data" / "meshes" / "cube.obj")) == list(
+        hsx.solid(str(path), csg="A & B"))
+
+
+def test_mesh_solid_needs_a_3d_scene(scenes_dir, source_dir):
+    with pytest.raises(hsx.InputError, match="mesh=: a solid given as a mesh needs a 3D scene"):
+        hsx.solid(str(next(scenes_dir.glob("*.json"))), mesh=source_dir / "data" / "meshes" / "cube.obj")

@@ -37,6 +37,8 @@ void add_solid_options(CLI::App* cmd, SolidSource& source) {
   cmd->add_option("--shape", source.shape_path, "the solid as an hsx-result/1 file computed from SCENE");
   cmd->add_option("--csg", source.csg, "the solid as a CSG expression over SCENE's halfspaces, e.g. \"(A & B) | ~C\", "
                                        "or a JSON file holding one");
+  cmd->add_option("--mesh", source.mesh_path, "3D: the solid as the cells inside a closed mesh (.obj, .off, .ply) "
+                                              "whose faces lie on SCENE's halfspaces");
 }
 
 nlohmann::json cell_point(const Complex& c, int k) {
@@ -110,7 +112,7 @@ int run_describe(const DescribeOptions& o) {
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
   const LoadedInput in = load_input(o.input, o.limits);
-  const Solid solid = load_solid(in, o.solid);
+  const Solid solid = load_solid(in, o.solid, o.limits);
   const csg::Describability d = csg::describability(in.complex(), solid.cells);
   std::string svg_text;
   if (!o.svg_path.empty()) svg_text = svg_of_solid(in, solid.cells, o.input + " - describability", &d, o.labels);
@@ -284,7 +286,7 @@ int run_csg(const CsgOptions& o) {
     throw InputError(in.scene3 ? "--circle-segments: 2D only (a 3D OpenSCAD program uses the scene's own "
                                  "tessellation)"
                                : "--circle-segments: only with --openscad");
-  const Solid solid = load_solid(in, o.solid);
+  const Solid solid = load_solid(in, o.solid, o.limits);
   const csg::SolidTreeOptions tree_options{o.separators, o.max_separators};
   const csg::SolidTree t = in.scene    ? csg::build_tree(*in.scene, *in.arranged, solid.cells, tree_options)
                            : in.scene3 ? csg::build_tree(*in.scene3, *in.arranged3, solid.cells, tree_options, o.limits)
@@ -380,15 +382,15 @@ int run_convert(const ConvertOptions& o) {
   csg::ConversionReport report;
   std::optional<csg::ConversionReport3> report3;
   if (!o.csgnet.empty()) {
-    if (!o.input.empty() || !o.solid.csg.empty() || !o.solid.shape_path.empty())
+    if (!o.input.empty() || !o.solid.csg.empty() || !o.solid.shape_path.empty() || !o.solid.mesh_path.empty())
       throw InputError("--csgnet: give the program alone (it defines the scene and the solid)");
     const CsgnetProgram program = read_csgnet(o.csgnet, "--csgnet");
     report = csg::convert_to_bsh(program.scene, *program.expression, *search);
   } else {
-    if (o.input.empty()) throw InputError("give a SCENE with --csg/--shape, or --csgnet PROGRAM");
+    if (o.input.empty()) throw InputError("give a SCENE with --csg/--shape/--mesh, or --csgnet PROGRAM");
     const LoadedInput in = load_input(o.input, o.limits);
     if (!in.scene && !in.scene3) throw InputError(o.input + ": convert needs a scene, not a complex");
-    const std::vector<char> cells = load_solid(in, o.solid).cells;
+    const std::vector<char> cells = load_solid(in, o.solid, o.limits).cells;
     if (in.scene3)
       report3 = csg::convert_to_bsh(*in.scene3, *in.arranged3, cells, *search, o.limits);
     else
@@ -436,8 +438,8 @@ int run_convert(const ConvertOptions& o) {
 // ---------------------------------------------------------------------------------------------------------------
 struct SamplesOptions {
   ArrangementLimits limits;  ///< --max-cells, --max-side-table
-  std::string input, target, out_path, json_path, search = "beam";
-  std::string csg;
+  std::string input, out_path, json_path, search = "beam";
+  SolidSource solid{"", "", "", "--target", "--csg", "--mesh"};
   int exhaustive_patches = 14;
 };
 
@@ -448,7 +450,7 @@ int run_samples(const SamplesOptions& o) {
   out.expect(o.json_path, "--json");
   out.expect(o.out_path, "--out");
   const LoadedInput in = load_input(o.input, o.limits);
-  const Solid solid = load_solid(in, SolidSource{o.target, o.csg, "--target", "--csg"});
+  const Solid solid = load_solid(in, o.solid, o.limits);
   const bsh::Problem problem(in.complex());
   std::string why;
   if (!bsh::is_orientation_preserving(problem, solid.cells, &why))
@@ -664,8 +666,10 @@ void add_csg_commands(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("samples", "GENERATE-SAMPLES (BSH Fig. 12): samples that reproduce a target "
                                                   "shape; counts against the lower and upper bounds");
     cmd->add_option("SCENE", o->input, "hsx-scene/1 file (2D or 3D) or the BSH authors' config.json")->required();
-    cmd->add_option("--target", o->target, "the target shape as an hsx-result/1 file");
-    cmd->add_option("--csg", o->csg, "or the target as a CSG expression");
+    cmd->add_option("--target", o->solid.shape_path, "the target shape as an hsx-result/1 file");
+    cmd->add_option("--csg", o->solid.csg, "or the target as a CSG expression");
+    cmd->add_option("--mesh", o->solid.mesh_path, "or (3D) the target as the cells inside a closed mesh (.obj, .off, "
+                                                  ".ply) whose faces lie on the scene's halfspaces");
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
     cmd->add_option("--exhaustive-patches", o->exhaustive_patches,
                     "compute the true minimum when the boundary has at most this many patches (default 14)")

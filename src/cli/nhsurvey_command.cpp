@@ -18,7 +18,7 @@
 // - `--dimension 3 --random N --seed S`: solid i is csg::random_solid3 (random_solid3.hpp; even i a random CSG
 //   expression over 2 to `--max-primitives` boxes, spheres, cylinders and planes, odd i hollow; `--random-mode
 //   csg|hollow|mixed`, `--segments`), surveyed by nhrep::survey_solid3 on its own arrangement (a domain chosen by
-//   hsx holds every vertex). Scenes, CSGNet and --keep are 2D only.
+//   hsx holds every vertex; --keep writes that domain out). Scenes and CSGNet are 2D only.
 // - `--csgnet FILE [--from K] [--limit N]`: CSGNet programs, as `hsx corpus csgnet` reads them (malformed lines are
 //   skipped and counted; a missing file is reported as skipped).
 //
@@ -115,7 +115,7 @@ class Survey {
   /// Runs one 3D solid.
   void add3(SurveyTally& tally, const nhrep::SurveySolid3& c) {
     const nhrep::SurveyOutcome o = nhrep::survey_solid3(c, build_);
-    tally.add(c.name + " (" + c.origin + ")", c.arranged.complex.cells.size(), o);
+    const bool example = tally.add(c.name + " (" + c.origin + ")", c.arranged.complex.cells.size(), o);
     if (o.status != csg::SolidStatus::Bounded) return;
     if (!o.problems.empty()) {
       ++failures_;
@@ -129,6 +129,7 @@ class Survey {
                 << o.whole.eval.wrong_inside.size() + o.whole.eval.wrong_outside.size() << " of "
                 << c.arranged.complex.cells.size() << " cells wrong; " << csg::to_text(*c.expression, c.arranged.complex.halfspace_names)
                 << "\n";
+    if (example && !opt_.keep_dir.empty()) write_survey_example(opt_.keep_dir, c, o);
   }
 
   long failures() const { return failures_; }
@@ -184,6 +185,30 @@ nhrep::SurveySolid3 random_case3(const SurveyOptions& o, long index, bool hollow
   return c;
 }
 
+/// --keep DIR: an existing folder, or a new one whose parent exists (a mistyped path must not create a chain of
+/// folders).
+void check_keep_directory(const std::string& dir) {
+  if (dir.empty()) return;
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path path(dir);
+  if (fs::exists(path, ec)) {
+    if (!fs::is_directory(path, ec)) throw InputError("--keep: " + dir + " exists and is not a folder");
+    return;
+  }
+  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  if (!fs::is_directory(parent, ec))
+    throw InputError("--keep: the folder " + parent.string() + " (where " + dir + " would be made) does not exist");
+}
+
+/// With --keep DIR: how many examples were written there.
+void print_kept(const std::vector<SurveyTally>& tallies, const std::string& keep_dir) {
+  if (keep_dir.empty()) return;
+  long kept = 0;
+  for (const SurveyTally& t : tallies) kept += static_cast<long>(t.examples.size());
+  std::cout << "kept " << kept << " example(s) in " << keep_dir << "\n";
+}
+
 /// --dimension 3: random 3D CSG solids only.
 int run_survey3(const SurveyOptions& o) {
   if (o.random_mode != "mixed" && o.random_mode != "csg" && o.random_mode != "hollow")
@@ -191,7 +216,8 @@ int run_survey3(const SurveyOptions& o) {
   if (!o.scenes.empty() || !o.csgnet.empty())
     throw InputError("--dimension 3 surveys random solids only (--random N); scenes and --csgnet are 2D");
   if (o.random <= 0) throw InputError("--dimension 3: give --random N");
-  if (!o.keep_dir.empty()) throw InputError("--keep writes 2D examples; with --dimension 3 use -v");
+  if (o.keep_count < 0) throw InputError("--keep-count: must be >= 0");
+  check_keep_directory(o.keep_dir);
   if (o.segments < 6 || o.segments > 64) throw InputError("--segments: 6 to 64");
   if (o.max_primitives < 1) throw InputError("--max-primitives: at least 1");
   Survey survey(o);
@@ -215,6 +241,7 @@ int run_survey3(const SurveyOptions& o) {
             << std::min(2, o.max_primitives) << "-" << o.max_primitives << " primitives, " << o.segments << " segments; " << redraws
             << " empty or unbounded draws redrawn)" << (o.nest_holes ? "; cavities nested" : "") << "\n";
   print_table(tallies, o.timings);
+  print_kept(tallies, o.keep_dir);
   if (o.timings)
     std::cout << "rate: " << std::fixed << std::setprecision(2)
               << static_cast<double>(o.random) / std::max(1e-9, csg_seconds + hollow_seconds) << " solids/s\n";
@@ -310,22 +337,6 @@ void print_table(const std::vector<SurveyTally>& tallies, bool timings) {
     for (const std::string& e : t.examples) out << "  describable but fails: " << e << "\n";
   }
   std::cout << out.str();
-}
-
-/// --keep DIR: an existing folder, or a new one whose parent exists (a mistyped path must not create a chain of
-/// folders).
-void check_keep_directory(const std::string& dir) {
-  if (dir.empty()) return;
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::path path(dir);
-  if (fs::exists(path, ec)) {
-    if (!fs::is_directory(path, ec)) throw InputError("--keep: " + dir + " exists and is not a folder");
-    return;
-  }
-  const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
-  if (!fs::is_directory(parent, ec))
-    throw InputError("--keep: the folder " + parent.string() + " (where " + dir + " would be made) does not exist");
 }
 
 int run_survey(const SurveyOptions& o) {
@@ -458,11 +469,7 @@ int run_survey(const SurveyOptions& o) {
   }
 
   print_table(tallies, o.timings);
-  if (!o.keep_dir.empty()) {
-    long kept = 0;
-    for (const SurveyTally& t : tallies) kept += static_cast<long>(t.examples.size());
-    std::cout << "kept " << kept << " example(s) in " << o.keep_dir << "\n";
-  }
+  print_kept(tallies, o.keep_dir);
   if (survey.failures() > 0) {
     std::cout << "STRUCTURAL CHECKS FAILED on " << survey.failures() << " solid(s)\n";
     return kCheckFailed;

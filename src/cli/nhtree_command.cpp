@@ -233,8 +233,9 @@ NhrepReference read_references(const NhtreeOptions& o) {
 int run_mesh(const NhtreeOptions& o, OutputFiles& files) {
   if (o.fea_path.empty()) throw InputError("nhtree: a mesh needs its feature edges: --fea FILE");
   if (!o.svg_path.empty()) throw InputError("nhtree: --svg draws solids on scenes only (a mesh: use --graph-dot)");
-  if (!o.solid.csg.empty() || !o.solid.shape_path.empty())
-    throw InputError(std::string("nhtree: ") + (o.solid.csg.empty() ? "--shape" : "--csg") +
+  if (!o.solid.csg.empty() || !o.solid.shape_path.empty() || !o.solid.mesh_path.empty())
+    throw InputError(std::string("nhtree: ") +
+                     (!o.solid.csg.empty() ? "--csg" : !o.solid.shape_path.empty() ? "--shape" : "--mesh") +
                      " gives a solid on a scene; a mesh (.obj) is its own solid");
   const std::string sharp_text = !o.sharp_angle.empty() ? o.sharp_angle : o.nhrep_tool ? "20" : "0";
   std::string why;
@@ -303,7 +304,7 @@ void print_evaluation(const nhrep::CellEvaluation& pe, int dimension, std::ostre
 /// A 3D scene with a solid on it (--csg or --shape): the boundary from the arrangement, Algorithm 1, and the exact
 /// evaluation on the whole space.
 int run_solid3(const NhtreeOptions& o, const LoadedInput& in, OutputFiles& files) {
-  const Solid solid = load_solid(in, o.solid);
+  const Solid solid = load_solid(in, o.solid, o.limits);
   const Arranged3& arranged = *in.arranged3;
   const nhrep::SolidTree3 t = run_algorithm1(
       o, [&] { return nhrep::build_solid_tree3(arranged, solid.cells, build_options(o), curve_rule(o)); });
@@ -334,7 +335,7 @@ int run_planar(const NhtreeOptions& o, OutputFiles& files) {
   if (in.arranged3) return run_solid3(o, in, files);
   if (!in.arranged)
     throw InputError(o.input + ": nhtree needs a scene, not a complex: corner angles need the geometry");
-  const Solid solid = load_solid(in, o.solid);
+  const Solid solid = load_solid(in, o.solid, o.limits);
   const Arranged2& arranged = *in.arranged;
   const nhrep::PlanarTree t = run_algorithm1(
       o, [&] { return nhrep::build_planar_tree(arranged, solid.cells, build_options(o), curve_rule(o)); });
@@ -372,7 +373,7 @@ void add_nhtree_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "nhtree", "NH-Rep's Boolean tree (Algorithm 1 with patch decomposition) of a 2D or 3D solid on a scene or a 3D "
                 "mesh, its patch graph with exact feature types, and its cross-checks");
-  cmd->add_option("INPUT", o->input, "a mesh (.obj, with --fea) or an hsx-scene/1 file of dimension 2 or 3 (with --shape or --csg)")->required();
+  cmd->add_option("INPUT", o->input, "a mesh (.obj, with --fea) or an hsx-scene/1 file of dimension 2 or 3 (with --shape, --csg or --mesh)")->required();
   cmd->add_option("--fea", o->fea_path, "mesh: feature edges (first line the count, then 0-based vertex pairs)");
   cmd->add_option("--sharp-angle", o->sharp_angle,
                   "mesh: feature edges bending less than this many degrees count as smooth (exact; default 0: only "
@@ -385,6 +386,8 @@ void add_nhtree_command(CLI::App& app) {
                "uniting every boundary component as Section 5.2 does");
   cmd->add_option("--shape", o->solid.shape_path, "scene: the solid as an hsx-result/1 file computed from INPUT");
   cmd->add_option("--csg", o->solid.csg, "scene: the solid as a CSG expression over INPUT's halfspaces");
+  cmd->add_option("--mesh", o->solid.mesh_path, "3D scene: the solid as the cells inside a closed mesh (.obj, .off, "
+                                                ".ply) whose faces lie on INPUT's halfspaces");
   cmd->add_option("--json", o->json_path, "write the tree, patch graph, decompositions and steps (hsx-nhtree/1)")
       ->check(output_path());
   cmd->add_option("--conf", o->conf_path,

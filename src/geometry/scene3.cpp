@@ -9,6 +9,7 @@
 //   exact squared distance found so far (rounded up), so the answer is the exact minimum. Equal distances keep the
 //   point of the lowest-numbered triangle.
 #include <hsx/geometry/scene3.hpp>
+#include <hsx/geometry/text3.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -30,11 +31,15 @@ std::string number_text(const Rational& q) {
   return s.substr(0, 20) + "..." + s.substr(s.size() - 8) + " (" + std::to_string(s.size()) + " characters)";
 }
 
+}  // namespace
+
 std::string point_text(const PointQ3& p) {
   return "[" + number_text(p.x) + ", " + number_text(p.y) + ", " + number_text(p.z) + "]";
 }
 
 std::string box_text(const Box3& b) { return "[" + point_text(b.min) + ", " + point_text(b.max) + "]"; }
+
+namespace {
 
 std::string halfspace_label(std::size_t i, const Halfspace3& h) {
   return "halfspaces[" + std::to_string(i) + "] (" + quoted(h.name) + ")";

@@ -38,16 +38,16 @@ std::string cell_list(const Complex& complex, const std::vector<int>& cells, std
   std::string s;
   for (std::size_t i = 0; i < cells.size() && i < max; ++i) {
     const auto& w = complex.cells.at(at(cells[i])).witness;
-    s += (i ? ", " : "") + std::to_string(cells[i]) + " at (" + decimal_string(w[0], 6) + ", " +
-         decimal_string(w[1], 6) + ")";
+    s += (i ? ", " : "") + std::to_string(cells[i]) + " at (";
+    for (std::size_t d = 0; d < w.size(); ++d) s += (d ? ", " : "") + decimal_string(w[d], 6);
+    s += ")";
   }
   if (cells.size() > max) s += ", ...";
   return s;
 }
 
-}  // namespace
-
-std::string survey_example_note(const nhrep::SurveySolid& c, const nhrep::SurveyOutcome& outcome) {
+template <class Solid>
+std::string note_of(const Solid& c, const nhrep::SurveyOutcome& outcome) {
   if (!outcome.whole.evaluated) throw std::logic_error(c.name + ": no note for a solid that was not evaluated");
   const nhrep::PipelineRun& o = outcome.whole;
   const auto& names = c.arranged.complex.halfspace_names;
@@ -62,26 +62,53 @@ std::string survey_example_note(const nhrep::SurveySolid& c, const nhrep::Survey
   if (!o.eval.wrong_inside.empty()) note << "; it misses solid cells " << cell_list(c.arranged.complex, o.eval.wrong_inside);
   if (!o.eval.wrong_outside.empty()) note << "; it adds cells " << cell_list(c.arranged.complex, o.eval.wrong_outside);
   note << ". NH-Rep needs extended surfaces here (Appendix B).";
+  const bool three = c.arranged.complex.dimension == 3;
   if (outcome.holes > 0)
-    note << " The solid has " << outcome.holes << " hole(s): Algorithm 1's min root over the boundary loops cannot "
-         << "leave a hole out with natural halfspaces.";
+    note << " The solid has " << outcome.holes << (three ? " cavity(ies) (or tunnels' voids)" : " hole(s)")
+         << ": Algorithm 1's min root over the boundary " << (three ? "shells" : "loops")
+         << " cannot leave a " << (three ? "cavity" : "hole") << " out with natural halfspaces.";
   else
-    note << " The solid has no hole: a natural halfspace, extended past its patch, reaches cells it must not.";
+    note << " The solid has no " << (three ? "cavity" : "hole")
+         << ": a natural halfspace, extended past its patch, reaches cells it must not.";
   if (!o.built.decompositions.empty()) note << " The tree used " << o.built.decompositions.size() << " patch decomposition(s).";
   return note.str();
 }
 
-void write_survey_example(const std::string& dir, const nhrep::SurveySolid& c, const nhrep::SurveyOutcome& o) {
-  const std::string note = survey_example_note(c, o);
-  const csg::ExprPtr expr = nhrep::example_expression(c, o);
-  Scene2 scene = c.scene;
+std::string scene_text(Scene2 scene, const std::string& note) {
   scene.description = note;
+  return write_scene2(scene).dump(2) + "\n";
+}
+
+std::string scene_text(Scene3 scene, const std::string& note) {
+  scene.description = note;
+  scene.domain_given = true;  // the survey's domain, written out (else chosen again when read)
+  return write_scene3(scene).dump(2) + "\n";
+}
+
+template <class Solid>
+void write_example(const std::string& dir, const Solid& c, const nhrep::SurveyOutcome& o) {
+  const std::string note = note_of(c, o);
+  const csg::ExprPtr expr = nhrep::example_expression(c, o);
   std::filesystem::create_directories(dir);
   const std::string base = (std::filesystem::path(dir) / c.name).string();
-  write_file_atomically(base + ".json", write_scene2(scene).dump(2) + "\n");
+  write_file_atomically(base + ".json", scene_text(c.scene, note));
   const nlohmann::json doc{{"description", "the solid of " + c.name + ".json (" + c.origin + ")"},
                            {"csg", csg::to_text(*expr, c.arranged.complex.halfspace_names)}};
   write_file_atomically(base + ".csg", doc.dump(2) + "\n");
+}
+
+}  // namespace
+
+std::string survey_example_note(const nhrep::SurveySolid& c, const nhrep::SurveyOutcome& o) { return note_of(c, o); }
+
+std::string survey_example_note(const nhrep::SurveySolid3& c, const nhrep::SurveyOutcome& o) { return note_of(c, o); }
+
+void write_survey_example(const std::string& dir, const nhrep::SurveySolid& c, const nhrep::SurveyOutcome& o) {
+  write_example(dir, c, o);
+}
+
+void write_survey_example(const std::string& dir, const nhrep::SurveySolid3& c, const nhrep::SurveyOutcome& o) {
+  write_example(dir, c, o);
 }
 
 }  // namespace hsx

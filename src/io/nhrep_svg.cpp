@@ -357,8 +357,13 @@ std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std
   const double cell = width / 2, margin = 12, title_height = title.empty() ? 0 : 26;
   const double scale = extent > 0 ? (cell - 2 * margin - 18) / extent : 1;
   const std::size_t rows = (views.size() + 1) / 2;
-  const double legend_top = title_height + rows * cell + 6;
-  const double height = legend_top + 24;
+  const double legend_top = title_height + rows * cell + 6, legend_line = 20;
+  // Second legend line: the patches of each colour (a tree node's leaves), when colours are groups.
+  std::map<int, std::vector<int>> group_patches;
+  if (!patch_colour_group.empty())
+    for (std::size_t patch = 0; patch < first_piece.size(); ++patch)
+      if (first_piece[patch] >= 0) group_patches[patch_colour_group[patch]].push_back(static_cast<int>(patch));
+  const double height = legend_top + (group_patches.empty() ? 1 : 2) * legend_line + 4;
   auto* const n = &svg_number;
   const V3 light = unit({-0.3, 0.5, 0.8});
   auto colour_index = [&](int patch) { return patch_colour_group.empty() ? patch : patch_colour_group[static_cast<std::size_t>(patch)]; };
@@ -367,9 +372,12 @@ std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + n(width) + "\" height=\"" + n(height) +
        "\" viewBox=\"0 0 " + n(width) + " " + n(height) + "\" font-family=\"Helvetica, Arial, sans-serif\">\n";
   s += "<rect x=\"0\" y=\"0\" width=\"" + n(width) + "\" height=\"" + n(height) + "\" fill=\"#ffffff\"/>\n";
-  if (!title.empty())
-    s += "<text class=\"title\" x=\"" + n(width / 2) + "\" y=\"18\" text-anchor=\"middle\" font-size=\"15\">" +
-         svg_escape(title) + "</text>\n";
+  if (!title.empty()) {
+    // A long tree's title is set smaller to fit the width (down to 8 px; beyond that it runs over).
+    const double fits = 15 * (width - 2 * margin) / std::max(1.0, svg_text_width(title, 15));
+    s += "<text class=\"title\" x=\"" + n(width / 2) + "\" y=\"18\" text-anchor=\"middle\" font-size=\"" +
+         n(std::clamp(fits, 8.0, 15.0)) + "\">" + svg_escape(title) + "</text>\n";
+  }
   for (std::size_t v = 0; v < views.size(); ++v) {
     const View& w = views[v];
     const double left = (v % 2) * cell, top = title_height + (v / 2) * cell;
@@ -423,11 +431,27 @@ std::string nhrep_svg3(const Scene3& scene, const Arranged3& arranged, const std
   s += "<g class=\"legend\" font-size=\"12\">\n";
   double x = margin;
   for (FeatureType type : {FeatureType::Convex, FeatureType::Concave, FeatureType::Smooth}) {
+    const std::string text = std::string(feature_type_name(type)) + " feature edge";
     s += "<line x1=\"" + n(x) + "\" y1=\"" + n(legend_top + 9) + "\" x2=\"" + n(x + 16) + "\" y2=\"" + n(legend_top + 9) +
          "\" stroke=\"" + feature_type_colour(type) + "\" stroke-width=\"2\"/>\n";
-    s += "<text x=\"" + n(x + 20) + "\" y=\"" + n(legend_top + 13) + "\" fill=\"#222222\">" + feature_type_name(type) +
-         " feature edge</text>\n";
-    x += 150;
+    s += "<text x=\"" + n(x + 20) + "\" y=\"" + n(legend_top + 13) + "\" fill=\"#222222\">" + text + "</text>\n";
+    x += 20 + svg_text_width(text, 12) + 18;
+  }
+  x = margin;
+  const double y = legend_top + legend_line;
+  if (!group_patches.empty()) {
+    const std::string heading = "patches by tree node:";
+    s += "<text x=\"" + n(x) + "\" y=\"" + n(y + 13) + "\" fill=\"#222222\">" + heading + "</text>\n";
+    x += svg_text_width(heading, 12) + 10;
+  }
+  for (const auto& [group, patches] : group_patches) {
+    std::string text;
+    for (std::size_t k = 0; k < patches.size() && k < 6; ++k) text += (k ? " P" : "P") + std::to_string(patches[k]);
+    if (patches.size() > 6) text += " ...";
+    s += "<rect class=\"node-swatch\" x=\"" + n(x) + "\" y=\"" + n(y + 3) + "\" width=\"16\" height=\"11\" fill=\"" +
+         svg_palette_colour(group) + "\"/>\n";
+    s += "<text x=\"" + n(x + 20) + "\" y=\"" + n(y + 13) + "\" fill=\"#222222\">" + text + "</text>\n";
+    x += 20 + svg_text_width(text, 12) + 14;
   }
   s += "</g>\n</svg>\n";
   return s;

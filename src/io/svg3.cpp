@@ -151,6 +151,12 @@ std::vector<char> patch_marks(const Complex& c, const std::vector<char>& cell_ma
   return out;
 }
 
+/// Whether some cell is marked: the shape's boundary is then grey, so that the marks (orange, red) are not taken
+/// for halfspaces of those colours.
+bool any_mark(const Svg3Options& o) {
+  return std::any_of(o.cell_marks.begin(), o.cell_marks.end(), [](char m) { return m != 0; });
+}
+
 /// What a picture paints (see the conventions): every triangle, or a shape's boundary, then highlighted patches.
 std::vector<Paint> paints_of(const Arranged3& a, const Svg3Options& o) {
   std::vector<Paint> paints;
@@ -160,7 +166,9 @@ std::vector<Paint> paints_of(const Arranged3& a, const Svg3Options& o) {
       paints.push_back({static_cast<int>(k), triangles[k].halfspaces.empty() ? -1 : triangles[k].halfspaces.front(),
                         0, -1});
   } else {
-    for (const ExportedFace& f : shape_faces(a, o.cell_fill)) paints.push_back({f.triangle, f.halfspace, 0, f.patch});
+    const bool grey = any_mark(o);
+    for (const ExportedFace& f : shape_faces(a, o.cell_fill))
+      paints.push_back({f.triangle, grey ? -1 : f.halfspace, 0, f.patch});
   }
   for (std::size_t p = 0; p < o.highlight_patches.size(); ++p)
     if (o.highlight_patches[p])
@@ -175,6 +183,7 @@ std::vector<Paint> paints_of(const Arranged3& a, const Svg3Options& o) {
 }
 
 const char* const kHighlightColour = "#ffc400";
+const char* const kGreyColour = "#b4b4b4";  // faces of no halfspace's colour (a shape under cell marks)
 const char* const kMarkColours[2] = {"#f4a261", "#e63946"};  // cell_marks 1 and 2, as io/svg.hpp
 
 /// The paints with `highlight` set as given, back to front, in one "view" group (none for highlights when there
@@ -208,7 +217,8 @@ std::string faces_svg(const Arrangement3& arr, const std::vector<Paint>& paints,
     const double light = 0.35 + 0.65 * std::fabs(dot(n, p.light));
     const Rgb base = parse_colour(paint.overlay == 1   ? kHighlightColour
                                   : paint.overlay > 1 ? kMarkColours[paint.overlay - 2]
-                                                      : svg_palette_colour(paint.halfspace));
+                                  : paint.halfspace < 0 ? kGreyColour
+                                                        : svg_palette_colour(paint.halfspace));
     const char* const kind = paint.overlay == 1 ? "highlight" : paint.overlay == 2 ? "mark-inside"
                              : paint.overlay == 3                                ? "mark-outside"
                                                                                  : "face";
@@ -298,7 +308,8 @@ std::vector<Mark> marks_of(const Arranged3& a, const Svg3Options& o, const std::
   if (!o.cell_fill.empty()) {
     const long n = static_cast<long>(std::count(missing.begin(), missing.end(), 1));
     marks.push_back({Mark::Faces, "the shape's boundary: " + std::to_string(shape_faces(a, o.cell_fill).size()) +
-                                      " triangles, in their halfspaces' colours"});
+                                      (any_mark(o) ? " triangles, grey under the marks"
+                                                   : " triangles, in their halfspaces' colours")});
     marks.push_back({Mark::Ring, "missing sample, not on the boundary (" + std::to_string(n) + " here)"});
   }
   if (std::find(o.highlight_patches.begin(), o.highlight_patches.end(), 1) != o.highlight_patches.end())

@@ -115,6 +115,24 @@ TEST_CASE("3D NH-Rep: an L of two boxes has concave edges and a min node; correc
   const std::string svg = nhrep_svg3(s, a, solid, t.built.graph.surface, t.built.graph.piece_patch, t.leaf_node, "L");
   CHECK(svg.find("class=\"feature\" data-id") != std::string::npos);
   CHECK(svg.find("data-type=\"concave\"") != std::string::npos);
+  // The legend has one swatch per tree node holding leaves (the patches' colour groups).
+  std::vector<int> groups;
+  for (int p : t.built.graph.live_patches()) groups.push_back(t.leaf_node[static_cast<std::size_t>(p)]);
+  std::sort(groups.begin(), groups.end());
+  groups.erase(std::unique(groups.begin(), groups.end()), groups.end());
+  std::size_t swatches = 0;
+  for (std::size_t at = svg.find("class=\"node-swatch\""); at != std::string::npos;
+       at = svg.find("class=\"node-swatch\"", at + 1))
+    ++swatches;
+  CHECK(swatches == groups.size());
+  CHECK(swatches >= 2);
+  // A title too long for the width is set smaller (15 px otherwise).
+  CHECK(svg.find("class=\"title\" x=\"500.0000\" y=\"18\" text-anchor=\"middle\" font-size=\"15.0000\"") !=
+        std::string::npos);
+  const std::string long_title = nhrep_svg3(s, a, solid, t.built.graph.surface, t.built.graph.piece_patch,
+                                            t.leaf_node, std::string(200, 'x'));
+  CHECK(long_title.find("font-size=\"15.0000\">xxx") == std::string::npos);
+  CHECK(long_title.find("\">" + std::string(200, 'x') + "</text>") != std::string::npos);
 }
 
 TEST_CASE("boundary_from_arrangement3: two boxes touching along an edge give two links there", "[nhrep][solid3]") {

@@ -9,6 +9,7 @@
 # - the kept counterexamples in data/counterexamples/nhrep are classified "describable but the tree fails";
 # - a missing CSGNet corpus is reported as skipped (exit 0); a small CSGNet run when the corpus is present;
 # - --dimension 3: random 3D solids, the pinned rows, the cavity line with and without --nest-holes, determinism;
+#   --keep writes the describable-but-fails 3D solids as scenes that hsx nhtree reproduces;
 # - bad input exits 2.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
@@ -150,8 +151,29 @@ if grep -qF "with a hole or cavity: 3 solids: 0 tree correct, 3 describable but 
 "$HSX" nhsurvey --dimension 3 --random 8 --seed 1 --nest-holes >"$TMP/d3n.txt" 2>/dev/null
 expect_rc 0 $? "3D --nest-holes run"
 if grep -qF "with a hole or cavity: 3 solids: 3 tree correct, 0 describable but fails, 0 not describable" "$TMP/d3n.txt"; then pass; else fail "3D --nest-holes cavities line"; cat "$TMP/d3n.txt" >&2; fi
-"$HSX" nhsurvey --dimension 3 --random 8 --seed 1 >"$TMP/d3b.txt" 2>/dev/null
-if cmp -s "$TMP/d3.txt" "$TMP/d3b.txt"; then pass; else fail "3D survey not deterministic"; fi
+# The same run with --keep: the same table (deterministic), and the 4 describable-but-fails solids kept as 3D scenes
+# (domain written out) with their expressions, which hsx nhtree takes back: each still fails, and the 3 hollow
+# ones are correct with --nest-holes.
+"$HSX" nhsurvey --dimension 3 --random 8 --seed 1 --keep "$TMP/keep3" >"$TMP/d3b.txt" 2>/dev/null
+expect_rc 0 $? "3D --keep run"
+if grep -qF "kept 4 example(s) in $TMP/keep3" "$TMP/d3b.txt"; then pass; else fail "3D --keep: kept line"; fi
+if grep -vF "kept 4 example(s)" "$TMP/d3b.txt" | cmp -s "$TMP/d3.txt" -; then pass; else fail "3D survey not deterministic"; fi
+kept3=0
+for scene in "$TMP"/keep3/*.json; do
+  [ -e "$scene" ] || continue
+  kept3=$((kept3 + 1))
+  b="${scene%.json}"
+  if grep -qF '"dimension": 3' "$scene" && grep -qF '"domain"' "$scene" && grep -qF "NH-Rep natural-halfspace counterexample" "$scene"; then pass; else fail "3D --keep: $scene lacks dimension, domain or note"; fi
+  "$HSX" nhtree "$scene" --csg "$b.csg" >"$TMP/k.txt" 2>&1
+  if grep -qF "describable but the tree fails" "$TMP/k.txt"; then pass; else fail "3D --keep: $scene does not fail again: $(cat "$TMP/k.txt")"; fi
+  if [[ "$b" == *hollow* ]]; then
+    "$HSX" nhtree "$scene" --csg "$b.csg" --nest-holes >"$TMP/k.txt" 2>&1
+    if grep -qF "correct on every cell" "$TMP/k.txt"; then pass; else fail "3D --keep: $scene not correct with --nest-holes"; fi
+  fi
+done
+if [ "$kept3" -eq 4 ]; then pass; else fail "3D --keep wrote $kept3 scenes, expected 4: $(ls "$TMP/keep3" 2>&1)"; fi
+"$HSX" nhsurvey --dimension 3 --random 2 --keep "$TMP/no/such/folder" >/dev/null 2>&1
+expect_rc 2 $? "3D --keep under a missing folder"
 "$HSX" nhsurvey --dimension 3 --random 2 --random-mode cells >/dev/null 2>&1
 expect_rc 2 $? "3D --random-mode cells"
 "$HSX" nhsurvey --dimension 3 >/dev/null 2>&1

@@ -251,6 +251,38 @@ TEST_CASE("OBJ export reads back through read_obj: exact triangles, one group pe
   CHECK_THROWS_AS(arrangement_obj(scene(), a, "a\nb"), std::invalid_argument);
 }
 
+TEST_CASE("3D SVG: a shape under cell marks is grey, so that the marks are not taken for halfspaces", "[io][svg3]") {
+  const Complex& c = arranged().complex;
+  Svg3Options options;
+  options.views = {default_svg_views3()[3]};
+  options.cell_fill.assign(c.cells.size(), 0);
+  for (std::size_t k = 0; k < c.cells.size(); ++k) options.cell_fill[k] = c.cells[k].outer ? 0 : 1;
+  // Every "face" fill "#rrggbb" is grey (r = g = b) exactly when some cell is marked.
+  auto grey_faces = [](const std::string& svg) {
+    std::size_t faces = 0, grey = 0;
+    for (std::size_t at = svg.find("class=\"face\""); at != std::string::npos; at = svg.find("class=\"face\"", at + 1)) {
+      const std::size_t f = svg.find("fill=\"#", at) + 7;
+      ++faces;
+      grey += svg.compare(f, 2, svg, f + 2, 2) == 0 && svg.compare(f, 2, svg, f + 4, 2) == 0;
+    }
+    return std::make_pair(faces, grey);
+  };
+  const auto plain = grey_faces(arrangement_svg3(scene(), arranged(), options));
+  REQUIRE(plain.first > 0);
+  CHECK(plain.second < plain.first);
+  options.cell_marks.assign(c.cells.size(), 0);
+  for (std::size_t k = 0; k < c.cells.size(); ++k)
+    if (!c.cells[k].outer) {
+      options.cell_marks[k] = 1;
+      break;
+    }
+  const std::string marked_svg = arrangement_svg3(scene(), arranged(), options);
+  const auto marked = grey_faces(marked_svg);
+  CHECK(marked.first == plain.first);
+  CHECK(marked.second == marked.first);
+  CHECK(count(marked_svg, "grey under the marks") == 1);
+}
+
 TEST_CASE("3D SVG: cell marks draw the patches bounding marked cells, orange and red", "[io][svg3]") {
   const Complex& c = arranged().complex;
   REQUIRE(c.cells.size() >= 3);

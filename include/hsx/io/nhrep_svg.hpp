@@ -43,7 +43,9 @@ std::string nhrep_svg(const Scene2& scene, const Arranged2& arranged, const std:
 /// polygon (data-patch = its patch) filled with the colour of its patch's group (svg_palette_colour) lit by its
 /// normal (0.35 + 0.65 |n . l|, the light of io/svg3.hpp), painted back to front by centroid depth (ties by piece
 /// id), opacity 0.85; then every feature link as a "feature" line along its arrangement edge, coloured by type
-/// (data-type), and "patch-id" labels "P<k> <halfspace>" at the centroid of each patch's lowest piece. A piece
+/// (data-type), and "patch-id" labels "P<k> <halfspace>" at the centroid of each patch's lowest piece. The legend
+/// gives the feature types' colours and, when `patch_colour_group` is set, the live patches of each colour (one
+/// "node-swatch" each, e.g. a tree node's leaves). A piece
 /// split by face-splitting is drawn as its sub-triangle (the split triangle's centroid and the kept link's edge);
 /// a piece whose kept link is not an arrangement edge (a split of a split) is drawn as its whole triangle. Doubles
 /// for drawing only. Arguments as nhrep_svg (`arranged` built from `scene`); throws std::invalid_argument when they

@@ -21,7 +21,8 @@
 //   patch is also a "highlight" polygon, amber, painted after all the faces (back to front among themselves, in a
 //   second "view" group per view, present when some patch is highlighted) so that they show even inside the shape; the legend says what they are
 //   (`highlight_legend`). `cell_marks` (per cell, 1 or 2) draws the patches bounding marked cells the same way, in
-//   orange (1) or red (2), in the same second group.
+//   orange (1) or red (2), in the same second group; a shape's faces are then grey (#b4b4b4), not in their
+//   halfspaces' colours, which include orange and red.
 // - Drawn on top of the faces, in this order: the domain box's twelve edges ("domain" lines), the samples ("sample"
 //   circles in their halfspace's colour, visible through everything), and on request the labels: "c<k>" at cell
 //   k's interior point ("cell-id"), "p<k>" at the centroid of patch k's largest triangle ("patch-id"), the ids of

@@ -158,7 +158,11 @@ csg::ExprPtr canonical_union(const Complex& complex, const std::vector<char>& so
   return parts.size() == 1 ? parts.front() : csg::unite(parts);
 }
 
-csg::ExprPtr example_expression(const SurveySolid& s, const SurveyOutcome& o) {
+namespace {
+
+/// example_expression for a 2D or a 3D survey solid (the same fields).
+template <class Solid>
+csg::ExprPtr example_expression_of(const Solid& s, const SurveyOutcome& o) {
   csg::ExprPtr expr = s.expression;
   if (!expr) {
     if (!o.whole.evaluated) throw std::logic_error(s.name + ": no expression for a solid that was not evaluated");
@@ -170,5 +174,11 @@ csg::ExprPtr example_expression(const SurveySolid& s, const SurveyOutcome& o) {
     throw std::logic_error(s.name + ": the kept expression is not the solid");
   return expr;
 }
+
+}  // namespace
+
+csg::ExprPtr example_expression(const SurveySolid& s, const SurveyOutcome& o) { return example_expression_of(s, o); }
+
+csg::ExprPtr example_expression(const SurveySolid3& s, const SurveyOutcome& o) { return example_expression_of(s, o); }
 
 }  // namespace hsx::nhrep

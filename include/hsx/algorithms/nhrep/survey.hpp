@@ -126,5 +126,7 @@ csg::ExprPtr canonical_union(const Complex& complex, const std::vector<char>& so
 /// BHC's verified tree, or else the canonical union over the natural halfspaces. Checked exactly against the
 /// solid; throws std::logic_error if it differs (or the outcome was not evaluated).
 csg::ExprPtr example_expression(const SurveySolid& solid, const SurveyOutcome& outcome);
+/// The same for a 3D survey solid.
+csg::ExprPtr example_expression(const SurveySolid3& solid, const SurveyOutcome& outcome);
 
 }  // namespace hsx::nhrep

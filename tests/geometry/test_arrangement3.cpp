@@ -269,6 +269,54 @@ TEST_CASE("arrangement3: a surface that intersects itself is refused, naming its
                                                       Catch::Contains("triangles"));
 }
 
+namespace {
+
+/// Axis boxes as one surface (several shells of one mesh), vertices not shared between boxes.
+TriangleSurface boxes_surface(const std::vector<std::pair<PointQ3, PointQ3>>& boxes) {
+  TriangleSurface out;
+  for (const auto& [lo, hi] : boxes) {
+    const TriangleSurface b = box_surface(lo, hi);
+    const int base = static_cast<int>(out.vertices.size());
+    out.vertices.insert(out.vertices.end(), b.vertices.begin(), b.vertices.end());
+    for (const auto& t : b.triangles) out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  return out;
+}
+
+}  // namespace
+
+// Two boxes of one mesh whose faces lie in common planes: overlapping over an area (face to face, or part of a face),
+// or touching along part of an edge inside a common plane. Every such contact is refused; the reason is in
+// proofs/arrangement3.md (Claim 1.3): an area overlap leaves a refined triangle covered twice by the surface, and a
+// partial edge contact leaves a non-coplanar pair of the surface meeting along a segment that is not a shared edge.
+// Boxes of one mesh meeting at a shared corner or along a whole shared edge are a valid (non-manifold) solid.
+TEST_CASE("arrangement3: a surface overlapping itself inside a plane is refused, naming two of its triangles") {
+  const Rational h(1, 2);
+  const std::vector<std::pair<const char*, std::vector<std::pair<PointQ3, PointQ3>>>> refused = {
+      {"face to face", {{{0, 0, 0}, {1, 1, 1}}, {{1, 0, 0}, {2, 1, 1}}}},
+      {"part of a face", {{{0, 0, 0}, {1, 1, 1}}, {{1, h, 0}, {2, 1 + h, 1}}}},
+      {"inside a plane, along part of an edge", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, 0}, {2, 2, 2}}}},
+      {"along part of an edge, out of every common plane", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, h}, {2, 2, 1 + h}}}},
+      {"a box inside another, sharing three faces", {{{0, 0, 0}, {2, 2, 2}}, {{0, 0, 0}, {1, 1, 1}}}}};
+  for (const auto& [what, boxes] : refused) {
+    INFO(what);
+    const Scene3 scene = scene_of(cube(-3, 3), {plane("P", {1, 1, 1}, -7), surface("M", boxes_surface(boxes))});
+    REQUIRE_THROWS_AS(Arrangement3::build(scene), InputError);
+    REQUIRE_THROWS_WITH(Arrangement3::build(scene), Catch::StartsWith("halfspaces[1] (\"M\"): the surface intersects "
+                                                                      "itself: its triangles ") &&
+                                                        (Catch::EndsWith(" meet") || Catch::EndsWith(" overlap")));
+  }
+  for (const auto& [what, boxes] : std::vector<std::pair<const char*, std::vector<std::pair<PointQ3, PointQ3>>>>{
+           {"at a shared corner", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, 1}, {2, 2, 2}}}},
+           {"along a whole shared edge", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, 0}, {2, 2, 1}}}}}) {
+    INFO(what);
+    const Scene3 scene = scene_of(cube(-3, 3), {surface("M", boxes_surface(boxes))});
+    const Arrangement3 arr = Arrangement3::build(scene);
+    REQUIRE(arr.cells().size() == 3);
+    check_invariants(scene, arr);
+  }
+}
+
 TEST_CASE("arrangement3: limits") {
   const Scene3 scene = scene_of(cube(-4, 4), {plane("A", {1, 0, 0}, 0), plane("B", {0, 1, 0}, 0),
                                               plane("C", {0, 0, 1}, 0), plane("D", {1, 1, 1}, 1)});

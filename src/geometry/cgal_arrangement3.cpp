@@ -1,5 +1,6 @@
 // The only translation unit that instantiates CGAL for the 3D arrangement (constrained triangulations, box
-// intersection, triangle intersections on Epeck; ~40 s and ~2 GB to compile: keep CGAL out of every other file).
+// intersection, triangle intersections and an AABB tree on Epeck; ~40 s and ~2 GB to compile: keep CGAL out of every
+// other file).
 // Everything it hands out is plain data (geometry/arrangement3.hpp).
 //
 // Phases of Arrangement3::build (each a function below):
@@ -10,11 +11,15 @@
 //     different planes (each triangle cut by the other's plane, interval filtered; the two cuts overlap on the line
 //     where the planes meet); pairs of one surface are checked for self-intersection instead;
 //  4. one constrained triangulation per group (projected along its dominant axis, lifted back exactly), each
-//     output triangle kept once with the input triangles covering it;
-//  5. vertices merged by exact coordinates (hash), edges with their triangles sorted radially (exact);
+//     output triangle kept once with the input triangles covering it and its squared area (groups in parallel,
+//     largest first);
+//  5. vertices merged by exact coordinates (hash), edges with their triangles sorted radially (exact; edges of more
+//     than two triangles in parallel);
 //  6. cells: union-find over triangle sides across edges, floating shells joined to the cell around them by exact
 //     rays from their triangles' centroids; sides of every halfspace propagated across triangles (and checked); interior points by a short
-//     exact segment from a boundary triangle; volumes by signed tetrahedra; samples on triangles.
+//     exact segment from a boundary triangle (cells in parallel); volumes by signed tetrahedra; samples on triangles.
+// Parallel phases write their results per index, so the arrangement does not depend on the thread count. Rays
+// (floating shells, locate) take their candidates from an AABB tree of the refined triangles (TriangleIndex).
 #include <hsx/geometry/arrangement3.hpp>
 #include "geometry/components.hpp"
 
@@ -460,6 +465,7 @@ struct LocalTriangle {
   std::array<PointQ3, 3> p;      // front = group normal side (or the single input's own orientation)
   std::vector<int> covering;     // input triangles covering it, ascending
   std::vector<char> same_side;   // per covering input: its front is this triangle's front
+  Rational area2;                // |(p1-p0)x(p2-p0)|^2, computed by the (parallel) triangulation
 };
 
 struct Projected {
@@ -502,7 +508,10 @@ std::vector<LocalTriangle> triangulate_group(const Group& g, const std::vector<I
     for (const Constraint& c : constraints)
       trivial = trivial && std::find(in.p.begin(), in.p.end(), c.a) != in.p.end() &&
                 std::find(in.p.begin(), in.p.end(), c.b) != in.p.end();
-    if (trivial) return {LocalTriangle{in.p, {g.members[0]}, {1}}};
+    if (trivial) {
+      const PointQ3 n = normal_of(in.p);
+      return {LocalTriangle{in.p, {g.members[0]}, {1}, dot(n, n)}};
+    }
   }
   auto to2 = [&g](const PointQ3& p) {
     const Projected q = project(p, g.axis);
@@ -545,13 +554,16 @@ std::vector<LocalTriangle> triangulate_group(const Group& g, const std::vector<I
   std::vector<LocalTriangle> out;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     const int i0 = f->vertex(0)->info(), i1 = f->vertex(1)->info(), i2 = f->vertex(2)->info();
-    LocalTriangle lt{{lifted[i0], lifted[i1], lifted[i2]}, {}, {}};  // counter-clockwise in (u, v): front = normal
+    LocalTriangle lt{{lifted[i0], lifted[i1], lifted[i2]}, {}, {}, {}};  // counter-clockwise in (u, v): front = normal
     for (std::size_t m = 0; m < members.size(); ++m)
       if (covers(m, i0) && covers(m, i1) && covers(m, i2)) {
         lt.covering.push_back(g.members[m]);
         lt.same_side.push_back(member_same[m]);
       }
-    if (!lt.covering.empty()) out.push_back(std::move(lt));
+    if (lt.covering.empty()) continue;
+    const PointQ3 n = normal_of(lt.p);
+    lt.area2 = dot(n, n);
+    out.push_back(std::move(lt));
   }
   return out;
 }
@@ -615,8 +627,7 @@ Built merge_triangles(const Scene3& scene, const std::vector<InputTriangle>& inp
       for (int k = 0; k < 3; ++k) t.vertices[static_cast<std::size_t>(k)] = vertex(lt.p[static_cast<std::size_t>(k)]);
       char outside = -1;
       set_coverage(scene, inputs, lt, &t, &outside);
-      const PointQ3 n = normal_of(lt.p);
-      t.area2 = dot(n, n);
+      t.area2 = lt.area2;
       b.triangles.push_back(std::move(t));
       b.source.push_back(lt.covering.front());
       b.outside_side.push_back(outside);
@@ -681,7 +692,8 @@ void sort_radially(const std::vector<PointQ3>& vertices, const std::vector<ArrTr
   edge->triangles = std::move(sorted);
 }
 
-std::vector<ArrEdge3> build_edges(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles) {
+std::vector<ArrEdge3> build_edges(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles,
+                                  int threads) {
   std::vector<std::array<int, 3>> entries;
   entries.reserve(triangles.size() * 3);
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
@@ -699,9 +711,14 @@ std::vector<ArrEdge3> build_edges(const std::vector<PointQ3>& vertices, const st
     for (; i < entries.size() && entries[i][0] == e.a && entries[i][1] == e.b; ++i) e.triangles.push_back(entries[i][2]);
     if (e.triangles.size() < 2)
       throw std::logic_error("arrangement3: an edge with a single triangle (the refinement is not conforming)");
-    if (e.triangles.size() > 2) sort_radially(vertices, triangles, &e);
     edges.push_back(std::move(e));
   }
+  std::vector<int> shared;  // edges of more than two triangles: sorted radially, each on its own
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+    if (edges[static_cast<std::size_t>(e)].triangles.size() > 2) shared.push_back(e);
+  parallel_for(static_cast<int>(shared.size()), threads, [&](int k, int) {
+    sort_radially(vertices, triangles, &edges[static_cast<std::size_t>(shared[static_cast<std::size_t>(k)])]);
+  });
   return edges;
 }
 
@@ -1204,7 +1221,7 @@ std::optional<Rational> segment_meets(const std::array<PointQ3, 3>& p, const Poi
 /// An exact point strictly inside each cell: from the centroid of the cell's largest boundary triangle, along
 /// its normal into the cell, half way to the first triangle met (or to the end of a short probe segment).
 std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles,
-                                     int cells) {
+                                     int cells, int threads) {
   std::vector<int> best(static_cast<std::size_t>(cells), -1);
   std::vector<char> best_front(static_cast<std::size_t>(cells), 0);
   std::vector<double> best_area(static_cast<std::size_t>(cells), -1);
@@ -1247,7 +1264,7 @@ std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const
                              candidates[static_cast<std::size_t>(probe.info())].push_back(tri.info());
                            });
   std::vector<PointQ3> out(static_cast<std::size_t>(cells));
-  for (int c = 0; c < cells; ++c) {
+  parallel_for(cells, threads, [&](int c, int) {
     auto& cand = candidates[static_cast<std::size_t>(c)];
     std::sort(cand.begin(), cand.end());
     const PointQ3& s = start[static_cast<std::size_t>(c)];
@@ -1263,7 +1280,7 @@ std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const
         if (*at > 0 && *at < t_min) t_min = *at;
     }
     out[static_cast<std::size_t>(c)] = s + scaled(dir, t_min / 2);
-  }
+  });
   return out;
 }
 
@@ -1376,9 +1393,14 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
       intersect_pairs(scene, inputs, groups, pairs, threads);
   clock.lap("pair intersections");
   std::vector<std::vector<LocalTriangle>> local(groups.size());
-  parallel_for(static_cast<int>(groups.size()), threads, [&](int g, int) {
-    local[static_cast<std::size_t>(g)] =
-        triangulate_group(groups[static_cast<std::size_t>(g)], inputs, constraints[static_cast<std::size_t>(g)]);
+  // largest groups first, so that no large one is left to a single thread at the end
+  std::vector<int> by_size(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) by_size[g] = static_cast<int>(g);
+  auto size_of = [&](int g) { return groups[static_cast<std::size_t>(g)].members.size() + constraints[static_cast<std::size_t>(g)].size(); };
+  std::stable_sort(by_size.begin(), by_size.end(), [&](int x, int y) { return size_of(x) > size_of(y); });
+  parallel_for(static_cast<int>(groups.size()), threads, [&](int k, int) {
+    const std::size_t g = static_cast<std::size_t>(by_size[static_cast<std::size_t>(k)]);
+    local[g] = triangulate_group(groups[g], inputs, constraints[g]);
   });
   clock.lap("triangulations");
   Built b = merge_triangles(scene, inputs, local, limits);
@@ -1387,7 +1409,7 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
   Arrangement3 arr;
   arr.domain_ = scene.domain;
   arr.halfspace_count_ = static_cast<int>(scene.halfspaces.size());
-  arr.edges_ = build_edges(b.vertices, b.triangles);
+  arr.edges_ = build_edges(b.vertices, b.triangles, threads);
   clock.lap("edges and radial order");
   const CellBuild cb = find_cells(b, arr.edges_);
   check_cell_limits(cb.cells, arr.halfspace_count_, limits);
@@ -1398,7 +1420,7 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
   }
   const auto inside = cell_sides(scene, b.triangles, cb.cells);
   clock.lap("sides");
-  const auto witness = interior_points(b.vertices, b.triangles, cb.cells);
+  const auto witness = interior_points(b.vertices, b.triangles, cb.cells, threads);
   clock.lap("interior points");
   arr.cells_.resize(static_cast<std::size_t>(cb.cells));
   for (int c = 0; c < cb.cells; ++c) {

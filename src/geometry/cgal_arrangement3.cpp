@@ -1,5 +1,6 @@
 // The only translation unit that instantiates CGAL for the 3D arrangement (constrained triangulations, box
-// intersection, triangle intersections on Epeck; ~40 s and ~2 GB to compile: keep CGAL out of every other file).
+// intersection, triangle intersections and an AABB tree on Epeck; ~40 s and ~2 GB to compile: keep CGAL out of every
+// other file).
 // Everything it hands out is plain data (geometry/arrangement3.hpp).
 //
 // Phases of Arrangement3::build (each a function below):
@@ -10,11 +11,15 @@
 //     different planes (each triangle cut by the other's plane, interval filtered; the two cuts overlap on the line
 //     where the planes meet); pairs of one surface are checked for self-intersection instead;
 //  4. one constrained triangulation per group (projected along its dominant axis, lifted back exactly), each
-//     output triangle kept once with the input triangles covering it;
-//  5. vertices merged by exact coordinates (hash), edges with their triangles sorted radially (exact);
+//     output triangle kept once with the input triangles covering it and its squared area (groups in parallel,
+//     largest first);
+//  5. vertices merged by exact coordinates (hash), edges with their triangles sorted radially (exact; edges of more
+//     than two triangles in parallel);
 //  6. cells: union-find over triangle sides across edges, floating shells joined to the cell around them by exact
 //     rays from their triangles' centroids; sides of every halfspace propagated across triangles (and checked); interior points by a short
-//     exact segment from a boundary triangle; volumes by signed tetrahedra; samples on triangles.
+//     exact segment from a boundary triangle (cells in parallel); volumes by signed tetrahedra; samples on triangles.
+// Parallel phases write their results per index, so the arrangement does not depend on the thread count. Rays
+// (floating shells, locate) take their candidates from an AABB tree of the refined triangles (TriangleIndex).
 #include <hsx/geometry/arrangement3.hpp>
 #include "geometry/components.hpp"
 
@@ -24,6 +29,9 @@
 #define CGAL_NO_CDT_2_WARNING
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Constrained_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/box_intersection_d.h>
@@ -457,6 +465,7 @@ struct LocalTriangle {
   std::array<PointQ3, 3> p;      // front = group normal side (or the single input's own orientation)
   std::vector<int> covering;     // input triangles covering it, ascending
   std::vector<char> same_side;   // per covering input: its front is this triangle's front
+  Rational area2;                // |(p1-p0)x(p2-p0)|^2, computed by the (parallel) triangulation
 };
 
 struct Projected {
@@ -499,7 +508,10 @@ std::vector<LocalTriangle> triangulate_group(const Group& g, const std::vector<I
     for (const Constraint& c : constraints)
       trivial = trivial && std::find(in.p.begin(), in.p.end(), c.a) != in.p.end() &&
                 std::find(in.p.begin(), in.p.end(), c.b) != in.p.end();
-    if (trivial) return {LocalTriangle{in.p, {g.members[0]}, {1}}};
+    if (trivial) {
+      const PointQ3 n = normal_of(in.p);
+      return {LocalTriangle{in.p, {g.members[0]}, {1}, dot(n, n)}};
+    }
   }
   auto to2 = [&g](const PointQ3& p) {
     const Projected q = project(p, g.axis);
@@ -542,13 +554,16 @@ std::vector<LocalTriangle> triangulate_group(const Group& g, const std::vector<I
   std::vector<LocalTriangle> out;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     const int i0 = f->vertex(0)->info(), i1 = f->vertex(1)->info(), i2 = f->vertex(2)->info();
-    LocalTriangle lt{{lifted[i0], lifted[i1], lifted[i2]}, {}, {}};  // counter-clockwise in (u, v): front = normal
+    LocalTriangle lt{{lifted[i0], lifted[i1], lifted[i2]}, {}, {}, {}};  // counter-clockwise in (u, v): front = normal
     for (std::size_t m = 0; m < members.size(); ++m)
       if (covers(m, i0) && covers(m, i1) && covers(m, i2)) {
         lt.covering.push_back(g.members[m]);
         lt.same_side.push_back(member_same[m]);
       }
-    if (!lt.covering.empty()) out.push_back(std::move(lt));
+    if (lt.covering.empty()) continue;
+    const PointQ3 n = normal_of(lt.p);
+    lt.area2 = dot(n, n);
+    out.push_back(std::move(lt));
   }
   return out;
 }
@@ -612,8 +627,7 @@ Built merge_triangles(const Scene3& scene, const std::vector<InputTriangle>& inp
       for (int k = 0; k < 3; ++k) t.vertices[static_cast<std::size_t>(k)] = vertex(lt.p[static_cast<std::size_t>(k)]);
       char outside = -1;
       set_coverage(scene, inputs, lt, &t, &outside);
-      const PointQ3 n = normal_of(lt.p);
-      t.area2 = dot(n, n);
+      t.area2 = lt.area2;
       b.triangles.push_back(std::move(t));
       b.source.push_back(lt.covering.front());
       b.outside_side.push_back(outside);
@@ -678,7 +692,8 @@ void sort_radially(const std::vector<PointQ3>& vertices, const std::vector<ArrTr
   edge->triangles = std::move(sorted);
 }
 
-std::vector<ArrEdge3> build_edges(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles) {
+std::vector<ArrEdge3> build_edges(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles,
+                                  int threads) {
   std::vector<std::array<int, 3>> entries;
   entries.reserve(triangles.size() * 3);
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t)
@@ -696,9 +711,14 @@ std::vector<ArrEdge3> build_edges(const std::vector<PointQ3>& vertices, const st
     for (; i < entries.size() && entries[i][0] == e.a && entries[i][1] == e.b; ++i) e.triangles.push_back(entries[i][2]);
     if (e.triangles.size() < 2)
       throw std::logic_error("arrangement3: an edge with a single triangle (the refinement is not conforming)");
-    if (e.triangles.size() > 2) sort_radially(vertices, triangles, &e);
     edges.push_back(std::move(e));
   }
+  std::vector<int> shared;  // edges of more than two triangles: sorted radially, each on its own
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+    if (edges[static_cast<std::size_t>(e)].triangles.size() > 2) shared.push_back(e);
+  parallel_for(static_cast<int>(shared.size()), threads, [&](int k, int) {
+    sort_radially(vertices, triangles, &edges[static_cast<std::size_t>(shared[static_cast<std::size_t>(k)])]);
+  });
   return edges;
 }
 
@@ -745,13 +765,24 @@ struct TriangleSoup {
 };
 
 /// Exact ray shooting and point-on-triangle tests over a soup's triangles, each triangle's supporting plane
-/// precomputed, with conservative interval boxes to skip triangles a ray or point cannot meet. Queries take the
-/// soup the index was built from.
+/// precomputed. A ray's candidates come from CGAL's AABB tree over the triangles (Epeck: its box and ray-triangle
+/// tests are exact predicates, so the candidates are exactly the triangles the closed ray meets), in
+/// O(log triangles + candidates) for a typical query. Queries take the soup the index was built from. The tree's
+/// lazy-exact triangles are made exact on construction, so concurrent const queries only read them.
 class TriangleIndex {
  public:
+  TriangleIndex(const TriangleIndex&) = delete;
+  TriangleIndex& operator=(const TriangleIndex&) = delete;
   explicit TriangleIndex(const TriangleSoup& soup) {
+    std::vector<P3> corners;
+    corners.reserve(soup.vertices.size());
+    for (const PointQ3& v : soup.vertices) corners.push_back(to_k(v));
+    shapes_.reserve(soup.triangles.size());
     planes_.reserve(soup.triangles.size());
     for (int t = 0; t < static_cast<int>(soup.triangles.size()); ++t) {
+      const auto& v = soup.triangles[static_cast<std::size_t>(t)].vertices;
+      shapes_.emplace_back(corners[static_cast<std::size_t>(v[0])], corners[static_cast<std::size_t>(v[1])],
+                           corners[static_cast<std::size_t>(v[2])]);
       Plane pl;
       const std::array<PointQ3, 3> p = soup.corners(t);
       pl.n = normal_of(p);
@@ -767,8 +798,37 @@ class TriangleIndex {
           pl.hi[a] = std::max(pl.hi[a], iv.second);
         }
       }
+      pl.n_box = interval_vector(pl.n);
+      pl.d_box = interval(pl.d);
       planes_.push_back(std::move(pl));
     }
+    // The tree's boxes and splits from the conservative boxes above (CGAL's default build would compare the lazy
+    // triangles' corners, falling back to exact numbers on every tie of shared corners): a node's box is the union
+    // of its triangles' boxes, so it holds them; the split (by box centres) only shapes the tree.
+    tree_.insert(shapes_.cbegin(), shapes_.cend());
+    auto index_of = [this](const Primitive& p) { return static_cast<std::size_t>(p.id() - shapes_.cbegin()); };
+    auto box = [this, index_of](const Primitive& p) {
+      const Plane& pl = planes_[index_of(p)];
+      return CGAL::Bbox_3(pl.lo[0], pl.lo[1], pl.lo[2], pl.hi[0], pl.hi[1], pl.hi[2]);
+    };
+    using PrimitiveIterator = std::vector<Primitive>::iterator;
+    tree_.custom_build(
+        [box](PrimitiveIterator first, PrimitiveIterator beyond) {
+          CGAL::Bbox_3 b = box(*first);
+          for (++first; first != beyond; ++first) b += box(*first);
+          return b;
+        },
+        [this, index_of](PrimitiveIterator first, PrimitiveIterator beyond, const CGAL::Bbox_3& b) {
+          int axis = 0;
+          for (int a = 1; a < 3; ++a)
+            if (b.max(a) - b.min(a) > b.max(axis) - b.min(axis)) axis = a;
+          auto centre = [&](const Primitive& p) {
+            const Plane& pl = planes_[index_of(p)];
+            return pl.lo[axis] + pl.hi[axis];
+          };
+          std::nth_element(first, first + (beyond - first) / 2, beyond,
+                           [&](const Primitive& x, const Primitive& y) { return centre(x) < centre(y); });
+        });
   }
 
   /// Where q lies on triangle t (exact).
@@ -786,28 +846,30 @@ class TriangleIndex {
   /// runs inside a triangle's plane (try another direction).
   std::optional<std::vector<RayCrossing>> all_hits(const TriangleSoup& soup, const PointQ3& origin,
                                                    const PointQ3& dir) const {
-    CGAL::Protect_FPU_rounding<true> protect;
-    IntervalQ o[3], d[3];
-    for (int a = 0; a < 3; ++a) {
-      o[a] = interval(coord(origin, a));
-      d[a] = interval(coord(dir, a));
-    }
+    return hits_among(soup, origin, dir, met_by(origin, dir));
+  }
+
+  /// The triangles the closed ray origin + s * dir, s >= 0, meets (every triangle holding the origin among them),
+  /// ascending.
+  std::vector<int> met_by(const PointQ3& origin, const PointQ3& dir) const {
+    const K::Ray_3 ray(to_k(origin), K::Vector_3(K::FT(dir.x), K::FT(dir.y), K::FT(dir.z)));
+    std::vector<Primitive::Id> ids;
+    tree_.all_intersected_primitives(ray, std::back_inserter(ids));
+    std::vector<int> out;
+    out.reserve(ids.size());
+    for (const auto& id : ids) out.push_back(static_cast<int>(id - shapes_.cbegin()));
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+
+  /// all_hits restricted to `candidates` (ascending), which must hold every triangle the ray meets.
+  std::optional<std::vector<RayCrossing>> hits_among(const TriangleSoup& soup, const PointQ3& origin,
+                                                     const PointQ3& dir, const std::vector<int>& candidates) const {
     std::vector<RayCrossing> hits;
-    for (int t = 0; t < static_cast<int>(planes_.size()); ++t) {
-      const Plane& pl = planes_[static_cast<std::size_t>(t)];
-      if (!may_hit(pl, o, d, dir)) continue;
-      const Rational off = pl.d - dot(pl.n, origin);  // n.(origin + s dir) = d  <=>  s * n.dir = off
-      const Rational nd = dot(pl.n, dir);
-      if (nd == 0) {
-        if (off == 0) return std::nullopt;
-        continue;
-      }
-      Rational at = off / nd;
-      if (at <= 0) continue;
-      const OnTriangle where = in_plane(soup, t, origin + scaled(dir, at));
-      if (where.where < 0) continue;
-      // origin - hit = -at dir: on the front iff n.dir < 0 iff off < 0
-      hits.push_back({std::move(at), t, where.where == 0, sign(off) < 0});
+    for (int t : candidates) {
+      Crossing c = crossing(soup, origin, dir, t);
+      if (c.kind == Crossing::InPlane) return std::nullopt;
+      if (c.kind == Crossing::Hit) hits.push_back(std::move(c.hit));
     }
     std::sort(hits.begin(), hits.end(), [](const RayCrossing& x, const RayCrossing& y) {
       const int c = cmp(x.at, y.at);
@@ -818,12 +880,54 @@ class TriangleIndex {
 
   /// First triangle met by origin + s * dir, s > 0; not clean when that hit is on an edge or vertex, when two
   /// triangles are met at once, or when the ray runs inside a triangle's plane.
-  RayHit first_hit(const TriangleSoup& soup, const PointQ3& origin, const PointQ3& dir) const {
-    const auto hits = all_hits(soup, origin, dir);
-    if (!hits || hits->empty()) return {};
-    const RayCrossing& h = hits->front();
-    const bool tie = hits->size() > 1 && (*hits)[1].at == h.at;
-    return {h.triangle, h.front, h.interior && !tie};
+  RayHit first_hit(const TriangleSoup& soup, const PointQ3& origin, const PointQ3& dir,
+                   const std::vector<int>& candidates) const {
+    // The same answer as the front of hits_among, computing few crossings exactly: candidates are visited by an
+    // interval lower bound of their ray parameter (unbounded when the ray may be parallel to the plane, so every
+    // triangle whose plane may contain the ray is visited), and the visit stops at the first bound beyond the upper
+    // bound of the best crossing found: later ones lie strictly beyond it (no tie).
+    struct Estimate {
+      double lo;
+      int triangle;
+    };
+    std::vector<Estimate> order;
+    {
+      CGAL::Protect_FPU_rounding<true> protect;
+      const IntervalVector o = interval_vector(origin), d = interval_vector(dir);
+      for (int t : candidates) {
+        const Plane& pl = planes_[static_cast<std::size_t>(t)];
+        const IntervalQ nd = pl.n_box[0] * d[0] + pl.n_box[1] * d[1] + pl.n_box[2] * d[2];
+        if (nd.inf() <= 0 && nd.sup() >= 0) {
+          order.push_back({-std::numeric_limits<double>::infinity(), t});
+          continue;
+        }
+        const IntervalQ at = (pl.d_box - (pl.n_box[0] * o[0] + pl.n_box[1] * o[1] + pl.n_box[2] * o[2])) / nd;
+        if (at.sup() > 0) order.push_back({at.inf(), t});  // otherwise at <= 0: no crossing
+      }
+    }
+    std::sort(order.begin(), order.end(), [](const Estimate& x, const Estimate& y) {
+      return x.lo != y.lo ? x.lo < y.lo : x.triangle < y.triangle;
+    });
+    std::optional<RayCrossing> best;
+    double best_hi = 0;
+    bool tie = false;
+    for (const Estimate& e : order) {
+      if (best && e.lo > best_hi) break;
+      Crossing c = crossing(soup, origin, dir, e.triangle);
+      if (c.kind == Crossing::InPlane) return {};
+      if (c.kind != Crossing::Hit) continue;
+      const int k = best ? cmp(c.hit.at, best->at) : -1;
+      if (k == 0) {
+        tie = true;
+        if (c.hit.triangle < best->triangle) best = std::move(c.hit);
+      } else if (k < 0) {
+        tie = false;
+        best = std::move(c.hit);
+        best_hi = CGAL::to_interval(best->at).second;
+      }
+    }
+    if (!best) return {};
+    return {best->triangle, best->front, best->interior && !tie};
   }
 
  private:
@@ -831,8 +935,28 @@ class TriangleIndex {
     PointQ3 n;
     Rational d;
     int axis = 0;
-    double lo[3], hi[3];
+    double lo[3], hi[3];    // the triangle's box, rounded outward
+    IntervalVector n_box;   // enclosures of n and d
+    IntervalQ d_box;
   };
+
+  /// How a ray meets triangle t, exactly.
+  struct Crossing {
+    enum Kind { None, Hit, InPlane } kind = None;  // InPlane: the ray runs inside t's plane
+    RayCrossing hit;                               // when Hit (at > 0, on the closed triangle)
+  };
+  Crossing crossing(const TriangleSoup& soup, const PointQ3& origin, const PointQ3& dir, int t) const {
+    const Plane& pl = planes_[static_cast<std::size_t>(t)];
+    const Rational off = pl.d - dot(pl.n, origin);  // n.(origin + s dir) = d  <=>  s * n.dir = off
+    const Rational nd = dot(pl.n, dir);
+    if (nd == 0) return {off == 0 ? Crossing::InPlane : Crossing::None, {}};
+    Rational at = off / nd;
+    if (at <= 0) return {};
+    const OnTriangle where = in_plane(soup, t, origin + scaled(dir, at));
+    if (where.where < 0) return {};
+    // origin - hit = -at dir: on the front iff n.dir < 0 iff off < 0
+    return {Crossing::Hit, {std::move(at), t, where.where == 0, sign(off) < 0}};
+  }
 
   /// q on t's plane: where on the triangle.
   OnTriangle in_plane(const TriangleSoup& soup, int t, const PointQ3& q) const {
@@ -853,27 +977,16 @@ class TriangleIndex {
     return {0};
   }
 
-  /// False only when the ray certainly misses the triangle's box (interval slab test, rounding protected).
-  static bool may_hit(const Plane& pl, const IntervalQ o[3], const IntervalQ d[3], const PointQ3& dir) {
-    double enter = 0, leave = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 3; ++a) {
-      if (coord(dir, a) == 0) {
-        if (o[a].sup() < pl.lo[a] || o[a].inf() > pl.hi[a]) return false;
-        continue;
-      }
-      if (d[a].inf() <= 0 && d[a].sup() >= 0) continue;  // cannot tell the sign: no bound from this axis
-      IntervalQ t1 = (IntervalQ(pl.lo[a]) - o[a]) / d[a], t2 = (IntervalQ(pl.hi[a]) - o[a]) / d[a];
-      if (d[a].inf() < 0) std::swap(t1, t2);
-      enter = std::max(enter, t1.inf());
-      leave = std::min(leave, t2.sup());
-    }
-    return enter <= leave;
-  }
+  using Shapes = std::vector<K::Triangle_3>;
+  using Primitive = CGAL::AABB_triangle_primitive<K, Shapes::const_iterator>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
+  Shapes shapes_;  // the triangles as CGAL sees them; the tree points into it (never resized after construction)
+  Tree tree_;
   std::vector<Plane> planes_;
 };
 
-/// Deterministic ray directions with a positive x component (the first is +x).
+/// Deterministic ray directions with a positive x component (the first is +x; the others along no axis).
 PointQ3 ray_direction(int attempt) {
   if (attempt == 0) return {1, 0, 0};
   return {1, Rational(2 * attempt + 1, 7 * attempt + 3) - Rational(1, 2), Rational(3 * attempt + 2, 5 * attempt + 11) - Rational(1, 3)};
@@ -935,7 +1048,7 @@ void nest_shells(const std::vector<PointQ3>& vertices, const std::vector<ArrTria
       const int t = own[static_cast<std::size_t>(attempt / 8) * 7919 % own.size()];
       const std::array<PointQ3, 3> p = soup.corners(t);
       const PointQ3 origin = scaled(p[0] + p[1] + p[2], Rational(1, 3));
-      const PointQ3 dir = ray_direction(attempt % 8);
+      const PointQ3 dir = ray_direction(1 + attempt % 8);  // along no axis (see locate)
       const auto hits = index.all_hits(soup, origin, dir);
       const int facing = sign(dot(normal_of(p), dir));  // the ray leaves t on its front iff facing > 0
       if (!hits || facing == 0) continue;
@@ -1108,7 +1221,7 @@ std::optional<Rational> segment_meets(const std::array<PointQ3, 3>& p, const Poi
 /// An exact point strictly inside each cell: from the centroid of the cell's largest boundary triangle, along
 /// its normal into the cell, half way to the first triangle met (or to the end of a short probe segment).
 std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const std::vector<ArrTriangle3>& triangles,
-                                     int cells) {
+                                     int cells, int threads) {
   std::vector<int> best(static_cast<std::size_t>(cells), -1);
   std::vector<char> best_front(static_cast<std::size_t>(cells), 0);
   std::vector<double> best_area(static_cast<std::size_t>(cells), -1);
@@ -1151,7 +1264,7 @@ std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const
                              candidates[static_cast<std::size_t>(probe.info())].push_back(tri.info());
                            });
   std::vector<PointQ3> out(static_cast<std::size_t>(cells));
-  for (int c = 0; c < cells; ++c) {
+  parallel_for(cells, threads, [&](int c, int) {
     auto& cand = candidates[static_cast<std::size_t>(c)];
     std::sort(cand.begin(), cand.end());
     const PointQ3& s = start[static_cast<std::size_t>(c)];
@@ -1167,7 +1280,7 @@ std::vector<PointQ3> interior_points(const std::vector<PointQ3>& vertices, const
         if (*at > 0 && *at < t_min) t_min = *at;
     }
     out[static_cast<std::size_t>(c)] = s + scaled(dir, t_min / 2);
-  }
+  });
   return out;
 }
 
@@ -1280,9 +1393,14 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
       intersect_pairs(scene, inputs, groups, pairs, threads);
   clock.lap("pair intersections");
   std::vector<std::vector<LocalTriangle>> local(groups.size());
-  parallel_for(static_cast<int>(groups.size()), threads, [&](int g, int) {
-    local[static_cast<std::size_t>(g)] =
-        triangulate_group(groups[static_cast<std::size_t>(g)], inputs, constraints[static_cast<std::size_t>(g)]);
+  // largest groups first, so that no large one is left to a single thread at the end
+  std::vector<int> by_size(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) by_size[g] = static_cast<int>(g);
+  auto size_of = [&](int g) { return groups[static_cast<std::size_t>(g)].members.size() + constraints[static_cast<std::size_t>(g)].size(); };
+  std::stable_sort(by_size.begin(), by_size.end(), [&](int x, int y) { return size_of(x) > size_of(y); });
+  parallel_for(static_cast<int>(groups.size()), threads, [&](int k, int) {
+    const std::size_t g = static_cast<std::size_t>(by_size[static_cast<std::size_t>(k)]);
+    local[g] = triangulate_group(groups[g], inputs, constraints[g]);
   });
   clock.lap("triangulations");
   Built b = merge_triangles(scene, inputs, local, limits);
@@ -1291,7 +1409,7 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
   Arrangement3 arr;
   arr.domain_ = scene.domain;
   arr.halfspace_count_ = static_cast<int>(scene.halfspaces.size());
-  arr.edges_ = build_edges(b.vertices, b.triangles);
+  arr.edges_ = build_edges(b.vertices, b.triangles, threads);
   clock.lap("edges and radial order");
   const CellBuild cb = find_cells(b, arr.edges_);
   check_cell_limits(cb.cells, arr.halfspace_count_, limits);
@@ -1302,7 +1420,7 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
   }
   const auto inside = cell_sides(scene, b.triangles, cb.cells);
   clock.lap("sides");
-  const auto witness = interior_points(b.vertices, b.triangles, cb.cells);
+  const auto witness = interior_points(b.vertices, b.triangles, cb.cells, threads);
   clock.lap("interior points");
   arr.cells_.resize(static_cast<std::size_t>(cb.cells));
   for (int c = 0; c < cb.cells; ++c) {
@@ -1345,7 +1463,11 @@ PointLocation3 Arrangement3::locate(const PointQ3& p) const {
   const TriangleSoup soup{vertices_, triangles_};
   std::call_once(impl_->built, [&] { impl_->index = std::make_unique<const TriangleIndex>(soup); });
   const TriangleIndex& index = *impl_->index;
-  for (int t = 0; t < static_cast<int>(triangles_.size()); ++t) {
+  // every triangle holding p meets the closed ray from p: the lowest one is among the first ray's candidates
+  // rays along no axis: an axis ray leaves the origin's other coordinates unchanged, and CGAL's interval filter of
+  // the ray-box test cannot order an inexact coordinate against itself (every box would be decided exactly)
+  std::vector<int> candidates = index.met_by(p, ray_direction(1));
+  for (int t : candidates) {
     const OnTriangle where = index.on(soup, t, p);
     if (where.where < 0) continue;
     const auto& v = triangles_[static_cast<std::size_t>(t)].vertices;
@@ -1359,8 +1481,9 @@ PointLocation3 Arrangement3::locate(const PointQ3& p) const {
     });
     return {PointLocation3::Edge, static_cast<int>(it - edges_.begin())};
   }
-  for (int attempt = 0; attempt < 64; ++attempt) {
-    const RayHit hit = index.first_hit(soup, p, ray_direction(attempt));
+  for (int attempt = 1; attempt <= 64; ++attempt) {
+    if (attempt > 1) candidates = index.met_by(p, ray_direction(attempt));
+    const RayHit hit = index.first_hit(soup, p, ray_direction(attempt), candidates);
     if (!hit.clean) continue;
     const ArrTriangle3& t = triangles_[static_cast<std::size_t>(hit.triangle)];
     return {PointLocation3::Cell, hit.front ? t.front_cell : t.back_cell};

@@ -269,6 +269,111 @@ TEST_CASE("arrangement3: a surface that intersects itself is refused, naming its
                                                       Catch::Contains("triangles"));
 }
 
+namespace {
+
+/// Axis boxes as one surface (several shells of one mesh), vertices not shared between boxes.
+TriangleSurface boxes_surface(const std::vector<std::pair<PointQ3, PointQ3>>& boxes) {
+  TriangleSurface out;
+  for (const auto& [lo, hi] : boxes) {
+    const TriangleSurface b = box_surface(lo, hi);
+    const int base = static_cast<int>(out.vertices.size());
+    out.vertices.insert(out.vertices.end(), b.vertices.begin(), b.vertices.end());
+    for (const auto& t : b.triangles) out.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  }
+  return out;
+}
+
+}  // namespace
+
+// Two boxes of one mesh whose faces lie in common planes: overlapping over an area (face to face, or part of a face),
+// or touching along part of an edge inside a common plane. Every such contact is refused; the reason is in
+// proofs/arrangement3.md (Claim 1.3): an area overlap leaves a refined triangle covered twice by the surface, and a
+// partial edge contact leaves a non-coplanar pair of the surface meeting along a segment that is not a shared edge.
+// Boxes of one mesh meeting at a shared corner or along a whole shared edge are a valid (non-manifold) solid.
+TEST_CASE("arrangement3: a surface overlapping itself inside a plane is refused, naming two of its triangles") {
+  const Rational h(1, 2);
+  const std::vector<std::pair<const char*, std::vector<std::pair<PointQ3, PointQ3>>>> refused = {
+      {"face to face", {{{0, 0, 0}, {1, 1, 1}}, {{1, 0, 0}, {2, 1, 1}}}},
+      {"part of a face", {{{0, 0, 0}, {1, 1, 1}}, {{1, h, 0}, {2, 1 + h, 1}}}},
+      {"inside a plane, along part of an edge", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, 0}, {2, 2, 2}}}},
+      {"along part of an edge, out of every common plane", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, h}, {2, 2, 1 + h}}}},
+      {"a box inside another, sharing three faces", {{{0, 0, 0}, {2, 2, 2}}, {{0, 0, 0}, {1, 1, 1}}}}};
+  for (const auto& [what, boxes] : refused) {
+    INFO(what);
+    const Scene3 scene = scene_of(cube(-3, 3), {plane("P", {1, 1, 1}, -7), surface("M", boxes_surface(boxes))});
+    REQUIRE_THROWS_AS(Arrangement3::build(scene), InputError);
+    REQUIRE_THROWS_WITH(Arrangement3::build(scene), Catch::StartsWith("halfspaces[1] (\"M\"): the surface intersects "
+                                                                      "itself: its triangles ") &&
+                                                        (Catch::EndsWith(" meet") || Catch::EndsWith(" overlap")));
+  }
+  for (const auto& [what, boxes] : std::vector<std::pair<const char*, std::vector<std::pair<PointQ3, PointQ3>>>>{
+           {"at a shared corner", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, 1}, {2, 2, 2}}}},
+           {"along a whole shared edge", {{{0, 0, 0}, {1, 1, 1}}, {{1, 1, 0}, {2, 2, 1}}}}}) {
+    INFO(what);
+    const Scene3 scene = scene_of(cube(-3, 3), {surface("M", boxes_surface(boxes))});
+    const Arrangement3 arr = Arrangement3::build(scene);
+    REQUIRE(arr.cells().size() == 3);
+    check_invariants(scene, arr);
+  }
+}
+
+// locate (an AABB tree of the triangles, exact ray shooting) against direct classification of random rational
+// points, and on the arrangement's own vertices, edge midpoints and triangle centroids.
+TEST_CASE("arrangement3: locate agrees with direct classification and names vertices, edges and triangles") {
+  const Scene3 scene =
+      scene_of(cube(-3, 3), {surface("O", octahedron({0, 0, 0}, 2)), surface("A", box_surface({-1, -1, -1}, {1, 1, 2})),
+                             plane("P", {1, 2, -1}, Rational(1, 2)), plane("Q", {0, 0, 1}, 0, true),
+                             surface("T", tetrahedron({1, 1, 1}, {3, 1, 1}, {1, 3, 1}, {1, 1, 3}))});
+  const Arrangement3 arr = Arrangement3::build(scene);
+  std::mt19937 engine(12);
+  auto coordinate = [&engine] {
+    const int den = std::uniform_int_distribution<int>(1, 3)(engine) * 500;  // in [-3, 3]
+    Rational q(std::uniform_int_distribution<int>(-3 * den, 3 * den)(engine), den);
+    q.canonicalize();
+    return q;
+  };
+  int in_cells = 0, on_boundary = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const PointQ3 p = {coordinate(), coordinate(), coordinate()};
+    const PointLocation3 loc = arr.locate(p);
+    bool boundary = false;
+    for (const auto& h : scene.halfspaces) boundary = boundary || direct_side(h, p) == 0;
+    const bool on_box = p.x == -3 || p.x == 3 || p.y == -3 || p.y == 3 || p.z == -3 || p.z == 3;
+    if (boundary || on_box) {
+      ++on_boundary;
+      REQUIRE(loc.kind != PointLocation3::Cell);
+      continue;
+    }
+    ++in_cells;
+    REQUIRE(loc.kind == PointLocation3::Cell);
+    for (std::size_t h = 0; h < scene.halfspaces.size(); ++h)
+      REQUIRE(arr.cells()[static_cast<std::size_t>(loc.index)].inside[h] == (direct_side(scene.halfspaces[h], p) > 0 ? 1 : 0));
+  }
+  CHECK(in_cells > 1500);
+  CHECK(on_boundary > 3);  // the grid of coordinates puts points on the planes, the box and the mesh faces
+  for (int v = 0; v < static_cast<int>(arr.vertices().size()); ++v) {
+    const PointLocation3 loc = arr.locate(arr.vertices()[static_cast<std::size_t>(v)]);
+    REQUIRE(loc.kind == PointLocation3::Vertex);
+    REQUIRE(loc.index == v);
+  }
+  for (int e = 0; e < static_cast<int>(arr.edges().size()); ++e) {
+    const ArrEdge3& edge = arr.edges()[static_cast<std::size_t>(e)];
+    const PointQ3 mid = add(arr.vertices()[static_cast<std::size_t>(edge.a)], arr.vertices()[static_cast<std::size_t>(edge.b)]);
+    const PointLocation3 loc = arr.locate({mid.x / 2, mid.y / 2, mid.z / 2});
+    REQUIRE(loc.kind == PointLocation3::Edge);
+    REQUIRE(loc.index == e);
+  }
+  for (int t = 0; t < static_cast<int>(arr.triangles().size()); ++t) {
+    const auto& v = arr.triangles()[static_cast<std::size_t>(t)].vertices;
+    const PointQ3 sum = add(add(arr.vertices()[static_cast<std::size_t>(v[0])], arr.vertices()[static_cast<std::size_t>(v[1])]),
+                            arr.vertices()[static_cast<std::size_t>(v[2])]);
+    const PointLocation3 loc = arr.locate({sum.x / 3, sum.y / 3, sum.z / 3});
+    REQUIRE(loc.kind == PointLocation3::Triangle);
+    REQUIRE(loc.index == t);
+  }
+  REQUIRE(arr.locate({4, 0, 0}).kind == PointLocation3::Outside);
+}
+
 TEST_CASE("arrangement3: limits") {
   const Scene3 scene = scene_of(cube(-4, 4), {plane("A", {1, 0, 0}, 0), plane("B", {0, 1, 0}, 0),
                                               plane("C", {0, 0, 1}, 0), plane("D", {1, 1, 1}, 1)});

@@ -1,6 +1,7 @@
 // The Nef oracle (geometry/nef3.hpp) on scenes whose cell counts are known by hand or by formula, then
 // Arrangement3's cell counts against it on random small scenes and their degenerate variants.
 #include <hsx/complex/from_arrangement3.hpp>
+#include <hsx/geometry/arrangement3.hpp>
 #include <hsx/geometry/nef3.hpp>
 #include <hsx/geometry/random_scene3.hpp>
 #include <hsx/geometry/tessellate3.hpp>
@@ -10,8 +11,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 using namespace hsx;
@@ -307,5 +310,132 @@ TEST_CASE("Arrangement3 against Nef: random planes with small coefficients (coin
   for (std::uint64_t index = 0; index < 6; ++index) {
     INFO("random_plane_scene3, item " << index);
     check_against_nef(random_plane_scene3(settings, 99, index));
+  }
+}
+
+// ---- Shells touching at a vertex or along an edge (cells derived by hand, counts checked against Nef) ----
+
+namespace {
+
+/// A cell as the test derives it by hand: its sides (one per halfspace, in scene order), its exact volume, outer.
+struct ExpectedCell {
+  std::vector<char> inside;
+  Rational volume;
+  bool outer = false;
+  bool operator<(const ExpectedCell& o) const {
+    return std::tie(inside, volume, outer) < std::tie(o.inside, o.volume, o.outer);
+  }
+  bool operator==(const ExpectedCell& o) const { return inside == o.inside && volume == o.volume && outer == o.outer; }
+};
+
+struct ContactCase {
+  const char* what;
+  Scene3 scene;
+  std::vector<ExpectedCell> cells;
+};
+
+Halfspace3 complemented(Halfspace3 h) {
+  h.complement = true;
+  return h;
+}
+
+/// Floating shells that touch each other, a plane, their enclosing shell or the domain only at a vertex or along an
+/// edge. The domain is [-3, 3]^3 (volume 216); every volume below is a box's or a tetrahedron's (|det| / 6).
+std::vector<ContactCase> contact_cases() {
+  std::vector<ContactCase> cases;
+  cases.push_back({"two boxes meeting at one vertex",
+                   scene_in(3, {axis_box("A", pt(-1, -1, -1), pt(0, 0, 0)), axis_box("B", pt(0, 0, 0), pt(1, 1, 1))}),
+                   {{{0, 0}, 214, true}, {{1, 0}, 1, false}, {{0, 1}, 1, false}}});
+  cases.push_back({"two tetrahedra meeting at one vertex",
+                   scene_in(3, {tetrahedron("T", pt(0, 0, 0), pt(1, 0, 0), pt(0, 1, 0), pt(0, 0, 1)),
+                                tetrahedron("U", pt(0, 0, 0), pt(-1, 0, 0), pt(0, -1, 0), pt(0, 0, -1))}),
+                   {{{0, 0}, 216 - Rational(1, 3), true}, {{1, 0}, Rational(1, 6), false}, {{0, 1}, Rational(1, 6), false}}});
+  cases.push_back({"a tetrahedron's vertex inside a box's face",
+                   scene_in(3, {axis_box("A", pt(-1, -1, -2), pt(1, 1, 0)),
+                                tetrahedron("T", pt(Rational(1, 4), Rational(1, 3), 0), pt(0, 0, 1), pt(1, 0, 1), pt(0, 1, 1))}),
+                   {{{0, 0}, 216 - 8 - Rational(1, 6), true}, {{1, 0}, 8, false}, {{0, 1}, Rational(1, 6), false}}});
+  cases.push_back({"two boxes sharing an edge",
+                   scene_in(3, {axis_box("A", pt(-1, -1, -1), pt(0, 0, 1)), axis_box("B", pt(0, 0, -1), pt(1, 1, 1))}),
+                   {{{0, 0}, 212, true}, {{1, 0}, 2, false}, {{0, 1}, 2, false}}});
+  cases.push_back({"a tetrahedron's edge inside a box's face",
+                   scene_in(3, {axis_box("A", pt(-1, -1, -1), pt(1, 1, 0)),
+                                tetrahedron("T", pt(Rational(-1, 2), 0, 0), pt(Rational(1, 2), 0, 0), pt(0, -1, 1), pt(0, 1, 1))}),
+                   {{{0, 0}, 216 - 4 - Rational(1, 3), true}, {{1, 0}, 4, false}, {{0, 1}, Rational(1, 3), false}}});
+  // A hollow box whose cavity (the complemented tetrahedron B) touches the box's top face at a point inside it.
+  cases.push_back({"a cavity touching its shell's face at a vertex",
+                   scene_in(3, {axis_box("A", pt(-2, -2, -2), pt(2, 2, 2)),
+                                complemented(tetrahedron("B", pt(0, 0, 2), pt(-1, -1, 0), pt(1, -1, 0), pt(0, 1, 0)))}),
+                   {{{0, 1}, 152, true}, {{1, 1}, 64 - Rational(4, 3), false}, {{1, 0}, Rational(4, 3), false}}});
+  cases.push_back({"a cavity touching its shell's corner",
+                   scene_in(3, {axis_box("A", pt(-2, -2, -2), pt(2, 2, 2)),
+                                complemented(tetrahedron("B", pt(2, 2, 2), pt(0, 0, 0), pt(1, 0, 0), pt(0, 1, 0)))}),
+                   {{{0, 1}, 152, true}, {{1, 1}, 64 - Rational(1, 3), false}, {{1, 0}, Rational(1, 3), false}}});
+  cases.push_back({"a tetrahedron touching a plane at a vertex",
+                   scene_in(3, {plane("P", pt(0, 0, 1), 0),
+                                tetrahedron("T", pt(0, 0, 0), pt(-1, -1, 1), pt(1, -1, 1), pt(0, 1, 1))}),
+                   {{{1, 0}, 108, true}, {{0, 0}, 108 - Rational(2, 3), true}, {{0, 1}, Rational(2, 3), false}}});
+  cases.push_back({"a tetrahedron touching the domain's corner",
+                   scene_in(3, {tetrahedron("T", pt(3, 3, 3), pt(1, 1, 2), pt(2, 1, 1), pt(1, 2, 1))}),
+                   {{{0}, 216 - Rational(5, 6), true}, {{1}, Rational(5, 6), false}}});
+  // Four bars around the unit cube [0, 1]^3, each touching the next along a vertical edge, and two plates below and
+  // above it, each touching the four bars along an edge: the cube is enclosed by shells that meet only along edges
+  // (a cell of its own, with the same sides as the space around).
+  cases.push_back({"a hole enclosed by six boxes meeting along edges",
+                   scene_in(3, {axis_box("W", pt(-1, 0, 0), pt(0, 1, 1)), axis_box("S", pt(0, -1, 0), pt(1, 0, 1)),
+                                axis_box("E", pt(1, 0, 0), pt(2, 1, 1)), axis_box("N", pt(0, 1, 0), pt(1, 2, 1)),
+                                axis_box("D", pt(0, 0, -1), pt(1, 1, 0)), axis_box("U", pt(0, 0, 1), pt(1, 1, 2))}),
+                   {{{0, 0, 0, 0, 0, 0}, 209, true},
+                    {{0, 0, 0, 0, 0, 0}, 1, false},
+                    {{1, 0, 0, 0, 0, 0}, 1, false},
+                    {{0, 1, 0, 0, 0, 0}, 1, false},
+                    {{0, 0, 1, 0, 0, 0}, 1, false},
+                    {{0, 0, 0, 1, 0, 0}, 1, false},
+                    {{0, 0, 0, 0, 1, 0}, 1, false},
+                    {{0, 0, 0, 0, 0, 1}, 1, false}}});
+  return cases;
+}
+
+}  // namespace
+
+TEST_CASE("Arrangement3 against Nef: shells touching at a vertex or along an edge", "[nef3][arrangement3]") {
+  for (ContactCase& c : contact_cases()) {
+    INFO(c.what);
+    validate_and_resolve(c.scene);
+    const Arrangement3 arr = Arrangement3::build(c.scene);
+    std::vector<ExpectedCell> got;
+    for (const ArrCell3& cell : arr.cells()) {
+      got.push_back({cell.inside, *cell.volume, cell.outer});
+      for (std::size_t h = 0; h < c.scene.halfspaces.size(); ++h)
+        CHECK(direct_side(c.scene.halfspaces[h], cell.interior) == (cell.inside[h] ? 1 : -1));
+    }
+    std::sort(got.begin(), got.end());
+    std::sort(c.cells.begin(), c.cells.end());
+    CHECK(got == c.cells);
+    long outer = 0;
+    for (const ExpectedCell& e : c.cells) outer += e.outer ? 1 : 0;
+    check_against_nef(c.scene, static_cast<long>(c.cells.size()), outer);
+  }
+}
+
+// Unit cubes and unit-leg tetrahedra at random grid positions: most pairs touch at a vertex or along an edge, or
+// share a face, and their holes and pockets are enclosed by such contacts.
+TEST_CASE("Arrangement3 against Nef: random grid cubes and corner tetrahedra (contacts at vertices and edges)",
+          "[nef3][arrangement3]") {
+  for (std::uint64_t index = 0; index < 16; ++index) {
+    INFO("grid scene, item " << index);
+    Random rng(item_seed(77, index));
+    std::vector<Halfspace3> hs;
+    const long n = rng.in(3, 10);
+    for (long k = 0; k < n; ++k) {
+      const PointQ3 o = pt(rng.in(-1, 1), rng.in(-1, 1), rng.in(-1, 1));
+      const std::string name = "H" + std::to_string(k);
+      if (rng.one_in(3))
+        hs.push_back(tetrahedron(name, o, add(o, pt(1, 0, 0)), add(o, pt(0, 1, 0)), add(o, pt(0, 0, 1))));
+      else if (rng.one_in(2))
+        hs.push_back(tetrahedron(name, add(o, pt(1, 1, 1)), add(o, pt(0, 1, 1)), add(o, pt(1, 0, 1)), add(o, pt(1, 1, 0))));
+      else
+        hs.push_back(axis_box(name, o, add(o, pt(1, 1, 1))));
+    }
+    check_against_nef(scene_in(3, std::move(hs)));
   }
 }

@@ -96,9 +96,12 @@ class Arrangement3 {
   /// For each scene sample, a triangle that holds it and carries the sample's halfspace.
   const std::vector<int>& sample_triangles() const { return sample_triangles_; }
 
-  /// Exact point location of a rational point: the cell, triangle (interior), edge or vertex holding it, Outside
-  /// beyond the domain box. Exact ray shooting over every triangle (interval boxes skip most): O(triangles); the
-  /// triangles' planes are computed on the first call.
+  /// Exact point location of a rational point `p`: the cell, triangle (interior), edge or vertex holding it (the
+  /// lowest-numbered triangle when several hold it), Outside beyond the domain box. Exact ray shooting: the
+  /// triangles a ray meets come from an AABB tree over the triangles with exact ray-box and ray-triangle
+  /// predicates, so a query costs O(log triangles + the triangles on the ray), of which only those whose interval
+  /// crossing bound can come first are decided in rationals. The tree and the triangles' planes are built on the
+  /// first call (figure19_b, 24k triangles: about 0.5 s, then about 0.1 ms a point).
   PointLocation3 locate(const PointQ3& p) const;
 
  private:

@@ -48,14 +48,15 @@ const char* kAllKinds = R"({"format": "hsx-scene/1", "dimension": 3, "descriptio
   "halfspaces": [
     {"name": "P", "kind": "plane", "normal": [0, 0, 1], "offset": "1/2"},
     {"name": "B", "kind": "box", "min": [0, 0, 0], "max": [1, 2, 3], "complement": true},
-    {"name": "S", "kind": "sphere", "center": [1, 1, 1], "radius": 2.5, "tessellation": {"segments": 12}},
+    {"name": "S", "kind": "sphere", "center": [1, 1, 1], "radius": 2.5,
+     "tessellation": {"segments": 12, "bands": 4, "frame": "bsh"}},
     {"name": "C", "kind": "cylinder", "axis_point1": [0, 0, -1], "axis_point2": [0, 0, 1], "radius": 1,
      "tessellation": {"edge_length": 0.5}},
     {"name": "I", "kind": "cylinder", "axis_point1": [0, 0, 0], "axis_point2": [1, 0, 0], "radius": 3,
      "infinite": true, "tessellation": {"segments": 8}},
     {"name": "K", "kind": "cone", "apex": [0, 0, 5], "base_center": [0, 0, 2], "radius": 1},
     {"name": "T", "kind": "torus", "center": [0, 0, 0], "axis": [0, 1, 1], "major_radius": 4, "minor_radius": 1,
-     "tessellation": {"segments": 16, "minor_segments": 6}}
+     "tessellation": {"segments": 16, "minor_segments": 6, "frame": "bsh"}}
   ],
   "samples": [{"on": "P", "at": [3, 3, 0.5]}, {"on": "B", "at": [0, 1, 1]}, {"on": "S", "near": [9, 1, 1]},
               {"on": "T", "near": [0, 0, 0]}]})";
@@ -67,7 +68,9 @@ TEST_CASE("3D scenes: every kind is read and round-trips", "[scene3_json]") {
   REQUIRE(s.halfspaces.size() == 7);
   CHECK(s.halfspaces[0].kind == HalfspaceKind3::Plane);
   CHECK(s.halfspaces[1].surface.triangles.size() == 12);
-  CHECK(s.halfspaces[2].surface.triangles.size() == 2 * 12 * 5);
+  CHECK(s.halfspaces[2].surface.triangles.size() == 2 * 12 * 3);  // 4 bands, 3 rings
+  CHECK(s.halfspaces[2].surface.vertices[1].y == 1);  // the authors' frame: ring point 0 towards +x from the centre
+  CHECK(s.halfspaces[2].surface.vertices[1].x > 1);
   CHECK(s.halfspaces[3].surface.triangles.size() == 4 * 13);  // ceil(2 pi / 0.5) = 13 segments
   CHECK(s.halfspaces[5].surface.triangles.size() == 2 * 32);
   CHECK(s.halfspaces[6].surface.triangles.size() == 2 * 16 * 6);
@@ -92,6 +95,12 @@ TEST_CASE("3D scene errors name the JSON path", "[scene3_json]") {
              Contains("halfspaces[0].tessellation.segments: must be between 3 and 4096"));
   CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "tessellation": {"edge_length": "1e-9"}})")),
              Contains("halfspaces[0]: tessellation:") );
+  CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "tessellation": {"segments": 8, "bands": 1}})")),
+             Contains("halfspaces[0].tessellation.bands: must be between 2 and 4096, got 1"));
+  CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "tessellation": {"segments": 8, "frame": "z"}})")),
+             Contains("halfspaces[0].tessellation.frame: expected \"smallest-axis\" or \"bsh\""));
+  CHECK_THAT(scene_error(wrap(R"({"name": "T", "kind": "torus", "center": [0, 0, 0], "axis": [0, 0, 1], "major_radius": 2, "minor_radius": 1, "tessellation": {"segments": 8, "bands": 4}})")),
+             Contains("halfspaces[0].tessellation: unknown field \"bands\""));
   CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "color": 3})")),
              Contains("halfspaces[0]: unknown field \"color\""));
   CHECK_THAT(scene_error(wrap(R"({"name": "D", "kind": "disk", "center": [0, 0], "radius": 1})")),

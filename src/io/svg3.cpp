@@ -549,7 +549,8 @@ std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const st
   // Shared definitions: per view, every patch on some state's boundary (its colour) or highlighted (amber).
   std::vector<char> on_boundary(c.patches.size(), 0), lit(c.patches.size(), 0);
   for (const Svg3State& state : states) {
-    for (const ExportedFace& f : shape_faces(arranged, state.cell_fill)) on_boundary[static_cast<std::size_t>(f.patch)] = 1;
+    for (const ExportedFace& f : shape_faces(arranged, state.cell_fill))
+      on_boundary[static_cast<std::size_t>(f.patch)] = 1;
     for (std::size_t p = 0; p < state.highlight_patches.size(); ++p) lit[p] |= state.highlight_patches[p];
   }
   std::string defs = "<defs>\n";
@@ -596,7 +597,8 @@ std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const st
               svg_number(options.opacity) + "\" stroke-width=\"0.4\" stroke-linejoin=\"round\">\n";
       for (std::size_t q : order) body += use("face", q, view + "p" + std::to_string(q));
       body += "</g>\n";
-      if (std::find(state.highlight_patches.begin(), state.highlight_patches.end(), 1) != state.highlight_patches.end()) {
+      const auto& lit_here = state.highlight_patches;
+      if (std::find(lit_here.begin(), lit_here.end(), 1) != lit_here.end()) {
         body += "<g class=\"view\" data-view=\"" + svg_escape(l.views[v].name) + "\" fill-opacity=\"" +
                 svg_number(options.opacity) + "\" stroke-width=\"0.4\" stroke-linejoin=\"round\">\n";
         for (std::size_t q = 0; q < state.highlight_patches.size(); ++q)
@@ -610,7 +612,8 @@ std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const st
         if (missing[k]) {
           const Vec q = to_vec(scene.samples[k].location);
           rings += "<circle class=\"missing\" data-id=\"" + std::to_string(k) + "\" cx=\"" + svg_number(p.X(q)) +
-                   "\" cy=\"" + svg_number(p.Y(q)) + "\" r=\"8\" fill=\"none\" stroke=\"#e63946\" stroke-width=\"2\"/>\n";
+                   "\" cy=\"" + svg_number(p.Y(q)) +
+                   "\" r=\"8\" fill=\"none\" stroke=\"#e63946\" stroke-width=\"2\"/>\n";
         }
       body += rings;
     }

@@ -40,6 +40,7 @@ print("\n".join(problems))
 PY
 [ -z "$(cat "$work/check.txt")" ] && ok || bad "bench --bsh-example: $(cat "$work/check.txt")"
 
+expect 2 "needs a positive number of seconds" -- "$hsx" bench --bsh-example "$data/figure15_a" --time-limit 0
 expect 2 "exclude each other" -- "$hsx" bench --bsh-example "$data/figure15_a" --cuts
 expect 2 "does not apply to --bsh-example" -- "$hsx" bench --bsh-example "$data/figure15_a" --brute-force-limit 5
 finish

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -196,10 +197,13 @@ TriangleSurface torus_surface(const Primitive3& p) {
   return s;
 }
 
-TriangleSurface cone_surface(const Primitive3& p) {
+TriangleSurface infinite_cone_surface(const Primitive3& p, const Box3& domain);
+
+TriangleSurface cone_surface(const Primitive3& p, const Box3& domain) {
   check_positive(p.radius, "radius");
   const PointQ3 a = sub(p.point2, p.point1);
   if (is_zero(a)) throw InputError("the axis has zero length (apex == base_center)");
+  if (p.infinite) return infinite_cone_surface(p, domain);
   const int n = circle_segments(p.tessellation, p.radius);
   check_triangles(std::size_t(2) * n);
   const Frame f = frame_of(a, p.tessellation.frame);
@@ -311,17 +315,17 @@ std::vector<Polygon3> box_faces(const Box3& b) {
   return faces;
 }
 
-TriangleSurface infinite_cylinder_surface(const Primitive3& p, const Box3& domain) {
-  const PointQ3 a = sub(p.point2, p.point1);
-  const int n = circle_segments(p.tessellation, p.radius);
-  TriangleSurface ring;
-  add_ring(ring, real(p.point1), Real(p.radius), frame_of(a, p.tessellation.frame), n);
+/// The domain box clipped by n planes, plane k through ring points k and k+1 and `third(k)`, each keeping the side
+/// of `inside`; refused (naming `what`) when nothing of the box is left.
+TriangleSurface clipped_box(const Box3& domain, const std::vector<PointQ3>& ring,
+                            const std::function<PointQ3(std::size_t)>& third, const PointQ3& inside,
+                            const std::string& what) {
+  const std::size_t n = ring.size();
   std::vector<Polygon3> faces = box_faces(domain);
-  for (int k = 0; k < n; ++k) {
-    const PointQ3& q0 = ring.vertices[static_cast<std::size_t>(k)];
-    const PointQ3& q1 = ring.vertices[static_cast<std::size_t>((k + 1) % n)];
-    PointQ3 normal = triangle_normal(q0, q1, PointQ3{q0.x + a.x, q0.y + a.y, q0.z + a.z});
-    if (sgn(dot3(normal, sub(p.point1, q0))) > 0) normal = {-normal.x, -normal.y, -normal.z};
+  for (std::size_t k = 0; k < n; ++k) {
+    const PointQ3& q0 = ring[k];
+    PointQ3 normal = triangle_normal(q0, ring[(k + 1) % n], third(k));
+    if (sgn(dot3(normal, sub(inside, q0))) > 0) normal = {-normal.x, -normal.y, -normal.z};
     faces = clip(faces, normal, dot3(normal, q0));
     if (faces.empty()) break;
   }
@@ -330,9 +334,31 @@ TriangleSurface infinite_cylinder_surface(const Primitive3& p, const Box3& domai
   for (const auto& t : s.triangles)
     six_volume += dot3(s.vertices[t[0]], triangle_normal(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]));
   if (s.triangles.size() < 4 || sgn(six_volume) <= 0)
-    throw InputError("the infinite cylinder does not cross the domain box (nothing of it lies inside)");
+    throw InputError("the infinite " + what + " does not cross the domain box (nothing of it lies inside)");
   check_triangles(s.triangles.size());
   return s;
+}
+
+TriangleSurface infinite_cylinder_surface(const Primitive3& p, const Box3& domain) {
+  const PointQ3 a = sub(p.point2, p.point1);
+  const int n = circle_segments(p.tessellation, p.radius);
+  TriangleSurface ring;
+  add_ring(ring, real(p.point1), Real(p.radius), frame_of(a, p.tessellation.frame), n);
+  const auto beside = [&](std::size_t k) {
+    const PointQ3& q = ring.vertices[k];
+    return PointQ3{q.x + a.x, q.y + a.y, q.z + a.z};
+  };
+  return clipped_box(domain, ring.vertices, beside, p.point1, "cylinder");
+}
+
+/// One nappe from the apex through the base ring, unbounded: the box clipped by the planes through the apex
+/// (exact) and consecutive ring points.
+TriangleSurface infinite_cone_surface(const Primitive3& p, const Box3& domain) {
+  const PointQ3 a = sub(p.point2, p.point1);
+  const int n = circle_segments(p.tessellation, p.radius);
+  TriangleSurface ring;
+  add_ring(ring, real(p.point2), Real(p.radius), frame_of(a, p.tessellation.frame), n);
+  return clipped_box(domain, ring.vertices, [&](std::size_t) { return p.point1; }, p.point2, "cone");
 }
 
 TriangleSurface cylinder_surface(const Primitive3& p, const Box3& domain) {
@@ -430,7 +456,7 @@ TriangleSurface tessellate(const Halfspace3& h, const Box3& domain) {
     case HalfspaceKind3::Box: return box_surface(p.min, p.max);
     case HalfspaceKind3::Sphere: return sphere_surface(p);
     case HalfspaceKind3::Cylinder: return cylinder_surface(p, domain);
-    case HalfspaceKind3::Cone: return cone_surface(p);
+    case HalfspaceKind3::Cone: return cone_surface(p, domain);
     case HalfspaceKind3::Torus: return torus_surface(p);
     case HalfspaceKind3::Plane:
     case HalfspaceKind3::Mesh: break;
@@ -455,7 +481,10 @@ std::string tessellation_summary(const Halfspace3& h) {
       out += std::string(h.primitive.infinite ? " (infinite, clipped by the domain)" : "") + ", " +
              std::to_string(circle_segments(t, h.primitive.radius)) + " segments";
       break;
-    case HalfspaceKind3::Cone: out += ", " + std::to_string(circle_segments(t, h.primitive.radius)) + " segments"; break;
+    case HalfspaceKind3::Cone:
+      out += std::string(h.primitive.infinite ? " (infinite, clipped by the domain)" : "") + ", " +
+             std::to_string(circle_segments(t, h.primitive.radius)) + " segments";
+      break;
     default: break;
   }
   return out + ", " + std::to_string(h.surface.triangles.size()) + " triangles";

@@ -148,13 +148,44 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
       f.at("minor_radius").fail("must be below major_radius (otherwise the torus intersects itself)");
     p.tessellation = bsh_tessellation(h, p.major_radius, &p.minor_radius);
   } else if (type == "cone") {
-    f.at("type").fail("type \"cone\" is not read: theirs is one open nappe clipped by the box, which hsx cannot "
-                      "tessellate yet (none of the authors' examples has one)");
+    f.check_keys({"type", "name", "samples", "color", "is_flipped", "apex", "axis_vector", "apex_angle"}, "a cone");
+    hs.kind = HalfspaceKind3::Cone;
+    p.point1 = point3(f.at("apex"));
+    const PointQ3 axis = point3(f.at("axis_vector"));
+    if (sgn(axis.x) == 0 && sgn(axis.y) == 0 && sgn(axis.z) == 0) f.at("axis_vector").fail("must not be zero");
+    const double angle = f.at("apex_angle").rational().get_d();
+    if (!(angle > 0 && angle < M_PI / 2))
+      f.at("apex_angle").fail("must be between 0 and pi/2 (the half angle of one nappe; above pi/2 the authors' "
+                              "mesh lies on the other nappe than their function)");
+    // Their mesh (Mesh_BSH::generate_cone), in doubles, read exactly: the ring at 1.001 times the distance from the
+    // apex to the farthest box corner, about the axis.
+    const double w[3] = {axis.x.get_d(), axis.y.get_d(), axis.z.get_d()};
+    const double norm = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    const double apex[3] = {p.point1.x.get_d(), p.point1.y.get_d(), p.point1.z.get_d()};
+    double far = 0;
+    for (int c = 0; c < 8; ++c) {
+      const double corner[3] = {(c & 1 ? domain.max : domain.min).x.get_d(), (c & 2 ? domain.max : domain.min).y.get_d(),
+                                (c & 4 ? domain.max : domain.min).z.get_d()};
+      double d2 = 0;
+      for (int i = 0; i < 3; ++i) d2 += (corner[i] - apex[i]) * (corner[i] - apex[i]);
+      far = std::max(far, std::sqrt(d2));
+    }
+    far *= 1.001;
+    p.point2 = PointQ3{Rational(apex[0] + far * std::cos(angle) * w[0] / norm),
+                       Rational(apex[1] + far * std::cos(angle) * w[1] / norm),
+                       Rational(apex[2] + far * std::cos(angle) * w[2] / norm)};
+    p.radius = Rational(far * std::sin(angle));
+    p.infinite = true;
+    p.tessellation.frame = Tessellation3::Frame::Bsh;
+    const double box = std::sqrt(Rational((domain.max.x - domain.min.x) * (domain.max.x - domain.min.x) +
+                                          (domain.max.y - domain.min.y) * (domain.max.y - domain.min.y) +
+                                          (domain.max.z - domain.min.z) * (domain.max.z - domain.min.z)).get_d());
+    p.tessellation.segments = bsh_segments(h, box * std::sin(angle));
   } else if (type == "quadric" || type == "rbf") {
     f.at("type").fail("type \"" + type + "\" is not supported: hsx arranges planes and tessellated primitives only");
   } else {
     f.at("type").fail("unknown type " + describe_json(f.at("type").json()) +
-                      " (expected plane, sphere, cylinder or torus)");
+                      " (expected plane, sphere, cylinder, cone or torus)");
   }
   hs.name = f.at("name").string();
   if (hs.name.empty()) f.at("name").fail("the name must not be empty");

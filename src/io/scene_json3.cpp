@@ -80,7 +80,8 @@ const KindFields kKinds[] = {
     {"sphere", HalfspaceKind3::Sphere, {"name", "kind", "complement", "center", "radius", "tessellation"}},
     {"cylinder", HalfspaceKind3::Cylinder,
      {"name", "kind", "complement", "axis_point1", "axis_point2", "radius", "infinite", "tessellation"}},
-    {"cone", HalfspaceKind3::Cone, {"name", "kind", "complement", "apex", "base_center", "radius", "tessellation"}},
+    {"cone", HalfspaceKind3::Cone,
+     {"name", "kind", "complement", "apex", "base_center", "radius", "infinite", "tessellation"}},
     {"torus", HalfspaceKind3::Torus,
      {"name", "kind", "complement", "center", "axis", "major_radius", "minor_radius", "tessellation"}},
 };
@@ -107,8 +108,7 @@ void read_primitive(const JsonField& f, Halfspace3& h, const NumberLimits& n) {
         f.at(cyl ? "axis_point2" : "base_center")
             .fail(std::string("the axis has zero length (equal to ") + (cyl ? "axis_point1" : "apex") + ")");
       p.radius = positive(f.at("radius"), n);
-      if (cyl)
-        if (auto inf = f.get("infinite")) p.infinite = inf->boolean();
+      if (auto inf = f.get("infinite")) p.infinite = inf->boolean();
       break;
     }
     case HalfspaceKind3::Torus:
@@ -171,7 +171,7 @@ Halfspace3 read_halfspace3(const JsonField& f, const std::optional<Box3>& domain
   }
   read_primitive(f, h, n);
   if (h.primitive.infinite && !domain)
-    f.at("infinite").fail("an infinite cylinder is clipped by the domain: give \"domain\"");
+    f.at("infinite").fail(std::string("an infinite ") + to_string(h.kind) + " is clipped by the domain: give \"domain\"");
   try {
     const int segments = largest_circle_segments(h);
     if (segments > limits.max_segments)
@@ -239,6 +239,7 @@ json halfspace_json(const Halfspace3& h) {
       j["apex"] = point_json(p.point1);
       j["base_center"] = point_json(p.point2);
       j["radius"] = rational_to_json(p.radius);
+      if (p.infinite) j["infinite"] = true;
       break;
     case HalfspaceKind3::Torus:
       j["center"] = point_json(p.center);

@@ -585,7 +585,7 @@ TEST_CASE("the BSH authors' nine examples", "[.][bsh_examples]") {
     };
     CHECK_THAT(refusal(R"({"type": "rbf", "name": "1"})"), Contains("config.json: input[0].type: type \"rbf\" is not supported"));
     CHECK_THAT(refusal(R"({"type": "quadric", "name": "1"})"), Contains("type \"quadric\" is not supported"));
-    CHECK_THAT(refusal(R"({"type": "cone", "name": "1"})"), Contains("type \"cone\" is not read"));
+    CHECK_THAT(refusal(R"({"type": "cone", "name": "1"})"), Contains("missing field \"apex\""));
     CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 0})"),
                Contains("input[0].radius: must be positive"));
     CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 1, "samples": "none.xyz"})"),

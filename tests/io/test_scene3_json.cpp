@@ -1,10 +1,14 @@
 // Tests of the 3D part of hsx-scene/1 (io/scene_json.hpp): every kind read, errors naming the JSON path, mesh
 // files in OBJ, OFF and PLY giving the same scene, the write/read round trip, and the regression scenes in
 // data/scenes3d.
+#include <hsx/geometry/mesh3.hpp>
+#include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/bsh_config.hpp>
 #include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
+
+#include <cmath>
 
 #include <filesystem>
 #include <fstream>
@@ -160,6 +164,30 @@ TEST_CASE("the BSH authors' config: a folder of our own", "[scene3_json]") {
   CHECK(s.samples.size() == 3);
   CHECK(s.samples[2].distance2 == 0);
   CHECK(s.domain.max.x == 2);
+  // Their cone: one nappe from the apex, half angle 0.5 about +z, clipped by the box: here the cone of height 2.
+  write("cone.json", R"({"input": [{"type": "cone", "name": "K", "apex": [0, 0, 0], "axis_vector": [0, 0, 3],
+      "apex_angle": 0.5, "is_flipped": false}]})");
+  const Scene3 cone = read_bsh_config_file((dir / "cone.json").string());
+  REQUIRE(cone.halfspaces.size() == 1);
+  const Halfspace3& k = cone.halfspaces[0];
+  CHECK(k.kind == HalfspaceKind3::Cone);
+  CHECK(k.primitive.infinite);
+  CHECK(k.primitive.tessellation.segments == bsh_segments(std::sqrt(48.0) / 64, std::sqrt(48.0) * std::sin(0.5)));
+  double six_volume = 0;
+  for (const auto& t : k.surface.triangles) {
+    const PointQ3 &a = k.surface.vertices[t[0]], &b = k.surface.vertices[t[1]], &c = k.surface.vertices[t[2]];
+    six_volume += dot3(a, triangle_normal(a, b, c)).get_d();
+  }
+  const double height = 2, radius = 2 * std::tan(0.5), analytic = M_PI * radius * radius * height / 3;
+  CHECK(six_volume / 6 < analytic);  // inscribed
+  CHECK(six_volume / 6 > analytic * 0.999);
+  CHECK(write_scene3(cone).dump().find("\"infinite\":true") != std::string::npos);
+  const Scene3 back = read_scene3(parse_exact_json(write_scene3(cone).dump()));
+  CHECK(back.halfspaces[0].surface.triangles == k.surface.triangles);
+  write("cone.json", R"({"input": [{"type": "cone", "name": "K", "apex": [0, 0, 0], "axis_vector": [0, 0, 1],
+      "apex_angle": 2}]})");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "cone.json").string()),
+                    Contains("input[0].apex_angle: must be between 0 and pi/2"));
   write("1_sample.xyz", "3\n0.5 0 zero\n");
   CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("1_sample.xyz:2: coordinate \"zero\""));
   write("1_sample.xyz", "3\n0.5 0\n");

@@ -36,6 +36,8 @@
 //   P(point1, r, k+1), parallel to a) clip the domain box exactly (a convex polyhedron, computed exactly); each
 //   face of the result is a convex polygon fanned from its first vertex, or from its vertex centroid when three
 //   consecutive vertices are collinear. Its faces on the domain box carry no patch (they are on the box).
+// - Infinite cone (Primitive3::infinite, one nappe): the same with the planes through the apex (exact) and ring
+//   points P(base_center, r, k) and P(base_center, r, k+1), each keeping the base centre's side.
 // - Segment counts: Segments mode gives n directly (torus tube: minor_segments, or n when 0). EdgeLength L gives
 //   each circle of radius rho n = max(3, ceil(2 pi rho / L)) (computed in double precision; torus: rho =
 //   major_radius about the axis, minor_radius around the tube). Bounds: 3 <= n <=

@@ -22,9 +22,15 @@
 //   lateral planes pass through the ring of axis_point1 (their ring is shifted along the axis, which leaves the
 //   planes unchanged). Their planes are quads reaching beyond the box, which inside the box is the plane itself:
 //   hsx keeps them exact planes, clipped by the arrangement.
-// - `cone` is refused (no example uses it; theirs is one open nappe, apex_angle the half angle, meshed as a fan of
-//   n triangles from the apex to a ring beyond the box, n from r = the box diagonal sin(apex_angle); hsx has no
-//   open, box-clipped cone yet), as are `quadric` and `rbf`, with a message naming the entry. `color` is ignored;
+//     cone:     `apex`, `axis_vector`, `apex_angle` (the half angle, in (0, pi/2)) -> one infinite nappe (their f < 0
+//               where the angle between x - apex and the axis is below apex_angle), clipped exactly by the domain
+//               box: their ring (Mesh_BSH::generate_cone, in double precision, its doubles taken exactly) has its
+//               centre at apex + L cos(apex_angle) w and radius L sin(apex_angle), L = 1.001 times the distance
+//               from the apex to the farthest box corner, w = the unit axis; n = their count for a circle of radius
+//               (box diagonal) sin(apex_angle); the lateral planes through the apex and consecutive ring points
+//               (rounded as in geometry/tessellate3.hpp) clip the box. An obtuse apex_angle is refused: their mesh
+//               then lies on the +axis nappe while their f's zero set is the -axis one.
+// - `quadric` and `rbf` are refused with a message naming the entry. `color` is ignored;
 //   any other unknown field is refused.
 // - Samples are inexact points near the surface: each becomes a `near` sample of its halfspace (snapped exactly).
 // - Errors are InputError naming the file and the JSON path or line: "config.json: input[3].radius: ...",

@@ -1,6 +1,7 @@
 // hsx bench [DIR...]: every method on every scene, each timed repeatedly (kernel/timing.hpp), reported as medians
 // with their spread and as ratios of medians to the graph cut, side by side in one run; with --meshes, NH-Rep's
-// stages on meshes, as ratios to reading the mesh; with --3d, the exact 3D arrangement beside CGAL's Nef polyhedra.
+// stages on meshes, as ratios to reading the mesh; with --3d, the exact 3D arrangement beside CGAL's Nef polyhedra;
+// with --bsh-example, the BSH authors' examples end to end beside their own figures.
 // --csv and --json write the same figures.
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/bsh/graph_cut.hpp>
@@ -66,6 +67,7 @@ struct BenchOptions {
   /// Campaign mode: one row per scene size and check list (hsx campaign --checks): every check, and every check
   /// but the two about best-first itself (Props. 5.2 and 5.1, whose complete best-first search dominates).
   std::vector<std::string> campaign_checks{"all", kWithoutBestFirst};
+  std::vector<std::string> bsh_examples;  ///< the BSH authors' example folders: end to end beside their figures
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -569,26 +571,11 @@ void run_nhrep_bench(const BenchOptions& o, OutputFiles& files) {
 
 // ---- the 3D arrangement beside Nef ----
 
-/// The BSH authors' scene re-tessellated by their rule at h / divisor (h = the domain's diagonal / 64, as
-/// io/bsh_config.hpp reads it at divisor 1), samples snapped again.
+/// The BSH authors' scene tessellated by their rule at h / divisor (io/bsh_config.hpp reads it at divisor 1).
 Scene3 bsh_scene_at(const std::string& config, int divisor) {
-  Scene3 scene = read_bsh_config_file(config);
-  if (divisor == 1) return scene;
-  const Box3& b = scene.domain;
-  const double dx = Rational(b.max.x - b.min.x).get_d(), dy = Rational(b.max.y - b.min.y).get_d(),
-               dz = Rational(b.max.z - b.min.z).get_d();
-  const double h = std::sqrt(dx * dx + dy * dy + dz * dz) / 64 / divisor;
-  for (Halfspace3& hs : scene.halfspaces) {
-    if (hs.kind == HalfspaceKind3::Plane) continue;
-    Primitive3& p = hs.primitive;
-    const bool torus = hs.kind == HalfspaceKind3::Torus;
-    p.tessellation.segments = bsh_segments(h, (torus ? p.major_radius : p.radius).get_d());
-    if (torus) p.tessellation.minor_segments = bsh_segments(h, p.minor_radius.get_d());
-    hs.surface = tessellate(hs, scene.domain);
-    hs.origin = tessellation_summary(hs) + " (the BSH authors' rule at h/" + std::to_string(divisor) + ")";
-  }
-  validate_and_resolve(scene);
-  return scene;
+  BshReadOptions options;
+  options.h_scale = 1.0 / divisor;
+  return read_bsh_config_file(config, options);
 }
 
 long input_triangles(const Scene3& scene) {
@@ -704,6 +691,114 @@ void run_bench3(const BenchOptions& o, OutputFiles& files) {
       "(issue 12, section 5)"};
   for (const BenchRow& row : report.rows)
     if (!row.phases.empty()) report.footer.push_back(row.phases);
+  publish(report, o, files);
+}
+
+// ---- the BSH authors' examples end to end (issue 13, section 4) ----
+
+/// The authors' own code measured on this machine (docs/bsh-3d.md): end to end K = 1 (their arrangement, sample
+/// processing and graph cuts) and its search states.
+struct AuthorsRun {
+  const char* example;
+  double seconds;
+  long states;
+};
+constexpr AuthorsRun kAuthorsRuns[] = {{"figure19_b", 2.25, 21}};
+
+/// One of the authors' example folders: the arrangement (reading, tessellating, arranging: load_input), the K = 1
+/// beam on it, both end to end, the certified graph cut beside the double Boykov-Kolmogorov cut of the same
+/// problem (all timed repeatedly); the complete search (exact) and best-first once each within --time-limit; the
+/// peak memory of a process doing the arrangement, the K = 1 beam and the exact search once.
+BenchRow bench_bsh_example(const std::string& folder, const BenchOptions& o, const RepeatOptions& repeat) {
+  BenchRow row;
+  const std::filesystem::path dir = std::filesystem::path(folder).lexically_normal();
+  row.input = (dir.has_filename() ? dir : dir.parent_path()).filename().string();
+  const std::string config = (dir / "config.json").string();
+  if (!std::filesystem::is_regular_file(config)) {
+    row.skipped = "no " + config + " (the BSH authors' data is not in this repository)";
+    return row;
+  }
+  std::optional<LoadedInput> in;
+  StageResult arrangement, search, end_to_end, certified, double_bk, exact, best_first;
+  arrangement.timing = time_repeatedly([&] { in = load_input(config, o.limits); }, repeat);
+  const bsh::Problem problem(in->complex());
+  bsh::ExtractOptions beam;
+  beam.method = bsh::Method::Beam;
+  beam.beam_width = 1;
+  bsh::ExtractResult beam_result;
+  search.timing = time_repeatedly([&] { beam_result = bsh::extract(problem, beam); }, repeat);
+  end_to_end.timing = time_repeatedly(
+      [&] {
+        const LoadedInput loaded = load_input(config, o.limits);
+        bsh::extract(bsh::Problem(loaded.complex()), beam);
+      },
+      repeat);
+  bsh::CutResult cut;
+  certified.timing = time_repeatedly([&] { cut = bsh::graph_cut(problem, {}); }, repeat);
+  double_bk.timing = time_repeatedly([&] { double_cut(problem, true); }, repeat);
+  RepeatOptions once;
+  once.min_repetitions = 1;
+  once.min_seconds = 0;
+  bsh::ExtractOptions complete;
+  complete.method = bsh::Method::Exact;
+  complete.time_limit = o.time_limit;
+  bsh::ExtractResult exact_result, best_first_result;
+  exact.timing = time_repeatedly([&] { exact_result = bsh::extract(problem, complete); }, once);
+  complete.method = bsh::Method::BestFirst;
+  best_first.timing = time_repeatedly([&] { best_first_result = bsh::extract(problem, complete); }, once);
+  complete.method = bsh::Method::Exact;
+  const auto peak = peak_memory_of([&] {
+    const LoadedInput loaded = load_input(config, o.limits);
+    const bsh::Problem p(loaded.complex());
+    bsh::extract(p, beam);
+    bsh::extract(p, complete);
+  });
+  row.sizes = {problem.cell_count(), static_cast<long>(in->complex().patches.size())};
+  row.stages = {arrangement, search, end_to_end, certified, double_bk, exact, best_first};
+  const auto verdict = [](const bsh::ExtractResult& r) {
+    return r.optimal ? std::string("optimal") : "stopped: " + (r.stopped_by.empty() ? "unproven" : r.stopped_by);
+  };
+  std::string theirs = "-", versus = "-";
+  for (const AuthorsRun& run : kAuthorsRuns)
+    if (row.input == run.example) {
+      theirs = printf_string("%.2f s", run.seconds) + ", " + std::to_string(run.states);
+      versus = printf_string("%.2fx", end_to_end.timing->median / run.seconds);
+    }
+  row.notes = {std::to_string(beam_result.stats.states_expanded), theirs, versus, cut.certified ? "yes" : "no",
+               verdict(exact_result), std::to_string(exact_result.stats.nodes),
+               !exact_result.optimal                                                  ? "-"
+               : bsh::compare(beam_result.energy, exact_result.energy) == Order::Equal ? "yes"
+                                                                                       : "no",
+               std::to_string(best_first_result.stats.states_expanded) + (best_first_result.optimal ? " (done)" : ""),
+               megabytes(peak)};
+  return row;
+}
+
+void run_bsh_example_bench(const BenchOptions& o, OutputFiles& files) {
+  if (!std::isfinite(o.time_limit) || o.time_limit <= 0)  // best-first does not finish on figure19_b
+    throw InputError("--time-limit: --bsh-example needs a positive number of seconds for its complete searches");
+  Report report;
+  report.mode = "bsh-examples";
+  report.input_name = "example";
+  report.size_names = {"cells", "patches"};
+  report.stage_names = {"arrange", "K=1 search", "K=1 e2e", "cert. cut", "double BK", "exact", "best-first"};
+  report.with_ratio = {0, 0, 0, 1, 0, 0, 0};
+  report.reference = 4;
+  report.note_names = {"K=1 states", "theirs e2e", "e2e/theirs", "cut cert.", "exact", "nodes",
+                       "beam = opt", "bf states", "peak MB"};
+  report.repeat = repeat_options(o);
+  for (const std::string& folder : o.bsh_examples) report.rows.push_back(bench_bsh_example(folder, o, report.repeat));
+  report.footer = {
+      "arrange: reading config.json, tessellating, the exact arrangement and its complex (hsx's load_input); K=1 "
+      "search: the beam of width 1 on it (bsh::extract); K=1 e2e: both together, the figure to set beside the "
+      "authors' own end to end run (theirs e2e: seconds, states; measured on this machine, docs/bsh-3d.md); cert. "
+      "cut: the certified graph cut of the problem, ratio to the double Boykov-Kolmogorov max flow of the same graph",
+      "exact and best-first: the complete searches, run once each within --time-limit seconds (" +
+          printf_string("%g", o.time_limit) + "); exact: its verdict, nodes: its branch-and-bound "
+          "nodes; beam = opt: the K = 1 energy equals the exact one; bf states: states best-first expanded ((done): "
+          "it proved its result optimal; the tie enumeration after it may still run into the limit)",
+      "peak MB: peak resident memory of a child process doing the arrangement, the K = 1 beam and the exact search "
+      "once (kernel/timing.hpp, peak_memory_of)"};
   publish(report, o, files);
 }
 
@@ -840,6 +935,10 @@ void add_bench_command(CLI::App& app) {
       cmd->add_option("--campaign-time-limit", o->campaign_time_limit,
                       "--campaign: seconds per scene (default 2; 0: none)")
           ->check(seconds())};
+  cmd->add_option("--bsh-example", o->bsh_examples,
+                  "time the BSH authors' example folders end to end (arrangement, K = 1 beam, the certified and the "
+                  "double graph cut, the complete searches within --time-limit, peak memory) beside their own "
+                  "figures, instead (a folder without config.json is reported as skipped)");
   cmd->add_flag("--campaign", o->campaign,
                 "time hsx campaign's runner (every check) on 1 and 2 threads, scenes per second, instead");
   add_arrangement_limits(cmd, o->limits);
@@ -854,13 +953,19 @@ void add_bench_command(CLI::App& app) {
     OutputFiles files;  // checked before the measurements, written at the end
     files.expect(o->csv_path, "--csv");
     files.expect(o->json_path, "--json");
-    if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) + int(o->campaign) > 1)
-      throw InputError("bench: --cuts, --3d, --meshes and --campaign exclude each other");
+    const bool examples = !o->bsh_examples.empty();
+    if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) + int(o->campaign) + int(examples) > 1)
+      throw InputError("bench: --cuts, --3d, --meshes, --campaign and --bsh-example exclude each other");
+    if (examples)
+      for (CLI::Option* option : {dirs, brute_force})
+        if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --bsh-example");
     if (o->campaign)
       for (CLI::Option* option : {dirs, brute_force, time_limit})
         if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --campaign");
     if (!o->cuts && !o->cut_inputs.empty()) throw InputError("bench: --cut-inputs needs --cuts");
-    if (o->campaign)
+    if (examples)
+      run_bsh_example_bench(*o, files);
+    else if (o->campaign)
       run_campaign_bench(*o, files);
     else if (o->cuts)
       run_cut_bench(*o, files);

@@ -158,7 +158,7 @@ bsh::Labelling state_labelling(const bsh::Problem& problem, const bsh::ExtractRe
 std::string states_picture(const LoadedInput& in, const bsh::Problem& problem, const bsh::ExtractResult& r,
                            int beam_width, bool labels) {
   const Complex& c = in.complex();
-  std::vector<std::string> pictures;
+  std::vector<Svg3State> states;
   for (std::size_t k = 0; k < r.steps.size(); ++k) {
     const bsh::Labelling labelling = state_labelling(problem, r, beam_width, k);
     const bsh::Energy energy = bsh::energy(problem, labelling);
@@ -169,12 +169,24 @@ std::string states_picture(const LoadedInput& in, const bsh::Problem& problem, c
     if (r.steps[k].empty()) title += " graph cut";
     title += " | " + std::to_string(energy.missing_samples) + " missing, " + (c.dimension == 3 ? "area " : "length ") +
              energy.measure().decimal_string(7);
-    pictures.push_back(shape_picture(in, labelling, removed, title, labels, true));
+    states.push_back({labelling, removed, title});
   }
-  if (pictures.empty())  // stopped before a sample-connected state, or replaced by the oracle's optimum
-    pictures.push_back(shape_picture(in, r.labelling, {}, "the result (" +
-                                         std::string(r.stopped_by.empty() ? r.optimality_note : "stopped by " + r.stopped_by) +
-                                         "): no path of states", labels, true));
+  if (states.empty())  // stopped before a sample-connected state, or replaced by the oracle's optimum
+    states.push_back({r.labelling, {}, "the result (" +
+                                           std::string(r.stopped_by.empty() ? r.optimality_note
+                                                                            : "stopped by " + r.stopped_by) +
+                                           "): no path of states"});
+  if (in.scene3) {  // 3D: each patch drawn once, shared by the panels (io/svg3.hpp)
+    Svg3Options svg;
+    svg.show_cell_ids = svg.show_patch_ids = labels;
+    svg.highlight_legend = "removed patches";
+    svg.width = 560;
+    svg.views = {default_svg_views3().back()};
+    return states_svg3(*in.scene3, *in.arranged3, states, svg, 3);
+  }
+  std::vector<std::string> pictures;
+  for (const Svg3State& state : states)
+    pictures.push_back(shape_picture(in, state.cell_fill, state.highlight_patches, state.title, labels, true));
   return svg_grid(pictures, 3);
 }
 

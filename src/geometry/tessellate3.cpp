@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -80,15 +81,29 @@ struct Frame {
   Vec u, v, w;
 };
 
-Frame frame_of(const PointQ3& a) {
+Vec coordinate_axis(int e) { return {Real(Rational(e == 0)), Real(Rational(e == 1)), Real(Rational(e == 2))}; }
+
+/// The frame of axis `a` under `style` (tessellate3.hpp): e = the coordinate axis of the smallest |a_i|, or the
+/// authors' +x (+y when a is parallel to x).
+Frame frame_of(const PointQ3& a, Tessellation3::Frame style) {
   Frame f;
   f.w = unit(real(a));
-  const Rational ax = abs(a.x), ay = abs(a.y), az = abs(a.z);
-  const int e = ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2);
-  const Vec axis{Real(Rational(e == 0)), Real(Rational(e == 1)), Real(Rational(e == 2))};
-  f.u = unit(cross(f.w, axis));
+  int e = 0;
+  if (style == Tessellation3::Frame::Bsh) {
+    e = sgn(a.y) == 0 && sgn(a.z) == 0 ? 1 : 0;
+  } else {
+    const Rational ax = abs(a.x), ay = abs(a.y), az = abs(a.z);
+    e = ax <= ay && ax <= az ? 0 : (ay <= az ? 1 : 2);
+  }
+  f.u = unit(cross(f.w, coordinate_axis(e)));
   f.v = cross(f.w, f.u);
   return f;
+}
+
+/// A sphere's frame: that of +z, or the coordinate frame (u = +x, v = +y, w = +z) in the authors' style.
+Frame sphere_frame(Tessellation3::Frame style) {
+  if (style == Tessellation3::Frame::Bsh) return {coordinate_axis(0), coordinate_axis(1), coordinate_axis(2)};
+  return frame_of(PointQ3{Rational(0), Rational(0), Rational(1)}, style);
 }
 
 bool is_zero(const PointQ3& p) { return sgn(p.x) == 0 && sgn(p.y) == 0 && sgn(p.z) == 0; }
@@ -142,9 +157,9 @@ TriangleSurface box_surface(const PointQ3& lo, const PointQ3& hi) {
 TriangleSurface sphere_surface(const Primitive3& p) {
   check_positive(p.radius, "radius");
   const int n = circle_segments(p.tessellation, p.radius);
-  const int m = (n + 1) / 2;
+  const int m = sphere_bands(p.tessellation, n);
   check_triangles(std::size_t(2) * n * (m - 1));
-  const Frame f = frame_of(PointQ3{Rational(0), Rational(0), Rational(1)});
+  const Frame f = sphere_frame(p.tessellation.frame);
   const Vec c = real(p.center);
   const Real r(p.radius);
   TriangleSurface s;
@@ -170,7 +185,7 @@ TriangleSurface torus_surface(const Primitive3& p) {
   const int n = circle_segments(p.tessellation, p.major_radius);
   const int m = circle_segments(p.tessellation, p.minor_radius, true);
   check_triangles(std::size_t(2) * n * m);
-  const Frame f = frame_of(p.axis);
+  const Frame f = frame_of(p.axis, p.tessellation.frame);
   const Vec c = real(p.center);
   const Real big(p.major_radius), r(p.minor_radius);
   TriangleSurface s;
@@ -182,13 +197,16 @@ TriangleSurface torus_surface(const Primitive3& p) {
   return s;
 }
 
-TriangleSurface cone_surface(const Primitive3& p) {
+TriangleSurface infinite_cone_surface(const Primitive3& p, const Box3& domain);
+
+TriangleSurface cone_surface(const Primitive3& p, const Box3& domain) {
   check_positive(p.radius, "radius");
   const PointQ3 a = sub(p.point2, p.point1);
   if (is_zero(a)) throw InputError("the axis has zero length (apex == base_center)");
+  if (p.infinite) return infinite_cone_surface(p, domain);
   const int n = circle_segments(p.tessellation, p.radius);
   check_triangles(std::size_t(2) * n);
-  const Frame f = frame_of(a);
+  const Frame f = frame_of(a, p.tessellation.frame);
   TriangleSurface s;
   s.vertices.push_back(on_grid(real(p.point1)));
   add_ring(s, real(p.point2), Real(p.radius), f, n);
@@ -297,17 +315,17 @@ std::vector<Polygon3> box_faces(const Box3& b) {
   return faces;
 }
 
-TriangleSurface infinite_cylinder_surface(const Primitive3& p, const Box3& domain) {
-  const PointQ3 a = sub(p.point2, p.point1);
-  const int n = circle_segments(p.tessellation, p.radius);
-  TriangleSurface ring;
-  add_ring(ring, real(p.point1), Real(p.radius), frame_of(a), n);
+/// The domain box clipped by n planes, plane k through ring points k and k+1 and `third(k)`, each keeping the side
+/// of `inside`; refused (naming `what`) when nothing of the box is left.
+TriangleSurface clipped_box(const Box3& domain, const std::vector<PointQ3>& ring,
+                            const std::function<PointQ3(std::size_t)>& third, const PointQ3& inside,
+                            const std::string& what) {
+  const std::size_t n = ring.size();
   std::vector<Polygon3> faces = box_faces(domain);
-  for (int k = 0; k < n; ++k) {
-    const PointQ3& q0 = ring.vertices[static_cast<std::size_t>(k)];
-    const PointQ3& q1 = ring.vertices[static_cast<std::size_t>((k + 1) % n)];
-    PointQ3 normal = triangle_normal(q0, q1, PointQ3{q0.x + a.x, q0.y + a.y, q0.z + a.z});
-    if (sgn(dot3(normal, sub(p.point1, q0))) > 0) normal = {-normal.x, -normal.y, -normal.z};
+  for (std::size_t k = 0; k < n; ++k) {
+    const PointQ3& q0 = ring[k];
+    PointQ3 normal = triangle_normal(q0, ring[(k + 1) % n], third(k));
+    if (sgn(dot3(normal, sub(inside, q0))) > 0) normal = {-normal.x, -normal.y, -normal.z};
     faces = clip(faces, normal, dot3(normal, q0));
     if (faces.empty()) break;
   }
@@ -316,9 +334,31 @@ TriangleSurface infinite_cylinder_surface(const Primitive3& p, const Box3& domai
   for (const auto& t : s.triangles)
     six_volume += dot3(s.vertices[t[0]], triangle_normal(s.vertices[t[0]], s.vertices[t[1]], s.vertices[t[2]]));
   if (s.triangles.size() < 4 || sgn(six_volume) <= 0)
-    throw InputError("the infinite cylinder does not cross the domain box (nothing of it lies inside)");
+    throw InputError("the infinite " + what + " does not cross the domain box (nothing of it lies inside)");
   check_triangles(s.triangles.size());
   return s;
+}
+
+TriangleSurface infinite_cylinder_surface(const Primitive3& p, const Box3& domain) {
+  const PointQ3 a = sub(p.point2, p.point1);
+  const int n = circle_segments(p.tessellation, p.radius);
+  TriangleSurface ring;
+  add_ring(ring, real(p.point1), Real(p.radius), frame_of(a, p.tessellation.frame), n);
+  const auto beside = [&](std::size_t k) {
+    const PointQ3& q = ring.vertices[k];
+    return PointQ3{q.x + a.x, q.y + a.y, q.z + a.z};
+  };
+  return clipped_box(domain, ring.vertices, beside, p.point1, "cylinder");
+}
+
+/// One nappe from the apex through the base ring, unbounded: the box clipped by the planes through the apex
+/// (exact) and consecutive ring points.
+TriangleSurface infinite_cone_surface(const Primitive3& p, const Box3& domain) {
+  const PointQ3 a = sub(p.point2, p.point1);
+  const int n = circle_segments(p.tessellation, p.radius);
+  TriangleSurface ring;
+  add_ring(ring, real(p.point2), Real(p.radius), frame_of(a, p.tessellation.frame), n);
+  return clipped_box(domain, ring.vertices, [&](std::size_t) { return p.point1; }, p.point2, "cone");
 }
 
 TriangleSurface cylinder_surface(const Primitive3& p, const Box3& domain) {
@@ -328,7 +368,7 @@ TriangleSurface cylinder_surface(const Primitive3& p, const Box3& domain) {
   if (p.infinite) return infinite_cylinder_surface(p, domain);
   const int n = circle_segments(p.tessellation, p.radius);
   check_triangles(std::size_t(4) * n);
-  const Frame f = frame_of(a);
+  const Frame f = frame_of(a, p.tessellation.frame);
   const Real r(p.radius);
   TriangleSurface s;
   add_ring(s, real(p.point1), r, f, n);
@@ -362,6 +402,14 @@ int circle_segments(const Tessellation3& t, const Rational& radius, bool minor) 
   return static_cast<int>(n);
 }
 
+int sphere_bands(const Tessellation3& t, int n) {
+  const int m = t.bands != 0 ? t.bands : (n + 1) / 2;
+  if (m < 2 || m > kMaxSegments)
+    throw InputError("tessellation: " + std::to_string(m) + " latitude bands is outside the bounds [2, " +
+                     std::to_string(kMaxSegments) + "]");
+  return m;
+}
+
 int largest_circle_segments(const Halfspace3& h) {
   const Primitive3& p = h.primitive;
   switch (h.kind) {
@@ -375,10 +423,20 @@ int largest_circle_segments(const Halfspace3& h) {
   }
 }
 
-int bsh_segments(double h, double radius) {
+namespace {
+/// max(15, round(fraction pi / asin(h / 2 radius))), 15 when h >= 2 radius; above kMaxSegments: kMaxSegments + 1.
+int bsh_count(double h, double radius, double fraction) {
   if (!(radius > 0) || !(h < 2 * radius)) return 15;
-  const double n = std::round(M_PI / std::asin(h / (2 * radius)));
+  const double n = std::round(fraction * M_PI / std::asin(h / (2 * radius)));
   return n > kMaxSegments ? kMaxSegments + 1 : std::max(15, static_cast<int>(n));
+}
+}  // namespace
+
+int bsh_segments(double h, double radius) { return bsh_count(h, radius, 1); }
+
+int bsh_sphere_bands(double h, double radius) {
+  const int quarter = bsh_count(h, radius, 0.25);
+  return quarter > kMaxSegments / 2 ? kMaxSegments + 1 : 2 * quarter;
 }
 
 std::vector<std::vector<PointQ3>> box_cut_by_plane(const Box3& box, const PointQ3& normal, const Rational& offset) {
@@ -398,7 +456,7 @@ TriangleSurface tessellate(const Halfspace3& h, const Box3& domain) {
     case HalfspaceKind3::Box: return box_surface(p.min, p.max);
     case HalfspaceKind3::Sphere: return sphere_surface(p);
     case HalfspaceKind3::Cylinder: return cylinder_surface(p, domain);
-    case HalfspaceKind3::Cone: return cone_surface(p);
+    case HalfspaceKind3::Cone: return cone_surface(p, domain);
     case HalfspaceKind3::Torus: return torus_surface(p);
     case HalfspaceKind3::Plane:
     case HalfspaceKind3::Mesh: break;
@@ -412,7 +470,7 @@ std::string tessellation_summary(const Halfspace3& h) {
   switch (h.kind) {
     case HalfspaceKind3::Sphere: {
       const int n = circle_segments(t, h.primitive.radius);
-      out += ", " + std::to_string(n) + " x " + std::to_string((n + 1) / 2) + " segments";
+      out += ", " + std::to_string(n) + " x " + std::to_string(sphere_bands(t, n)) + " segments";
       break;
     }
     case HalfspaceKind3::Torus:
@@ -423,7 +481,10 @@ std::string tessellation_summary(const Halfspace3& h) {
       out += std::string(h.primitive.infinite ? " (infinite, clipped by the domain)" : "") + ", " +
              std::to_string(circle_segments(t, h.primitive.radius)) + " segments";
       break;
-    case HalfspaceKind3::Cone: out += ", " + std::to_string(circle_segments(t, h.primitive.radius)) + " segments"; break;
+    case HalfspaceKind3::Cone:
+      out += std::string(h.primitive.infinite ? " (infinite, clipped by the domain)" : "") + ", " +
+             std::to_string(circle_segments(t, h.primitive.radius)) + " segments";
+      break;
     default: break;
   }
   return out + ", " + std::to_string(h.surface.triangles.size()) + " triangles";

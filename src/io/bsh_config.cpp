@@ -5,6 +5,7 @@
 #include <hsx/io/exact_json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -26,15 +27,36 @@ Rational positive(const JsonField& f) {
   return q;
 }
 
-Box3 read_grid_box(const std::string& path) {
+/// Their grid file: the domain box and their h, the diagonal of one grid cell, |(bbox_max - bbox_min) / resolution|
+/// in double precision.
+struct Grid {
+  Box3 box;
+  double h = 0;
+};
+
+Grid read_grid(const std::string& path) {
   const json doc = read_exact_json_file(path);
   try {
     JsonField root(doc, "");
     root.expect_object();
-    Box3 box{point3(root.at("bbox_min")), point3(root.at("bbox_max"))};
+    Grid grid;
+    Box3& box = grid.box;
+    box = Box3{point3(root.at("bbox_min")), point3(root.at("bbox_max"))};
     if (!(box.min.x < box.max.x && box.min.y < box.max.y && box.min.z < box.max.z))
       root.fail("bbox_min must be below bbox_max in every coordinate");
-    return box;
+    JsonField res = root.at("resolution");
+    if (res.size() != 3) res.fail("expected [nx, ny, nz], got " + std::to_string(res.size()) + " numbers");
+    const Rational side[3] = {box.max.x - box.min.x, box.max.y - box.min.y, box.max.z - box.min.z};
+    double sum = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      JsonField r = res.at(i);
+      const std::int64_t cells = r.integer();
+      if (cells < 1 || cells > 1'000'000) r.fail("must be between 1 and 1000000, got " + std::to_string(cells));
+      const double d = side[i].get_d() / static_cast<double>(cells);
+      sum += d * d;
+    }
+    grid.h = std::sqrt(sum);
+    return grid;
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
@@ -76,16 +98,13 @@ std::vector<PointQ3> read_samples_file(const std::string& path) {
   return out;
 }
 
-double diagonal(const Box3& b) {
-  const double dx = Rational(b.max.x - b.min.x).get_d(), dy = Rational(b.max.y - b.min.y).get_d(),
-               dz = Rational(b.max.z - b.min.z).get_d();
-  return std::sqrt(dx * dx + dy * dy + dz * dz);
-}
-
-Tessellation3 bsh_tessellation(double h, const Rational& radius, const Rational* minor = nullptr) {
+/// Their tessellation of a circle of radius `radius` (a torus: also `minor`; a sphere: its latitude bands).
+Tessellation3 bsh_tessellation(double h, const Rational& radius, const Rational* minor = nullptr, bool sphere = false) {
   Tessellation3 t;
+  t.frame = Tessellation3::Frame::Bsh;
   t.segments = bsh_segments(h, radius.get_d());
   if (minor) t.minor_segments = bsh_segments(h, minor->get_d());
+  if (sphere) t.bands = bsh_sphere_bands(h, radius.get_d());
   return t;
 }
 
@@ -105,7 +124,7 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
     hs.kind = HalfspaceKind3::Sphere;
     p.center = point3(f.at("center"));
     p.radius = positive(f.at("radius"));
-    p.tessellation = bsh_tessellation(h, p.radius);
+    p.tessellation = bsh_tessellation(h, p.radius, nullptr, true);
   } else if (type == "cylinder") {
     f.check_keys({"type", "name", "samples", "color", "is_flipped", "axis_point1", "axis_point2", "radius"},
                  "a cylinder");
@@ -129,13 +148,44 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
       f.at("minor_radius").fail("must be below major_radius (otherwise the torus intersects itself)");
     p.tessellation = bsh_tessellation(h, p.major_radius, &p.minor_radius);
   } else if (type == "cone") {
-    f.at("type").fail("type \"cone\" is not read: none of the authors' examples has one, and the meaning of its "
-                      "apex_angle (half or full angle, one or two nappes) is not documented");
+    f.check_keys({"type", "name", "samples", "color", "is_flipped", "apex", "axis_vector", "apex_angle"}, "a cone");
+    hs.kind = HalfspaceKind3::Cone;
+    p.point1 = point3(f.at("apex"));
+    const PointQ3 axis = point3(f.at("axis_vector"));
+    if (sgn(axis.x) == 0 && sgn(axis.y) == 0 && sgn(axis.z) == 0) f.at("axis_vector").fail("must not be zero");
+    const double angle = f.at("apex_angle").rational().get_d();
+    if (!(angle > 0 && angle < M_PI / 2))
+      f.at("apex_angle").fail("must be between 0 and pi/2 (the half angle of one nappe; above pi/2 the authors' "
+                              "mesh lies on the other nappe than their function)");
+    // Their mesh (Mesh_BSH::generate_cone), in doubles, read exactly: the ring at 1.001 times the distance from the
+    // apex to the farthest box corner, about the axis.
+    const double w[3] = {axis.x.get_d(), axis.y.get_d(), axis.z.get_d()};
+    const double norm = std::sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    const double apex[3] = {p.point1.x.get_d(), p.point1.y.get_d(), p.point1.z.get_d()};
+    double far = 0;
+    for (int c = 0; c < 8; ++c) {
+      const double corner[3] = {(c & 1 ? domain.max : domain.min).x.get_d(), (c & 2 ? domain.max : domain.min).y.get_d(),
+                                (c & 4 ? domain.max : domain.min).z.get_d()};
+      double d2 = 0;
+      for (int i = 0; i < 3; ++i) d2 += (corner[i] - apex[i]) * (corner[i] - apex[i]);
+      far = std::max(far, std::sqrt(d2));
+    }
+    far *= 1.001;
+    p.point2 = PointQ3{Rational(apex[0] + far * std::cos(angle) * w[0] / norm),
+                       Rational(apex[1] + far * std::cos(angle) * w[1] / norm),
+                       Rational(apex[2] + far * std::cos(angle) * w[2] / norm)};
+    p.radius = Rational(far * std::sin(angle));
+    p.infinite = true;
+    p.tessellation.frame = Tessellation3::Frame::Bsh;
+    const double box = std::sqrt(Rational((domain.max.x - domain.min.x) * (domain.max.x - domain.min.x) +
+                                          (domain.max.y - domain.min.y) * (domain.max.y - domain.min.y) +
+                                          (domain.max.z - domain.min.z) * (domain.max.z - domain.min.z)).get_d());
+    p.tessellation.segments = bsh_segments(h, box * std::sin(angle));
   } else if (type == "quadric" || type == "rbf") {
     f.at("type").fail("type \"" + type + "\" is not supported: hsx arranges planes and tessellated primitives only");
   } else {
     f.at("type").fail("unknown type " + describe_json(f.at("type").json()) +
-                      " (expected plane, sphere, cylinder or torus)");
+                      " (expected plane, sphere, cylinder, cone or torus)");
   }
   hs.name = f.at("name").string();
   if (hs.name.empty()) f.at("name").fail("the name must not be empty");
@@ -161,9 +211,10 @@ Scene3 read_bsh_config(const json& doc, const std::string& directory, const std:
     throw InputError("BSH config: h_scale must be a positive number");
   const std::filesystem::path dir(directory);
   Scene3 scene;
-  scene.domain = read_grid_box((dir / "grid_64.json").string());
+  const Grid grid = read_grid((dir / "grid_64.json").string());
+  scene.domain = grid.box;
   scene.domain_given = true;
-  const double h = diagonal(scene.domain) / 64 * options.h_scale;
+  const double h = grid.h * options.h_scale;
   std::vector<std::string> sample_files;
   try {
     JsonField root(doc, "");

@@ -2,6 +2,7 @@
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/scene_json.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <unordered_map>
 #include <utility>
@@ -26,11 +27,25 @@ Rational positive(const JsonField& f, const NumberLimits& limits) {
   return q;
 }
 
-Tessellation3 read_tessellation(const JsonField& f, bool torus) {
+Tessellation3 read_tessellation(const JsonField& f, HalfspaceKind3 kind) {
   Tessellation3 t;
   f.expect_object();
-  if (torus) f.check_keys({"segments", "minor_segments", "edge_length"}, "a tessellation");
-  else f.check_keys({"segments", "edge_length"}, "a tessellation");
+  const bool torus = kind == HalfspaceKind3::Torus;
+  if (torus) f.check_keys({"segments", "minor_segments", "edge_length", "frame"}, "a tessellation");
+  else if (kind == HalfspaceKind3::Sphere) f.check_keys({"segments", "edge_length", "bands", "frame"}, "a tessellation");
+  else f.check_keys({"segments", "edge_length", "frame"}, "a tessellation");
+  if (auto frame = f.get("frame")) {
+    const std::string style = frame->string();
+    if (style == "bsh") t.frame = Tessellation3::Frame::Bsh;
+    else if (style != "smallest-axis")
+      frame->fail("expected \"smallest-axis\" or \"bsh\", got " + describe_json(frame->json()));
+  }
+  if (auto bands = f.get("bands")) {
+    const std::int64_t m = bands->integer();
+    if (m < 2 || m > kMaxSegments)
+      bands->fail("must be between 2 and " + std::to_string(kMaxSegments) + ", got " + std::to_string(m));
+    t.bands = static_cast<int>(m);
+  }
   auto segments = f.get("segments");
   auto length = f.get("edge_length");
   if (segments && length) f.fail("give \"segments\" or \"edge_length\", not both");
@@ -65,7 +80,8 @@ const KindFields kKinds[] = {
     {"sphere", HalfspaceKind3::Sphere, {"name", "kind", "complement", "center", "radius", "tessellation"}},
     {"cylinder", HalfspaceKind3::Cylinder,
      {"name", "kind", "complement", "axis_point1", "axis_point2", "radius", "infinite", "tessellation"}},
-    {"cone", HalfspaceKind3::Cone, {"name", "kind", "complement", "apex", "base_center", "radius", "tessellation"}},
+    {"cone", HalfspaceKind3::Cone,
+     {"name", "kind", "complement", "apex", "base_center", "radius", "infinite", "tessellation"}},
     {"torus", HalfspaceKind3::Torus,
      {"name", "kind", "complement", "center", "axis", "major_radius", "minor_radius", "tessellation"}},
 };
@@ -92,8 +108,7 @@ void read_primitive(const JsonField& f, Halfspace3& h, const NumberLimits& n) {
         f.at(cyl ? "axis_point2" : "base_center")
             .fail(std::string("the axis has zero length (equal to ") + (cyl ? "axis_point1" : "apex") + ")");
       p.radius = positive(f.at("radius"), n);
-      if (cyl)
-        if (auto inf = f.get("infinite")) p.infinite = inf->boolean();
+      if (auto inf = f.get("infinite")) p.infinite = inf->boolean();
       break;
     }
     case HalfspaceKind3::Torus:
@@ -107,7 +122,7 @@ void read_primitive(const JsonField& f, Halfspace3& h, const NumberLimits& n) {
       break;
     default: break;
   }
-  if (auto t = f.get("tessellation")) p.tessellation = read_tessellation(*t, h.kind == HalfspaceKind3::Torus);
+  if (auto t = f.get("tessellation")) p.tessellation = read_tessellation(*t, h.kind);
 }
 
 Halfspace3 read_halfspace3(const JsonField& f, const std::optional<Box3>& domain, const std::string& base,
@@ -156,7 +171,7 @@ Halfspace3 read_halfspace3(const JsonField& f, const std::optional<Box3>& domain
   }
   read_primitive(f, h, n);
   if (h.primitive.infinite && !domain)
-    f.at("infinite").fail("an infinite cylinder is clipped by the domain: give \"domain\"");
+    f.at("infinite").fail(std::string("an infinite ") + to_string(h.kind) + " is clipped by the domain: give \"domain\"");
   try {
     const int segments = largest_circle_segments(h);
     if (segments > limits.max_segments)
@@ -183,9 +198,15 @@ json point_json(const PointQ3& p) {
 }
 
 json tessellation_json(const Tessellation3& t, bool torus) {
-  if (t.mode == Tessellation3::Mode::EdgeLength) return {{"edge_length", rational_to_json(t.edge_length)}};
-  json j = {{"segments", t.segments}};
-  if (torus && t.minor_segments != 0) j["minor_segments"] = t.minor_segments;
+  json j = json::object();
+  if (t.mode == Tessellation3::Mode::EdgeLength) {
+    j["edge_length"] = rational_to_json(t.edge_length);
+  } else {
+    j["segments"] = t.segments;
+    if (torus && t.minor_segments != 0) j["minor_segments"] = t.minor_segments;
+  }
+  if (t.bands != 0) j["bands"] = t.bands;
+  if (t.frame == Tessellation3::Frame::Bsh) j["frame"] = "bsh";
   return j;
 }
 
@@ -218,6 +239,7 @@ json halfspace_json(const Halfspace3& h) {
       j["apex"] = point_json(p.point1);
       j["base_center"] = point_json(p.point2);
       j["radius"] = rational_to_json(p.radius);
+      if (p.infinite) j["infinite"] = true;
       break;
     case HalfspaceKind3::Torus:
       j["center"] = point_json(p.center);

@@ -388,63 +388,268 @@ std::size_t svg3_visible_triangles(const Arrangement3& arrangement, const SvgVie
   return n;
 }
 
-std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options) {
-  check_fit(scene, arranged, options);
-  const std::vector<SvgView3> views = options.views.empty() ? default_svg_views3() : options.views;
-  const double width = options.width, margin = 16;
-  const Fonts fonts(width);
-  const double title_height = options.title.empty() ? 0 : 2 * fonts.caption;
-  const std::size_t columns = views.size() == 1 ? 1 : 2;
-  const double panel = (width - 2 * margin) / static_cast<double>(columns), caption = 1.6 * fonts.caption, pad = 12;
-  const int rows = static_cast<int>((views.size() + columns - 1) / columns);
-  const std::vector<Paint> paints = paints_of(arranged, options);
-  const std::vector<char> missing =
-      options.cell_fill.empty() ? std::vector<char>{} : svg_missing_samples(arranged.complex, options.cell_fill);
-  const Box3& box = arranged.arrangement.domain();
+namespace {
+
+/// Where a picture's parts go: the views' projections (fitted with one scale), the panel size, the legend's top.
+struct Layout {
+  std::vector<SvgView3> views;
   std::vector<Projection> projections;
+  std::vector<double> left, top;  // per view: its panel's corner
+  double width = 0, margin = 16, panel = 0, legend_top = 0;
+  Fonts fonts{1000};
+};
+
+Layout layout_of(const Arranged3& arranged, const Svg3Options& options, bool titled) {
+  Layout l;
+  l.views = options.views.empty() ? default_svg_views3() : options.views;
+  l.width = options.width;
+  l.fonts = Fonts(l.width);
+  const double title_height = titled ? 2 * l.fonts.caption : 0;
+  const std::size_t columns = l.views.size() == 1 ? 1 : 2;
+  l.panel = (l.width - 2 * l.margin) / static_cast<double>(columns);
+  const double caption = 1.6 * l.fonts.caption, pad = 12;
+  const int rows = static_cast<int>((l.views.size() + columns - 1) / columns);
+  const Box3& box = arranged.arrangement.domain();
   double scale = INFINITY;
-  for (const SvgView3& v : views) {
-    projections.push_back(projection_of(v));
-    const double extent = outline_extent(projections.back(), box);
-    if (extent > 0) scale = std::min(scale, (panel - caption - 2 * pad) / extent);
+  for (const SvgView3& v : l.views) {
+    l.projections.push_back(projection_of(v));
+    const double extent = outline_extent(l.projections.back(), box);
+    if (extent > 0) scale = std::min(scale, (l.panel - caption - 2 * pad) / extent);
   }
   if (!std::isfinite(scale)) scale = 1;
   const Vec mid = 0.5 * (to_vec(box.min) + to_vec(box.max));
-  const std::vector<Vec> patch_points = patch_label_points(arranged);
-  std::string body;
-  for (std::size_t k = 0; k < views.size(); ++k) {
-    Projection& p = projections[k];
-    const double left = margin + static_cast<double>(k % columns) * panel;
-    const double top = margin + title_height + static_cast<double>(k / columns) * panel;
+  for (std::size_t k = 0; k < l.views.size(); ++k) {
+    Projection& p = l.projections[k];
+    l.left.push_back(l.margin + static_cast<double>(k % columns) * l.panel);
+    l.top.push_back(l.margin + title_height + static_cast<double>(k / columns) * l.panel);
     p.scale = scale;
     p.mid = mid;
-    p.centre_x = left + panel / 2;
-    p.centre_y = top + caption + (panel - caption) / 2;
-    body += "<text class=\"caption\" x=\"" + svg_number(left + panel / 2) + "\" y=\"" +
-            svg_number(top + fonts.caption) + "\" text-anchor=\"middle\" font-size=\"" + svg_number(fonts.caption) +
-            "\">" + svg_escape(views[k].name) + "</text>\n";
-    body += faces_svg(arranged.arrangement, paints, false, views[k], p, options.opacity);
-    body += faces_svg(arranged.arrangement, paints, true, views[k], p, options.opacity);
-    body += domain_svg(box, p);
+    p.centre_x = l.left[k] + l.panel / 2;
+    p.centre_y = l.top[k] + caption + (l.panel - caption) / 2;
+  }
+  l.legend_top = l.margin + title_height + rows * l.panel + 8;
+  return l;
+}
+
+std::string caption_svg(const Layout& l, std::size_t k) {
+  return "<text class=\"caption\" x=\"" + svg_number(l.left[k] + l.panel / 2) + "\" y=\"" +
+         svg_number(l.top[k] + l.fonts.caption) + "\" text-anchor=\"middle\" font-size=\"" +
+         svg_number(l.fonts.caption) + "\">" + svg_escape(l.views[k].name) + "</text>\n";
+}
+
+std::string title_svg(const Layout& l, const std::string& title) {
+  if (title.empty()) return "";
+  return "<text class=\"title\" x=\"" + svg_number(l.width / 2) + "\" y=\"" + svg_number(l.margin + l.fonts.caption) +
+         "\" text-anchor=\"middle\" font-size=\"" + svg_number(1.2 * l.fonts.caption) + "\">" + svg_escape(title) +
+         "</text>\n";
+}
+
+std::string svg_open(double width, double height, const std::string& extra) {
+  return "<svg xmlns=\"http://www.w3.org/2000/svg\"" + extra + " width=\"" + svg_number(width) + "\" height=\"" +
+         svg_number(height) + "\" viewBox=\"0 0 " + svg_number(width) + " " + svg_number(height) +
+         "\" font-family=\"Helvetica, Arial, sans-serif\">\n<rect x=\"0\" y=\"0\" width=\"" + svg_number(width) +
+         "\" height=\"" + svg_number(height) + "\" fill=\"#ffffff\"/>\n";
+}
+
+}  // namespace
+
+std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options) {
+  check_fit(scene, arranged, options);
+  Layout l = layout_of(arranged, options, !options.title.empty());
+  const std::vector<Paint> paints = paints_of(arranged, options);
+  const std::vector<char> missing =
+      options.cell_fill.empty() ? std::vector<char>{} : svg_missing_samples(arranged.complex, options.cell_fill);
+  const std::vector<Vec> patch_points = patch_label_points(arranged);
+  std::string body;
+  for (std::size_t k = 0; k < l.views.size(); ++k) {
+    const Projection& p = l.projections[k];
+    body += caption_svg(l, k);
+    body += faces_svg(arranged.arrangement, paints, false, l.views[k], p, options.opacity);
+    body += faces_svg(arranged.arrangement, paints, true, l.views[k], p, options.opacity);
+    body += domain_svg(arranged.arrangement.domain(), p);
     body += samples_svg(scene, p, missing);
-    body += labels_svg(arranged, patch_points, p, options, fonts.label);
+    body += labels_svg(arranged, patch_points, p, options, l.fonts.label);
   }
   double legend_height = 0;
-  const double legend_top = margin + title_height + rows * panel + 8;
-  body += legend_svg(scene, marks_of(arranged, options, missing), margin, legend_top, width - 2 * margin,
-                     fonts.legend, &legend_height);
-  const double height = legend_top + legend_height + margin;
-  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  s += "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + svg_number(width) + "\" height=\"" + svg_number(height) +
-       "\" viewBox=\"0 0 " + svg_number(width) + " " + svg_number(height) +
-       "\" font-family=\"Helvetica, Arial, sans-serif\">\n";
-  s += "<rect x=\"0\" y=\"0\" width=\"" + svg_number(width) + "\" height=\"" + svg_number(height) +
-       "\" fill=\"#ffffff\"/>\n";
-  if (!options.title.empty())
-    s += "<text class=\"title\" x=\"" + svg_number(width / 2) + "\" y=\"" + svg_number(margin + fonts.caption) +
-         "\" text-anchor=\"middle\" font-size=\"" + svg_number(1.2 * fonts.caption) + "\">" +
-         svg_escape(options.title) + "</text>\n";
-  return s + body + "</svg>\n";
+  body += legend_svg(scene, marks_of(arranged, options, missing), l.margin, l.legend_top, l.width - 2 * l.margin,
+                     l.fonts.legend, &legend_height);
+  const double height = l.legend_top + legend_height + l.margin;
+  return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + svg_open(l.width, height, "") + title_svg(l, options.title) +
+         body + "</svg>\n";
+}
+
+// ---- states_svg3: several shapes of one arrangement, each patch drawn once ----
+
+namespace {
+
+/// A coordinate of the states picture: rounded to 0.1 px, without trailing zeros ("12.3", "-4").
+std::string coarse(double v) {
+  const long tenths = std::lround(v * 10);
+  const long whole = std::labs(tenths) / 10, tenth = std::labs(tenths) % 10;
+  return std::string(tenths < 0 ? "-" : "") + std::to_string(whole) + (tenth ? "." + std::to_string(tenth) : "");
+}
+
+/// Patch `patch`'s triangles seen in view `view` as paths (back to front; consecutive triangles of one fill in one
+/// path, subpaths "Mx yLx yLx yZ"), in `colour` (a highlight) or its halfspace's colour lit by each normal; the
+/// mean depth of their centroids goes to *depth (NaN when none is seen).
+std::string patch_paths(const Arranged3& a, int patch, const char* colour, const SvgView3& view,
+                        const Projection& p, double* depth) {
+  const Arrangement3& arr = a.arrangement;
+  struct Face {
+    double depth;
+    int triangle;
+  };
+  std::vector<Face> faces;
+  double sum = 0;
+  for (int t : a.complex.patches[static_cast<std::size_t>(patch)].pieces) {
+    const ArrTriangle3& tri = arr.triangles()[static_cast<std::size_t>(t)];
+    if (!seen(arr, tri, view.direction)) continue;
+    Vec c;
+    for (int v : tri.vertices) c = c + to_vec(arr.vertices()[v]);
+    faces.push_back({dot((1.0 / 3) * c, p.depth), t});
+    sum += faces.back().depth;
+  }
+  *depth = faces.empty() ? NAN : sum / static_cast<double>(faces.size());
+  std::sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) {
+    return x.depth != y.depth ? x.depth > y.depth : x.triangle < y.triangle;
+  });
+  const Rgb base =
+      parse_colour(colour ? colour : svg_palette_colour(a.complex.patches[static_cast<std::size_t>(patch)].halfspace));
+  std::string s, fill, stroke, d;
+  auto flush = [&] {
+    if (!d.empty()) s += "<path d=\"" + d + "\" fill=\"" + fill + "\" stroke=\"" + stroke + "\"/>\n";
+    d.clear();
+  };
+  for (const Face& f : faces) {
+    const ArrTriangle3& t = arr.triangles()[static_cast<std::size_t>(f.triangle)];
+    const double light = 0.35 + 0.65 * std::fabs(dot(unit(to_vec(exact_normal(arr, t))), p.light));
+    const std::string here = colour_text(base, light);
+    if (here != fill) flush();
+    fill = here;
+    stroke = colour_text(base, 0.75 * light);
+    for (int k = 0; k < 3; ++k) {
+      const Vec q = to_vec(arr.vertices()[t.vertices[k]]);
+      d += (k ? "L" : "M") + coarse(p.X(q)) + " " + coarse(p.Y(q));
+    }
+    d += "Z";
+  }
+  flush();
+  return s;
+}
+
+}  // namespace
+
+std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
+                        const Svg3Options& options, int columns) {
+  if (!options.cell_fill.empty() || !options.highlight_patches.empty() || !options.cell_marks.empty() ||
+      !options.title.empty())
+    throw std::invalid_argument("states_svg3: the shapes, highlights and titles come from the states");
+  if (columns < 1) throw std::invalid_argument("states_svg3: columns must be at least 1");
+  if (states.empty()) throw std::invalid_argument("states_svg3: no state");
+  check_fit(scene, arranged, options);
+  const Complex& c = arranged.complex;
+  for (const Svg3State& state : states) {
+    Svg3Options o = options;
+    o.cell_fill = state.cell_fill;
+    o.highlight_patches = state.highlight_patches;
+    check_fit(scene, arranged, o);
+    if (state.cell_fill.empty()) throw std::invalid_argument("states_svg3: a state without a shape");
+  }
+  const Layout l = layout_of(arranged, options, true);
+  const std::vector<Vec> patch_points = patch_label_points(arranged);
+  // Shared definitions: per view, every patch on some state's boundary (its colour) or highlighted (amber).
+  std::vector<char> on_boundary(c.patches.size(), 0), lit(c.patches.size(), 0);
+  for (const Svg3State& state : states) {
+    for (const ExportedFace& f : shape_faces(arranged, state.cell_fill))
+      on_boundary[static_cast<std::size_t>(f.patch)] = 1;
+    for (std::size_t p = 0; p < state.highlight_patches.size(); ++p) lit[p] |= state.highlight_patches[p];
+  }
+  std::string defs = "<defs>\n";
+  std::vector<std::vector<double>> depth(l.views.size(), std::vector<double>(c.patches.size(), NAN));
+  for (std::size_t v = 0; v < l.views.size(); ++v) {
+    const Projection& p = l.projections[v];
+    const std::string view = "v" + std::to_string(v);
+    for (std::size_t q = 0; q < c.patches.size(); ++q) {
+      const int patch = static_cast<int>(q);
+      if (on_boundary[q])
+        defs += "<g id=\"" + view + "p" + std::to_string(q) + "\">\n" +
+                patch_paths(arranged, patch, nullptr, l.views[v], p, &depth[v][q]) + "</g>\n";
+      double unused = 0;
+      if (lit[q])
+        defs += "<g id=\"" + view + "h" + std::to_string(q) + "\">\n" +
+                patch_paths(arranged, patch, kHighlightColour, l.views[v], p, &unused) + "</g>\n";
+    }
+    defs += "<g id=\"" + view + "d\">\n" + domain_svg(arranged.arrangement.domain(), p) + samples_svg(scene, p, {}) +
+            labels_svg(arranged, patch_points, p, options, l.fonts.label) + "</g>\n";
+  }
+  defs += "</defs>\n";
+  auto use = [](const std::string& kind, std::size_t patch, const std::string& id) {
+    return "<use class=\"" + kind + "\" data-patch=\"" + std::to_string(patch) + "\" xlink:href=\"#" + id + "\"/>\n";
+  };
+  std::vector<std::string> panels;
+  std::vector<double> heights;
+  for (const Svg3State& state : states) {
+    Svg3Options o = options;
+    o.cell_fill = state.cell_fill;
+    o.highlight_patches = state.highlight_patches;
+    const std::vector<char> missing = svg_missing_samples(c, state.cell_fill);
+    std::vector<char> drawn(c.patches.size(), 0);
+    for (const ExportedFace& f : shape_faces(arranged, state.cell_fill)) drawn[static_cast<std::size_t>(f.patch)] = 1;
+    std::string body = title_svg(l, state.title);
+    for (std::size_t v = 0; v < l.views.size(); ++v) {
+      const std::string view = "v" + std::to_string(v);
+      body += caption_svg(l, v);
+      std::vector<std::size_t> order;
+      for (std::size_t q = 0; q < c.patches.size(); ++q)
+        if (drawn[q] && !std::isnan(depth[v][q])) order.push_back(q);
+      std::stable_sort(order.begin(), order.end(),
+                       [&](std::size_t x, std::size_t y) { return depth[v][x] > depth[v][y]; });  // farthest first
+      body += "<g class=\"view\" data-view=\"" + svg_escape(l.views[v].name) + "\" fill-opacity=\"" +
+              svg_number(options.opacity) + "\" stroke-width=\"0.4\" stroke-linejoin=\"round\">\n";
+      for (std::size_t q : order) body += use("face", q, view + "p" + std::to_string(q));
+      body += "</g>\n";
+      const auto& lit_here = state.highlight_patches;
+      if (std::find(lit_here.begin(), lit_here.end(), 1) != lit_here.end()) {
+        body += "<g class=\"view\" data-view=\"" + svg_escape(l.views[v].name) + "\" fill-opacity=\"" +
+                svg_number(options.opacity) + "\" stroke-width=\"0.4\" stroke-linejoin=\"round\">\n";
+        for (std::size_t q = 0; q < state.highlight_patches.size(); ++q)
+          if (state.highlight_patches[q]) body += use("highlight", q, view + "h" + std::to_string(q));
+        body += "</g>\n";
+      }
+      body += "<use xlink:href=\"#" + view + "d\"/>\n";
+      std::string rings;
+      const Projection& p = l.projections[v];
+      for (std::size_t k = 0; k < scene.samples.size() && k < missing.size(); ++k)
+        if (missing[k]) {
+          const Vec q = to_vec(scene.samples[k].location);
+          rings += "<circle class=\"missing\" data-id=\"" + std::to_string(k) + "\" cx=\"" + svg_number(p.X(q)) +
+                   "\" cy=\"" + svg_number(p.Y(q)) +
+                   "\" r=\"8\" fill=\"none\" stroke=\"#e63946\" stroke-width=\"2\"/>\n";
+        }
+      body += rings;
+    }
+    double legend_height = 0;
+    body += legend_svg(scene, marks_of(arranged, o, missing), l.margin, l.legend_top, l.width - 2 * l.margin,
+                       l.fonts.legend, &legend_height);
+    panels.push_back(body);
+    heights.push_back(l.legend_top + legend_height + l.margin);
+  }
+  // The grid: `columns` panels per row, each row as high as its highest panel.
+  const double gap = 8;
+  const std::size_t n = panels.size(), cols = std::min<std::size_t>(n, static_cast<std::size_t>(columns));
+  std::vector<double> row_height((n + cols - 1) / cols, 0);
+  for (std::size_t k = 0; k < n; ++k) row_height[k / cols] = std::max(row_height[k / cols], heights[k]);
+  std::vector<double> top(row_height.size(), gap);
+  for (std::size_t r = 1; r < top.size(); ++r) top[r] = top[r - 1] + row_height[r - 1] + gap;
+  const double width = static_cast<double>(cols) * (l.width + gap) + gap, height = top.back() + row_height.back() + gap;
+  std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" +
+                  svg_open(width, height, " xmlns:xlink=\"http://www.w3.org/1999/xlink\"") + defs;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = gap + static_cast<double>(k % cols) * (l.width + gap);
+    s += "<svg x=\"" + svg_number(x) + "\" y=\"" + svg_number(top[k / cols]) + "\" width=\"" + svg_number(l.width) +
+         "\" height=\"" + svg_number(heights[k]) + "\">\n" + panels[k] + "</svg>\n";
+  }
+  return s + "</svg>\n";
 }
 
 }  // namespace hsx

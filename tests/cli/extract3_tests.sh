@@ -106,9 +106,18 @@ root = ET.parse(sys.argv[2]).getroot()
 panels = [c for c in root if c.tag == ns + "svg"]
 problems = []
 if len(panels) != len(result["steps"]): problems.append("%d panels for %d steps" % (len(panels), len(result["steps"])))
+# Each patch is drawn once in <defs>; the panels refer to it with <use> (class "face" or "highlight").
+xlink = "{http://www.w3.org/1999/xlink}href"
+ids = [g.get("id") for d in root.iter(ns + "defs") for g in d if g.get("id")]
+if len(ids) != len(set(ids)): problems.append("duplicate ids in <defs>")
 for k, (panel, removed) in enumerate(zip(panels, result["steps"])):
-    lit = sorted({int(p.get("data-patch")) for p in panel.iter(ns + "polygon") if p.get("class") == "highlight"})
+    if any(True for _ in panel.iter(ns + "polygon")): problems.append("state %d: polygons drawn in the panel" % k)
+    uses = list(panel.iter(ns + "use"))
+    missing = [u.get(xlink) for u in uses if u.get(xlink, "")[1:] not in ids]
+    if missing: problems.append("state %d: <use> of undefined %s" % (k, missing[:3]))
+    lit = sorted({int(u.get("data-patch")) for u in uses if u.get("class") == "highlight"})
     if lit != sorted(removed): problems.append("state %d: highlighted %s, removed %s" % (k, lit, removed))
+    if not any(u.get("class") == "face" for u in uses): problems.append("state %d: no face" % k)
 shape = ET.parse(sys.argv[3]).getroot()
 lit = sorted({int(p.get("data-patch")) for p in shape.iter(ns + "polygon") if p.get("class") == "highlight"})
 if lit != sorted(result["removed_patches"]): problems.append("--show-removed: %s vs %s" % (lit, result["removed_patches"]))
@@ -117,6 +126,11 @@ if faces != {b["patch"] for b in result["boundary"]}: problems.append("--svg: fa
 print("\n".join(problems))
 PY
   [ -z "$(cat "$work/states.txt")" ] && ok || bad "$method states: $(cat "$work/states.txt")"
+  # Size: each patch is drawn once for all the panels (one isometric view each), so the states picture stays below
+  # half the single-shape --svg (four views); redrawing every triangle per panel made it larger than that.
+  states_bytes=$(wc -c <"$work/states_$method.svg"); shape_bytes=$(wc -c <"$work/shape_$method.svg")
+  [ $((2 * states_bytes)) -lt "$shape_bytes" ] && ok ||
+    bad "$method: states picture of $states_bytes bytes against $shape_bytes for the shape"
 done
 # PNG: not written by hsx; the pictures render with rsvg-convert where it is installed.
 if command -v rsvg-convert >/dev/null; then

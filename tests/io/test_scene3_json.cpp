@@ -1,10 +1,14 @@
 // Tests of the 3D part of hsx-scene/1 (io/scene_json.hpp): every kind read, errors naming the JSON path, mesh
 // files in OBJ, OFF and PLY giving the same scene, the write/read round trip, and the regression scenes in
 // data/scenes3d.
+#include <hsx/geometry/mesh3.hpp>
+#include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/bsh_config.hpp>
 #include <hsx/io/scene_json.hpp>
 
 #include <catch2/catch.hpp>
+
+#include <cmath>
 
 #include <filesystem>
 #include <fstream>
@@ -48,14 +52,15 @@ const char* kAllKinds = R"({"format": "hsx-scene/1", "dimension": 3, "descriptio
   "halfspaces": [
     {"name": "P", "kind": "plane", "normal": [0, 0, 1], "offset": "1/2"},
     {"name": "B", "kind": "box", "min": [0, 0, 0], "max": [1, 2, 3], "complement": true},
-    {"name": "S", "kind": "sphere", "center": [1, 1, 1], "radius": 2.5, "tessellation": {"segments": 12}},
+    {"name": "S", "kind": "sphere", "center": [1, 1, 1], "radius": 2.5,
+     "tessellation": {"segments": 12, "bands": 4, "frame": "bsh"}},
     {"name": "C", "kind": "cylinder", "axis_point1": [0, 0, -1], "axis_point2": [0, 0, 1], "radius": 1,
      "tessellation": {"edge_length": 0.5}},
     {"name": "I", "kind": "cylinder", "axis_point1": [0, 0, 0], "axis_point2": [1, 0, 0], "radius": 3,
      "infinite": true, "tessellation": {"segments": 8}},
     {"name": "K", "kind": "cone", "apex": [0, 0, 5], "base_center": [0, 0, 2], "radius": 1},
     {"name": "T", "kind": "torus", "center": [0, 0, 0], "axis": [0, 1, 1], "major_radius": 4, "minor_radius": 1,
-     "tessellation": {"segments": 16, "minor_segments": 6}}
+     "tessellation": {"segments": 16, "minor_segments": 6, "frame": "bsh"}}
   ],
   "samples": [{"on": "P", "at": [3, 3, 0.5]}, {"on": "B", "at": [0, 1, 1]}, {"on": "S", "near": [9, 1, 1]},
               {"on": "T", "near": [0, 0, 0]}]})";
@@ -67,7 +72,9 @@ TEST_CASE("3D scenes: every kind is read and round-trips", "[scene3_json]") {
   REQUIRE(s.halfspaces.size() == 7);
   CHECK(s.halfspaces[0].kind == HalfspaceKind3::Plane);
   CHECK(s.halfspaces[1].surface.triangles.size() == 12);
-  CHECK(s.halfspaces[2].surface.triangles.size() == 2 * 12 * 5);
+  CHECK(s.halfspaces[2].surface.triangles.size() == 2 * 12 * 3);  // 4 bands, 3 rings
+  CHECK(s.halfspaces[2].surface.vertices[1].y == 1);  // the authors' frame: ring point 0 towards +x from the centre
+  CHECK(s.halfspaces[2].surface.vertices[1].x > 1);
   CHECK(s.halfspaces[3].surface.triangles.size() == 4 * 13);  // ceil(2 pi / 0.5) = 13 segments
   CHECK(s.halfspaces[5].surface.triangles.size() == 2 * 32);
   CHECK(s.halfspaces[6].surface.triangles.size() == 2 * 16 * 6);
@@ -92,6 +99,12 @@ TEST_CASE("3D scene errors name the JSON path", "[scene3_json]") {
              Contains("halfspaces[0].tessellation.segments: must be between 3 and 4096"));
   CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "tessellation": {"edge_length": "1e-9"}})")),
              Contains("halfspaces[0]: tessellation:") );
+  CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "tessellation": {"segments": 8, "bands": 1}})")),
+             Contains("halfspaces[0].tessellation.bands: must be between 2 and 4096, got 1"));
+  CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "tessellation": {"segments": 8, "frame": "z"}})")),
+             Contains("halfspaces[0].tessellation.frame: expected \"smallest-axis\" or \"bsh\""));
+  CHECK_THAT(scene_error(wrap(R"({"name": "T", "kind": "torus", "center": [0, 0, 0], "axis": [0, 0, 1], "major_radius": 2, "minor_radius": 1, "tessellation": {"segments": 8, "bands": 4}})")),
+             Contains("halfspaces[0].tessellation: unknown field \"bands\""));
   CHECK_THAT(scene_error(wrap(R"({"name": "S", "kind": "sphere", "center": [0, 0, 0], "radius": 1, "color": 3})")),
              Contains("halfspaces[0]: unknown field \"color\""));
   CHECK_THAT(scene_error(wrap(R"({"name": "D", "kind": "disk", "center": [0, 0], "radius": 1})")),
@@ -151,6 +164,30 @@ TEST_CASE("the BSH authors' config: a folder of our own", "[scene3_json]") {
   CHECK(s.samples.size() == 3);
   CHECK(s.samples[2].distance2 == 0);
   CHECK(s.domain.max.x == 2);
+  // Their cone: one nappe from the apex, half angle 0.5 about +z, clipped by the box: here the cone of height 2.
+  write("cone.json", R"({"input": [{"type": "cone", "name": "K", "apex": [0, 0, 0], "axis_vector": [0, 0, 3],
+      "apex_angle": 0.5, "is_flipped": false}]})");
+  const Scene3 cone = read_bsh_config_file((dir / "cone.json").string());
+  REQUIRE(cone.halfspaces.size() == 1);
+  const Halfspace3& k = cone.halfspaces[0];
+  CHECK(k.kind == HalfspaceKind3::Cone);
+  CHECK(k.primitive.infinite);
+  CHECK(k.primitive.tessellation.segments == bsh_segments(std::sqrt(48.0) / 64, std::sqrt(48.0) * std::sin(0.5)));
+  double six_volume = 0;
+  for (const auto& t : k.surface.triangles) {
+    const PointQ3 &a = k.surface.vertices[t[0]], &b = k.surface.vertices[t[1]], &c = k.surface.vertices[t[2]];
+    six_volume += dot3(a, triangle_normal(a, b, c)).get_d();
+  }
+  const double height = 2, radius = 2 * std::tan(0.5), analytic = M_PI * radius * radius * height / 3;
+  CHECK(six_volume / 6 < analytic);  // inscribed
+  CHECK(six_volume / 6 > analytic * 0.999);
+  CHECK(write_scene3(cone).dump().find("\"infinite\":true") != std::string::npos);
+  const Scene3 back = read_scene3(parse_exact_json(write_scene3(cone).dump()));
+  CHECK(back.halfspaces[0].surface.triangles == k.surface.triangles);
+  write("cone.json", R"({"input": [{"type": "cone", "name": "K", "apex": [0, 0, 0], "axis_vector": [0, 0, 1],
+      "apex_angle": 2}]})");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "cone.json").string()),
+                    Contains("input[0].apex_angle: must be between 0 and pi/2"));
   write("1_sample.xyz", "3\n0.5 0 zero\n");
   CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("1_sample.xyz:2: coordinate \"zero\""));
   write("1_sample.xyz", "3\n0.5 0\n");

@@ -318,3 +318,43 @@ TEST_CASE("3D SVG: cell marks draw the patches bounding marked cells, orange and
   options.cell_marks.assign(c.cells.size(), 3);
   CHECK_THROWS_AS(arrangement_svg3(scene(), arranged(), options), std::invalid_argument);
 }
+
+TEST_CASE("3D SVG: states share each patch's drawing, once per view", "[io][svg3]") {
+  const Complex& c = arranged().complex;
+  std::vector<char> all(c.cells.size(), 0), one(c.cells.size(), 0);
+  for (std::size_t k = 0; k < c.cells.size(); ++k) all[k] = c.cells[k].outer ? 0 : 1;
+  for (std::size_t k = 0; k < c.cells.size(); ++k)
+    if (!c.cells[k].outer) {
+      one[k] = 1;
+      break;
+    }
+  std::vector<char> lit(c.patches.size(), 0);
+  lit[0] = 1;
+  Svg3Options options;
+  options.views = {default_svg_views3()[3]};
+  const std::vector<Svg3State> states = {{all, {}, "every cell"}, {one, lit, "one cell"}, {all, lit, "again"}};
+  const std::string svg = states_svg3(scene(), arranged(), states, options, 2);
+  std::istringstream in(svg);
+  boost::property_tree::ptree tree;
+  REQUIRE_NOTHROW(boost::property_tree::read_xml(in, tree));
+  // Each patch on some boundary is defined once ("v0p<k>"), patch 0's highlight once; three panels use them.
+  std::vector<char> boundary(c.patches.size(), 0);
+  for (const auto* fill : {&all, &one})
+    for (const ExportedFace& f : shape_faces(arranged(), *fill)) boundary[static_cast<std::size_t>(f.patch)] = 1;
+  for (std::size_t p = 0; p < c.patches.size(); ++p) {
+    INFO("patch " << p);
+    CHECK(count(svg, "id=\"v0p" + std::to_string(p) + "\"") == std::size_t(boundary[p]));
+  }
+  CHECK(count(svg, "id=\"v0h0\"") == 1);
+  CHECK(count(svg, "class=\"highlight\" data-patch=\"0\"") == 2);
+  CHECK(count(svg, "<svg x=") == 3);
+  CHECK(count(svg, "<polygon") == 0);
+  CHECK(count(svg, "xlink:href=\"#v0d\"") == 3);
+  // The states give the shapes and titles; bad states and options are refused.
+  Svg3Options titled = options;
+  titled.title = "no";
+  CHECK_THROWS_AS(states_svg3(scene(), arranged(), states, titled, 2), std::invalid_argument);
+  CHECK_THROWS_AS(states_svg3(scene(), arranged(), {}, options, 2), std::invalid_argument);
+  CHECK_THROWS_AS(states_svg3(scene(), arranged(), states, options, 0), std::invalid_argument);
+  CHECK_THROWS_AS(states_svg3(scene(), arranged(), {{{1}, {}, "short"}}, options, 1), std::invalid_argument);
+}

@@ -53,6 +53,11 @@ struct Tessellation3 {
   int segments = 32;        ///< Segments: segments per full turn of every circle (torus: of the circles about its axis)
   int minor_segments = 0;   ///< Segments, torus only: per turn of the tube's circles; 0 = `segments`
   Rational edge_length;     ///< EdgeLength: target chord length (> 0); each circle gets its own segment count
+  /// How the frame (u, v, w) of an axis is chosen (geometry/tessellate3.hpp): SmallestAxis is hsx's own rule, Bsh the
+  /// BSH authors' (u from w x +x; a sphere in the coordinate frame).
+  enum class Frame { SmallestAxis, Bsh };
+  Frame frame = Frame::SmallestAxis;
+  int bands = 0;            ///< sphere only: latitude bands (2..kMaxSegments); 0 = ceil(n / 2) for n segments
 };
 
 /// A primitive's parameters as written (for tessellating, for messages and for writing the scene back). Only the

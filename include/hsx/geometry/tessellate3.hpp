@@ -4,14 +4,16 @@
 // Conventions (owned here; docs/scene-format.md repeats them for users, so that others can rebuild the same
 // triangles):
 // - Frame of an axis a (non-zero): w = a / |a|; e = the coordinate axis of the smallest |a_i| (lowest i on a tie);
-//   u = (w x e) / |w x e|; v = w x u. (For a = +z: u = +y, v = -x.)
+//   u = (w x e) / |w x e|; v = w x u. (For a = +z: u = +y, v = -x.) A sphere uses a = +z.
+//   Tessellation3::Frame::Bsh (the BSH authors' convention, io/bsh_config.hpp): e = +x, or +y when a is parallel
+//   to x; a sphere uses the coordinate frame u = +x, v = +y, w = +z.
 // - Angles: theta_k = 2 pi k / n, k = 0..n-1, for a circle of n segments.
 // - Vertices of curved primitives: each coordinate of the real point given below is rounded to the nearest
 //   multiple of 2^-32 (kTessellationGrid; ties to even). hsx evaluates the real point in 128-bit MPFR arithmetic,
 //   which decides the rounding unless the value lies within about 2^-100 of a midpoint. Vertices therefore lie
 //   within 2^-33 of the curved surface in each coordinate, not on it; box corners are exact.
 //     ring point  P(c, rho, k) = c + rho (cos theta_k u + sin theta_k v)
-//     sphere:  m = ceil(n / 2) latitude bands; south pole c - r w, rings j = 1..m-1 at phi_j = -pi/2 + pi j / m:
+//     sphere:  m latitude bands (Tessellation3::bands, default ceil(n / 2)); south pole c - r w, rings j = 1..m-1 at phi_j = -pi/2 + pi j / m:
 //              c + r cos phi_j (cos theta_k u + sin theta_k v) + r sin phi_j w, north pole c + r w.
 //     cylinder (finite): rings P(point1, r, k) and P(point2, r, k), axis a = point2 - point1, cap centres point1 and
 //              point2 (rounded the same way).
@@ -34,13 +36,17 @@
 //   P(point1, r, k+1), parallel to a) clip the domain box exactly (a convex polyhedron, computed exactly); each
 //   face of the result is a convex polygon fanned from its first vertex, or from its vertex centroid when three
 //   consecutive vertices are collinear. Its faces on the domain box carry no patch (they are on the box).
+// - Infinite cone (Primitive3::infinite, one nappe): the same with the planes through the apex (exact) and ring
+//   points P(base_center, r, k) and P(base_center, r, k+1), each keeping the base centre's side.
 // - Segment counts: Segments mode gives n directly (torus tube: minor_segments, or n when 0). EdgeLength L gives
 //   each circle of radius rho n = max(3, ceil(2 pi rho / L)) (computed in double precision; torus: rho =
 //   major_radius about the axis, minor_radius around the tube). Bounds: 3 <= n <=
 //   kMaxSegments for every circle, and at most kMaxTessellationTriangles triangles per primitive; outside them the
 //   input is refused (InputError).
-// - The BSH authors' rule (io/bsh_config.hpp): n = max(15, round(pi / asin(h / 2 rho))) in double precision, with
-//   h = the bounding-box diagonal / 64 (n = 15 when h >= 2 rho); spheres and tori as the UV meshes above.
+// - The BSH authors' rule (io/bsh_config.hpp): n = max(15, round(pi / asin(h / 2 rho))) segments per circle in
+//   double precision (n = 15 when h >= 2 rho), h = the diagonal of one cell of their grid; a sphere of radius r
+//   has m = 2 q latitude bands (m - 1 rings), q = max(15, round(pi / (4 asin(h / 2 r)))) (q = 15 when h >= 2 r);
+//   every frame in their style (Frame::Bsh).
 #pragma once
 
 #include <hsx/geometry/scene3.hpp>
@@ -62,8 +68,17 @@ int circle_segments(const Tessellation3& t, const Rational& radius, bool minor =
 /// mesh), without tessellating it. Throws InputError like circle_segments.
 int largest_circle_segments(const Halfspace3& h);
 
-/// The BSH authors' segment count for a circle of radius `radius` and their h (see above).
+/// The latitude bands of a sphere of `t` with `n` segments per circle: t.bands, or ceil(n / 2) when 0. Throws
+/// InputError ("tessellation: ...") outside [2, kMaxSegments].
+int sphere_bands(const Tessellation3& t, int n);
+
+/// The BSH authors' segment count for a circle of radius `radius` and their h (see above); kMaxSegments + 1 when
+/// the count exceeds kMaxSegments (refused by the tessellation).
 int bsh_segments(double h, double radius);
+
+/// The BSH authors' latitude bands of a sphere of radius `radius` at their h (see above; kMaxSegments + 1 when
+/// beyond kMaxSegments).
+int bsh_sphere_bands(double h, double radius);
 
 /// The surface of halfspace `h` (kind box, sphere, cylinder, cone or torus) from `h.primitive`; `domain` clips an
 /// infinite cylinder and is otherwise unused. Throws InputError ("radius must be positive", "the axis has zero

@@ -72,6 +72,28 @@ struct Svg3Options {
 /// not 0, 1 or 2.
 std::string arrangement_svg3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options = {});
 
+/// One panel of states_svg3: a shape, the patches to highlight over it, a title.
+struct Svg3State {
+  std::vector<char> cell_fill;          ///< per cell, 1 = inside the shape
+  std::vector<char> highlight_patches;  ///< per patch (1 = highlighted), or empty
+  std::string title;
+};
+
+/// Several shapes of one arrangement (e.g. the states of a search, BSH Fig. 10), `columns` panels per row, each a
+/// nested <svg> drawn as arrangement_svg3 draws a shape with `options` and the state's cell_fill,
+/// highlight_patches and title, but compact, so that dozens of states of a large complex stay small:
+/// - Each patch on some state's boundary is drawn once per view, in a shared <defs> group (id "v<view>p<patch>";
+///   "v<view>h<patch>" for its highlight in amber; "v<view>d" for the domain box, the samples and the labels):
+///   its visible triangles back to front, consecutive triangles of one fill merged into one <path> (subpaths
+///   "Mx yLx yLx yZ"), coordinates rounded to 0.1 px. A panel refers to them with <use> elements (class "face" or
+///   "highlight", data-patch = the patch), painted back to front by the mean depth of each patch's triangle
+///   centroids (a patch at a time, not a triangle at a time as in arrangement_svg3); its title, captions, missing
+///   sample rings and legend are its own.
+/// Throws std::invalid_argument as arrangement_svg3 does for each state, when `states` is empty, a state has no
+/// cell_fill, `columns` < 1, or `options` sets cell_fill, highlight_patches, cell_marks or title (the states do).
+std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
+                        const Svg3Options& options, int columns);
+
 /// How many "face" polygons view `view` of arrangement_svg3 draws: the triangles not on the box and not seen
 /// edge-on (exact). For tests and reports.
 std::size_t svg3_visible_triangles(const Arrangement3& arrangement, const SvgView3& view);

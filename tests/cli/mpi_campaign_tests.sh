@@ -4,6 +4,7 @@
 #   single-process run, on a campaign with a real failure (scene 80 of seed 1 at 8 halfspaces fails Prop. 5.1);
 # - a campaign cut short (its results.jsonl truncated, the last line torn) and resumed under mpirun equals the
 #   uninterrupted one;
+# - a 3D campaign (--dimension 3) gives the same folder and table under mpirun;
 # - a folder rank 0 refuses stops every rank with exit 2 and leaves the folder as it was.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
@@ -28,6 +29,17 @@ same "$TMP/one" "$TMP/two" "the campaign folders"
 same "$TMP/one.txt" "$TMP/two.txt" "the printed tables"
 [[ -f "$TMP/two/failures/scene-80.json" ]] && pass || fail "mpirun: scene 80 not kept in failures/ ($(ls "$TMP/two/failures" 2>&1))"
 grep -q "2 MPI processes" "$TMP/two.err" && pass || fail "mpirun: the timing line does not count the processes: $(cat "$TMP/two.err")"
+
+# A 3D campaign (--dimension 3): the same bytes under mpirun.
+ARGS3=(campaign --dimension 3 --seed 4 --count 6 --primitives 1..2 --segments 6 --degeneracies 1..2 --max-cells 40
+       --sample-policy intended --checks existence,uniqueness,manifold,prop61,beam2)
+"$HSX" "${ARGS3[@]}" --out "$TMP/one3" >"$TMP/one3.txt" 2>"$TMP/one3.err"
+one=$?
+"${MPI[@]}" "$HSX" "${ARGS3[@]}" --out "$TMP/two3" >"$TMP/two3.txt" 2>"$TMP/two3.err"
+two=$?
+[[ $one == 0 && $two == 0 ]] && pass || fail "3D: exit statuses $one and $two, expected 0 and 0: $(cat "$TMP/two3.err")"
+same "$TMP/one3" "$TMP/two3" "the 3D campaign folders"
+same "$TMP/one3.txt" "$TMP/two3.txt" "the 3D printed tables"
 
 # Cut short, then resumed under mpirun.
 cp -r "$TMP/one" "$TMP/cut"

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 
 namespace hsx::campaign {
 namespace {
@@ -268,6 +269,16 @@ void validate(const CampaignSettings& s) {
   if (s.precision_bits < 64) throw InputError("--precision: at least 64 bits");
   if (!(s.time_limit >= 0) || !std::isfinite(s.time_limit)) throw InputError("--time-limit: a finite number >= 0");
   if (s.limits.max_cells < 0 || s.limits.max_side_entries < 0) throw InputError("arrangement limits: must be >= 0");
+  if (s.dimension != 2 && s.dimension != 3) throw InputError("--dimension: 2 or 3");
+  if (s.dimension == 3) {
+    if (!s.extra.empty()) throw InputError("--against: 2D campaigns only (the graded programs read 2D inputs)");
+    try {
+      validate(s.scene3);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("3D generator settings: ") + e.what());
+    }
+    return;
+  }
   try {
     // The generator's own validation of its settings, without the arrangement that choosing samples builds.
     RandomSceneSettings g = s.scene;
@@ -362,8 +373,9 @@ class Deadline {
 /// needs it.
 struct SceneChecks {
   const CampaignSettings& settings;
-  const Scene2& scene;
-  const Arranged2& arranged;
+  const Complex& complex;             ///< the scene's (2D or 3D)
+  /// check_nhrep on the scene (2D: check_nhrep, 3D: check_nhrep3), for (name, solid, what).
+  std::function<CheckOutcome(const std::string&, const std::vector<char>&, const std::string&)> nhrep;
   const std::vector<char>& intended;  ///< empty: none
   const Deadline& deadline;
   std::optional<bsh::ExtractResult> optimum;
@@ -379,7 +391,7 @@ struct SceneChecks {
     return l;
   }
   const bsh::ExtractResult& the_optimum() {
-    if (!optimum) optimum = reference_optimum(arranged.complex, limits());
+    if (!optimum) optimum = reference_optimum(complex, limits());
     return *optimum;
   }
 };
@@ -395,7 +407,7 @@ std::vector<CheckOutcome> run_check_all(SceneChecks& c, const std::vector<const 
   options.cancel = c.deadline.cancel();
   options.time_limit = c.deadline.left();
   for (const Entry* e : wanted) options.only.push_back(e->id);
-  const std::vector<bsh::CheckResult> results = bsh::check_all(c.arranged.complex, options);
+  const std::vector<bsh::CheckResult> results = bsh::check_all(c.complex, options);
   if (results.size() != wanted.size())
     throw CatalogueMismatch("campaign: check_all gave " + std::to_string(results.size()) + " results, expected " +
                             std::to_string(wanted.size()) + " (update the catalogue in campaign.cpp)");
@@ -438,20 +450,20 @@ CheckOutcome run_own(SceneChecks& c, const Entry& e) {
       if (c.intended.empty())
         return {name, CheckStatus::Skipped,
                 "not run: no intended shape (the samples are uniform; --sample-policy intended gives one)"};
-      out = check_generate_samples(name, c.arranged.complex, c.intended,
+      out = check_generate_samples(name, c.complex, c.intended,
                                    e.own == Own::Prop61 ? bsh::Method::BestFirst : bsh::Method::Beam, c.limits());
       break;
     case Own::Beam2:
     case Own::Beam4:
-      out = check_beam_optimality(name, c.arranged.complex, e.own == Own::Beam2 ? 2 : 4, c.the_optimum(), c.limits());
+      out = check_beam_optimality(name, c.complex, e.own == Own::Beam2 ? 2 : 4, c.the_optimum(), c.limits());
       break;
     case Own::Describability:
     case Own::NhRep: {
       std::string what, why;
       const std::optional<std::vector<char>> solid = shape_for(c, what, why);
       if (!solid) return {name, CheckStatus::Stopped, why};
-      out = e.own == Own::Describability ? check_describability(name, c.arranged.complex, *solid, what)
-                                         : check_nhrep(name, c.scene, c.arranged, *solid, what);
+      out = e.own == Own::Describability ? check_describability(name, c.complex, *solid, what)
+                                         : c.nhrep(name, *solid, what);
       break;
     }
     case Own::None: throw std::logic_error("campaign: run_own on a check_all check");
@@ -462,14 +474,18 @@ CheckOutcome run_own(SceneChecks& c, const Entry& e) {
 
 }  // namespace
 
-std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene2& scene, const Arranged2& arranged,
-                                         const std::vector<char>& intended, double time_limit,
-                                         const std::function<bool()>& cancel) {
-  if (!intended.empty() && intended.size() != arranged.complex.cells.size())
+namespace {
+
+/// check_arranged's body for either dimension: `complex` the scene's, `nhrep` its NH-Rep check.
+std::vector<CheckOutcome> check_complex(
+    const CampaignSettings& s, const Complex& complex,
+    std::function<CheckOutcome(const std::string&, const std::vector<char>&, const std::string&)> nhrep,
+    const std::vector<char>& intended, double time_limit, const std::function<bool()>& cancel) {
+  if (!intended.empty() && intended.size() != complex.cells.size())
     throw std::invalid_argument("check_arranged: the intended solid needs one flag per cell");
   const std::vector<std::string> checks = selected(s);
   const Deadline deadline(time_limit, cancel);
-  SceneChecks c{s, scene, arranged, intended, deadline, std::nullopt};
+  SceneChecks c{s, complex, std::move(nhrep), intended, deadline, std::nullopt};
   std::vector<const Entry*> of_check_all, own;
   for (const Entry& e : entries())
     if (is_selected(checks, e.info.name)) (e.own == Own::None ? of_check_all : own).push_back(&e);
@@ -478,13 +494,42 @@ std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene2
   return out;
 }
 
+}  // namespace
+
+std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene2& scene, const Arranged2& arranged,
+                                         const std::vector<char>& intended, double time_limit,
+                                         const std::function<bool()>& cancel) {
+  return check_complex(
+      s, arranged.complex,
+      [&](const std::string& name, const std::vector<char>& solid, const std::string& what) {
+        return check_nhrep(name, scene, arranged, solid, what);
+      },
+      intended, time_limit, cancel);
+}
+
+std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene3& scene, const Arranged3& arranged,
+                                         const std::vector<char>& intended, double time_limit,
+                                         const std::function<bool()>& cancel) {
+  return check_complex(
+      s, arranged.complex,
+      [&](const std::string& name, const std::vector<char>& solid, const std::string& what) {
+        return check_nhrep3(name, scene, arranged, solid, what);
+      },
+      intended, time_limit, cancel);
+}
+
 namespace {
 
 /// check_scene with the scene's time limit counted from `start` (run_scene's: before generating the scene), and,
 /// when the generator already arranged it (SamplePolicy::Intended), its arrangement and intended solid.
-SceneRecord check_scene_since(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
+void keep_scene(SceneRecord& r, const Scene2& scene) { r.scene = scene; }
+void keep_scene(SceneRecord& r, const Scene3& scene) { r.scene3 = scene; }
+
+/// Scene2 with Arranged2, Scene3 with Arranged3 (a 3D scene comes arranged from its generator).
+template <class Scene, class Arranged>
+SceneRecord check_scene_since(const CampaignSettings& s, const Scene& scene, std::uint64_t index,
                               const std::function<bool()>& cancel, Clock::time_point start,
-                              std::optional<Arranged2> arranged = std::nullopt,
+                              std::optional<Arranged> arranged = std::nullopt,
                               const std::vector<char>& intended = {}) {
   const std::vector<std::string> checks = recorded_checks(s);
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -522,13 +567,14 @@ SceneRecord check_scene_since(const CampaignSettings& s, const Scene2& scene, st
   }
   r.timed_out = s.time_limit > 0 && elapsed() >= s.time_limit;
   // The extra checks, outside the time limit and outside the try: what they throw is not the scene's outcome.
-  if (arranged)
-    for (const ExtraCheck& e : s.extra) {
+  if constexpr (std::is_same_v<Scene, Scene2>)
+    if (arranged)
+      for (const ExtraCheck& e : s.extra) {
       CheckOutcome outcome = e.run(index, scene, *arranged);
       outcome.check = e.name;
       r.checks.push_back(std::move(outcome));
     }
-  if (r.failed()) r.scene = scene;
+  if (r.failed()) keep_scene(r, scene);
   return r;
 }
 
@@ -548,10 +594,34 @@ SceneRecord not_generated(const CampaignSettings& s, std::uint64_t index, SceneO
 
 SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
                         const std::function<bool()>& cancel) {
-  return check_scene_since(s, scene, index, cancel, Clock::now());
+  return check_scene_since<Scene2, Arranged2>(s, scene, index, cancel, Clock::now());
 }
 
+namespace {
+
+/// run_scene for CampaignSettings::dimension 3.
+SceneRecord run_scene3(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+  const Clock::time_point start = Clock::now();
+  const bool intended = s.sample_policy == SamplePolicy::Intended;
+  CampaignScene3 g;
+  try {
+    g = random_campaign_scene3(s.scene3, intended ? Samples3::Intended : Samples3::Uniform, s.seed, index, s.limits);
+  } catch (const InputError& e) {
+    return not_generated(s, index, SceneOutcome::Refused, std::string("generating it: ") + e.what());
+  } catch (const std::exception& e) {
+    return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what());
+  }
+  const std::vector<char> none;
+  SceneRecord r = check_scene_since<Scene3, Arranged3>(s, g.scene, index, cancel, start, std::move(g.arranged),
+                                                       intended ? g.intended : none);
+  r.degeneracies = g.degeneracies;
+  return r;
+}
+
+}  // namespace
+
 SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+  if (s.dimension == 3) return run_scene3(s, index, cancel);
   const Clock::time_point start = Clock::now();
   Generated g;
   try {
@@ -566,7 +636,8 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
   } catch (const std::exception& e) {
     return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what());
   }
-  SceneRecord r = check_scene_since(s, g.generated.scene, index, cancel, start, std::move(g.arranged), g.intended);
+  SceneRecord r = check_scene_since<Scene2, Arranged2>(s, g.generated.scene, index, cancel, start,
+                                                       std::move(g.arranged), g.intended);
   for (Degeneracy d : g.generated.degeneracies) r.degeneracies.push_back(to_string(d));
   return r;
 }

@@ -42,6 +42,7 @@ struct CampaignCommandOptions {
   long minimise_steps = campaign::MinimiseOptions{}.max_steps;  ///< --minimise-steps
   std::vector<std::string> merge;                       ///< --merge DIR...
   std::string primitives = "2..4";                      ///< --primitives (3D)
+  std::string beam_widths;                              ///< --beam-widths
   const CLI::App* app = nullptr;                        ///< the subcommand, to ask which options were given
 };
 
@@ -274,6 +275,9 @@ int run_campaign(const CampaignCommandOptions& o) {
   if (o.list_checks) {
     for (const campaign::CheckInfo& c : campaign::check_catalogue())
       std::cout << std::left << std::setw(16) << c.name << c.description << "\n";
+    std::cout << std::left << std::setw(16) << "beamK"
+              << "Beam K=K for any K in 2.." << campaign::kMaxBeamWidth
+              << " (by name, or --beam-widths): as beam2 and beam4\n";
     return 0;
   }
   if (!o.merge.empty()) return run_merge(o);
@@ -288,6 +292,7 @@ int run_campaign(const CampaignCommandOptions& o) {
   campaign::CampaignSettings settings = o.settings;
   parse_generator(o, settings);
   settings.checks = campaign::parse_check_list(o.checks);
+  if (o.app->count("--beam-widths") > 0) settings.checks = campaign::with_beam_widths(settings.checks, o.beam_widths);
   const std::optional<campaign::SamplePolicy> policy = campaign::sample_policy_from_string(o.sample_policy);
   if (!policy) throw InputError("--sample-policy: uniform or intended, not \"" + o.sample_policy + "\"");
   settings.sample_policy = *policy;
@@ -384,6 +389,9 @@ void add_campaign_command(CLI::App& app) {
                   "comma-separated check names, default (check_all's nine: the default) or all; see --list-checks. "
                   "Only the named checks are computed (each as in a full run), recorded, counted, and able to fail "
                   "a scene");
+  cmd->add_option("--beam-widths", o->beam_widths,
+                  "K1,K2,...: add the beam checks of these widths to --checks (1: beam1, check_all's; K >= 2: beamK, "
+                  "beam K against the optimum, with its optimality table; beam2 and beam4 are the catalogue's)");
   cmd->add_flag("--list-checks", o->list_checks, "print the check names and what each checks, then exit");
   cmd->add_option("--out", o->out_dir,
                   "folder for campaign.json, results.jsonl (one line per scene), failures/ and summary.json: a new "

@@ -257,7 +257,9 @@ nlohmann::json summary_to_json(const Summary& s) {
   nlohmann::json out = {{"format", kCampaignSummaryFormat}, {"scenes", s.scenes},       {"checked", s.checked},
                         {"refused", s.refused},             {"errors", s.errors},       {"timed_out", s.timed_out},
                         {"failed_scenes", s.failed_scenes}, {"checks", checks}};
-  for (const auto& [beam, total] : s.beam_optimal) {
+  for (const std::string& beam : s.checks) {
+    if (!s.beam_optimal.count(beam)) continue;
+    const StatusCounts& total = s.beam_optimal.at(beam);
     const auto optimality = [](const StatusCounts& c) {
       const campaign::RateInterval i = c.held_interval();
       return nlohmann::json{{"optimal", c.held}, {"sub_optimal", c.failed}, {"rate", c.held_rate()},
@@ -325,7 +327,9 @@ std::string summary_table(const Summary& s) {
       for (const auto& [halfspaces, counts] : it->second) out << counts_row(std::to_string(halfspaces), counts);
     out << counts_row("all", s.by_check.at(name));
   }
-  for (const auto& [beam, total] : s.beam_optimal) {
+  for (const std::string& beam : s.checks) {  // in catalogue order (beam2 before beam16)
+    if (!s.beam_optimal.count(beam)) continue;
+    const StatusCounts& total = s.beam_optimal.at(beam);
     out << "\n" << beam << " optimality: the K=" << beam.substr(4) << " beam's energy equals the optimum, on the scenes where "
         << beam << " held\n";
     out << "  halfspaces  optimal  sub-optimal       rate  95% interval (Wilson)\n";

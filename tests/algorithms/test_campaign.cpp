@@ -891,3 +891,47 @@ TEST_CASE("campaign 3D: a failing scene is kept as a 3D scene file", "[campaign]
   CHECK(kept.halfspaces.size() == r.scene3->halfspaces.size());
   CHECK(kept.description.find("failed existence") != std::string::npos);
 }
+
+TEST_CASE("campaign: beam widths chosen by the user (beamK, --beam-widths)", "[campaign][beamwidths]") {
+  CHECK(beam_width_of("beam2") == 2);
+  CHECK(beam_width_of("beam16") == 16);
+  CHECK_FALSE(beam_width_of("beam1"));  // check_all's
+  CHECK_FALSE(beam_width_of("beam0"));
+  CHECK_FALSE(beam_width_of("beam02"));
+  CHECK_FALSE(beam_width_of("beam3x"));
+  CHECK_FALSE(beam_width_of("beam99999"));
+  CHECK(parse_check_list("beam16,beam3,beam1,nhrep,beam4") ==
+        std::vector<std::string>{"beam1", "beam3", "beam4", "beam16", "nhrep"});
+  CHECK_THROWS_AS(parse_check_list("beam0"), InputError);
+  CHECK_THROWS_AS(parse_check_list("beam3,beam3"), InputError);
+  std::vector<std::string> with = with_beam_widths({}, "1,16,3");
+  std::vector<std::string> expected = default_checks();
+  expected.push_back("beam3");
+  expected.push_back("beam16");
+  CHECK(with == expected);
+  CHECK(with_beam_widths(parse_check_list("beam2,existence"), "2,4") ==
+        std::vector<std::string>{"existence", "beam2", "beam4"});
+  CHECK_THROWS_AS(with_beam_widths({}, "0"), InputError);
+  CHECK_THROWS_AS(with_beam_widths({}, "2,"), InputError);
+  CHECK_THROWS_AS(with_beam_widths({}, "x"), InputError);
+  // beamK runs beam K against the optimum; beam2 by its name and by a width give the same outcome.
+  CampaignSettings s = small_settings();
+  s.checks = parse_check_list("beam2,beam3,beam16");
+  Summary summary(recorded_checks(s));
+  for (const SceneRecord& r : run_all(s, range(0, 12), 2)) {
+    REQUIRE(r.checks.size() == 3);
+    CHECK(r.checks[1].check == "beam3");
+    CHECK(r.checks[2].check == "beam16");
+    for (const CheckOutcome& c : r.checks)
+      if (c.status == CheckStatus::Held)
+        CHECK((c.witness.rfind("optimal:", 0) == 0 || c.witness.rfind("sub-optimal:", 0) == 0));
+    summary.add(r);
+  }
+  CHECK(summary.beam_optimal.at("beam16").total() > 0);
+  const std::string table = summary_table(summary);
+  const std::size_t b3 = table.find("beam3 optimality"), b16 = table.find("beam16 optimality");
+  CHECK(b3 != std::string::npos);
+  CHECK(b16 != std::string::npos);
+  CHECK(b3 < b16);
+  CHECK(summary_to_json(summary).contains("beam16_optimality"));
+}

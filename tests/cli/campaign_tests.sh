@@ -201,6 +201,16 @@ if grep -q '"status":"skipped","witness":"not run: no intended shape' u1/results
   bad "prop61 under the uniform policy: $(head -c 300 u1/results.jsonl)"; fi
 if [ "$(jq -c '.checks | length' j1/campaign.json)" = 9 ]; then ok; else bad "the default checks are not nine"; fi
 
+# ---- --beam-widths: beam checks of the user's widths ----
+expect 0 "" -- "$hsx" campaign "${gen[@]}" --count 6 --checks existence --beam-widths 1,8,2 --out bw --jobs 2 && cp out bw.txt
+if [ "$(jq -c '[.checks[].check]' bw/results.jsonl | sort -u)" = '["existence","beam1","beam2","beam8"]' ]; then ok; else
+  bad "--beam-widths 1,8,2: checks $(jq -c '[.checks[].check]' bw/results.jsonl | sort -u)"; fi
+if jq -e '.beam8_optimality.optimal + .beam8_optimality.sub_optimal > 0 and (.beam1_optimality | type) == "object"' \
+     bw/summary.json >/dev/null; then ok; else bad "--beam-widths: beam8_optimality in summary.json"; fi
+has bw.txt "beam8 optimality: the K=8 beam" "--beam-widths: the table"
+expect 0 "" -- "$hsx" campaign --list-checks && has out "beamK" "--list-checks names beamK"
+expect 2 "--beam-widths" -- "$hsx" campaign --count 2 --beam-widths 0
+
 # ---- 3D campaigns (--dimension 3: algorithms/campaign/scene3.hpp) ----
 gen3=(--dimension 3 --seed 4 --primitives 1..2 --segments 6 --samples 4 --degeneracies 1..2 --max-cells 40)
 expect 0 "" -- "$hsx" campaign "${gen3[@]}" --count 6 --sample-policy intended --checks all --out d1 --jobs 1 && cp out d1.txt

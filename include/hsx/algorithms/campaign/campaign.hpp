@@ -48,7 +48,7 @@ struct CheckInfo {
 /// beam1, prop41-optimum, prop41-beam, uniqueness, certificates, manifold), then the campaign's own
 /// (scene_checks.hpp): prop61 and propB1 (GENERATE-SAMPLES with best-first and with beam K = 1, fallbacks disabled;
 /// on the intended shape, so skipped under SamplePolicy::Uniform), beam2 and beam4 (beam K = 2, 4 against the
-/// optimum), describability (Shapiro-Vossler against BHC) and nhrep (NH-Rep's tree and its natural-halfspace
+/// optimum; any other width K >= 2 is the check "beamK", parse_check_list), describability (Shapiro-Vossler against BHC) and nhrep (NH-Rep's tree and its natural-halfspace
 /// evaluation), the last two on the intended shape, or the optimum under SamplePolicy::Uniform.
 const std::vector<CheckInfo>& check_catalogue();
 
@@ -57,9 +57,24 @@ const std::vector<CheckInfo>& check_catalogue();
 /// the optimum once more (a best-first search of their own); prop61 runs best-first once per greedy round.
 const std::vector<std::string>& default_checks();
 
-/// The catalogue's names for a comma-separated list ("default" or empty: default_checks(); "all": every check),
-/// in catalogue order whatever order they were given in. Throws InputError naming an unknown or repeated name.
+/// The largest beam width a beamK check may ask for.
+inline constexpr int kMaxBeamWidth = 4096;
+
+/// K for a beam check "beamK" of the campaign's own (K = 2 .. kMaxBeamWidth, written without a leading zero:
+/// beam K against the optimum, as beam2 and beam4, which are the catalogue's two); std::nullopt for any other name
+/// (beam1 included: check_all's).
+std::optional<int> beam_width_of(const std::string& name);
+
+/// The catalogue's names for a comma-separated list ("default" or empty: default_checks(); "all": every check of
+/// the catalogue), in catalogue order whatever order they were given in; besides the catalogue's, any "beamK"
+/// (beam_width_of) is a check, placed with beam2 and beam4 in order of K. Throws InputError naming an unknown or
+/// repeated name.
 std::vector<std::string> parse_check_list(const std::string& list);
+
+/// `checks` (empty: default_checks()) with the beam checks of the widths `widths` ("K1,K2,...", `--beam-widths`:
+/// K = 1 is beam1, K >= 2 beamK) added, each once, in catalogue order. Throws InputError for a width that is not a
+/// whole number in 1..kMaxBeamWidth.
+std::vector<std::string> with_beam_widths(std::vector<std::string> checks, const std::string& widths);
 
 /// How a scene's samples are chosen (CampaignSettings::sample_policy).
 enum class SamplePolicy {
@@ -238,6 +253,11 @@ std::vector<CheckOutcome> check_arranged(const CampaignSettings& settings, const
                                          const Arranged3& arranged, const std::vector<char>& intended,
                                          double time_limit = 0, const std::function<bool()>& cancel = {});
 
+/// Scene `index` of a 2D campaign as run_scene generates it, by the sample policy (for SamplePolicy::Intended the
+/// scene with the intended shape's samples), without checking it. Throws InputError when the arrangement limits
+/// refuse it (run_scene's Refused) and std::invalid_argument for a 3D campaign.
+Scene2 generate_scene(const CampaignSettings& settings, std::uint64_t index);
+
 /// The checks of run_scene on a given scene (run_scene is random_scene, then this, then the generator's
 /// degeneracies added to the record): `scene` arranged within settings.limits and checked (the catalogue's selected
 /// checks, then settings.extra's), its record filled as run_scene's (index and seed from `index` and settings.seed,
@@ -311,7 +331,8 @@ struct Summary {
   /// tallied.
   StatusCounts beam1_optimal;
   std::map<int, StatusCounts> beam1_optimal_by_halfspaces;
-  /// The same for every tallied beam check (beam1, beam2, beam4; beam_optimal["beam1"] is beam1_optimal), by name.
+  /// The same for every tallied beam check (beam1, beam2, beam4, any beamK; beam_optimal["beam1"] is
+  /// beam1_optimal), by name.
   std::map<std::string, StatusCounts> beam_optimal;
   std::map<std::string, std::map<int, StatusCounts>> beam_optimal_by_halfspaces;
 

@@ -32,6 +32,7 @@ class CampaignRecord:
     timed_out: bool
     checks: Dict[str, Tuple[str, str]]
     failed: bool
+    intended: List[int] = dataclasses.field(default_factory=list)
     _scene_json: Optional[str] = dataclasses.field(default=None, repr=False, compare=False)
     _settings: dict = dataclasses.field(default_factory=dict, repr=False, compare=False)
 
@@ -40,11 +41,17 @@ class CampaignRecord:
         (hsx.random_scene(seed, index, **settings): the same scene, the generator being deterministic). Its
         ``degeneracies`` lists the patterns applied."""
         if self._scene_json is not None:
-            scene = Scene.from_json(self._scene_json, source=f"<campaign scene {self.seed}/{self.index}>")
-            scene.degeneracies = list(self.degeneracies)
-            return scene
-        from . import random_scene
-        return random_scene(self.seed, self.index, **self._settings)
+            text = self._scene_json
+        elif self._settings.get("sample_policy", "uniform") == "intended":
+            generator = {k: v for k, v in self._settings.items() if k != "sample_policy"}
+            text = _hsx._campaign_scene(self.seed, self.index, "", {"sample_policy": "intended"}, generator)
+        else:
+            from . import random_scene
+            settings = {k: v for k, v in self._settings.items() if k != "sample_policy"}
+            return random_scene(self.seed, self.index, **settings)
+        scene = Scene.from_json(text, source=f"<campaign scene {self.seed}/{self.index}>")
+        scene.degeneracies = list(self.degeneracies)
+        return scene
 
     def to_json(self) -> dict:
         """The record as `hsx campaign --out`'s results.jsonl writes it (io/campaign_files.hpp record_to_json):
@@ -56,6 +63,8 @@ class CampaignRecord:
             j["note"] = self.note
         if self.timed_out:
             j["timed_out"] = True
+        if self.intended:
+            j["intended"] = list(self.intended)
         j["checks"] = [{"check": name, "status": status, "witness": witness}
                        for name, (status, witness) in self.checks.items()]
         return j
@@ -84,7 +93,8 @@ class Campaign:
                               patches=d["patches"], samples=d["samples"], degeneracies=list(d["degeneracies"]),
                               outcome=d["outcome"], note=d["note"], timed_out=d["timed_out"],
                               checks={name: (status, witness) for name, status, witness in d["checks"]},
-                              failed=d["failed"], _scene_json=d["scene_json"], _settings=dict(self._settings))
+                              failed=d["failed"], intended=list(d["intended"]), _scene_json=d["scene_json"],
+                              _settings=dict(self._settings))
 
     def close(self) -> None:
         """Stops the campaign (waiting for the scenes being run); the iteration then ends."""
@@ -100,7 +110,7 @@ class Campaign:
 def campaign(seed: int, count: int, start: int = 0, checks: Union[None, str, Sequence[str]] = None, jobs: int = 1,
              time_limit: float = 0, *, max_labellings: Optional[int] = None, max_states: Optional[int] = None,
              max_graph_cuts: Optional[int] = None, precision: Optional[int] = None, max_cells: Optional[int] = None,
-             max_side_table: Optional[int] = None, **settings) -> Campaign:
+             max_side_table: Optional[int] = None, sample_policy: str = "uniform", **settings) -> Campaign:
     """Scenes ``start`` .. ``start + count - 1`` of seed ``seed`` (hsx.random_scene's scenes), each arranged and
     checked by the proposition checkers, as `hsx campaign --seed S --count N --start K` runs them: an iterator of
     hsx.CampaignRecord in index order, the same records for any ``jobs`` (threads), except where ``time_limit``
@@ -110,7 +120,10 @@ def campaign(seed: int, count: int, start: int = 0, checks: Union[None, str, Seq
     or "default": check_all's nine (`hsx campaign`'s default); "all": every check. Limits as `hsx campaign`'s options, None keeping its default: ``max_labellings``
     (--max-labellings), ``max_states``, ``max_graph_cuts`` (per search; 0: none), ``precision`` (bits of the
     certified comparisons), ``max_cells`` and ``max_side_table`` (the arrangement's; a scene beyond them is
-    "refused"). ``settings``: the generator's, as hsx.random_scene's keyword arguments, except that max_samples
+    "refused"). ``sample_policy``: "uniform" (the generator's samples, up to max_samples on the boundaries) or
+    "intended" (`hsx campaign --sample-policy intended`: the samples of a random orientation-preserving intended
+    shape, one per boundary component; the record's ``intended`` lists its cells; max_samples and near_percent
+    are not used). ``settings``: the generator's, as hsx.random_scene's keyword arguments, except that max_samples
     defaults to 6 as in `hsx campaign` (``hsx._campaign.CAMPAIGN_MAX_SAMPLES``; 0: scenes without samples).
 
     Bad settings raise hsx.InputError here, before any scene is run. The scenes run with the GIL released."""
@@ -129,8 +142,9 @@ def campaign(seed: int, count: int, start: int = 0, checks: Union[None, str, Seq
         raise _hsx.InputError("count: must be >= 0")
     if start < 0:
         raise _hsx.InputError("start: must be >= 0")
+    options["sample_policy"] = sample_policy
     run = _hsx._campaign(seed, start, count, check_list, jobs, time_limit, options, settings)
-    return Campaign(run, settings)
+    return Campaign(run, dict(settings, sample_policy=sample_policy))
 
 
 def campaign_checks() -> List[Tuple[str, str]]:

@@ -152,6 +152,7 @@ py::dict record_dict(const campaign::SceneRecord& r) {
   d["checks"] = checks;
   d["failed"] = r.failed();
   d["scene_json"] = r.scene ? py::object(py::str(hsx::write_scene2(*r.scene).dump(2) + "\n")) : py::object(py::none());
+  d["intended"] = r.intended;
   return d;
 }
 
@@ -169,6 +170,12 @@ campaign::CampaignSettings campaign_settings(std::uint64_t seed, const std::stri
   s.seed = seed;
   s.scene = random_settings(generator);
   s.checks = campaign::parse_check_list(checks);
+  if (options.contains("sample_policy")) {
+    const std::string policy = options["sample_policy"].cast<std::string>();
+    const std::optional<campaign::SamplePolicy> p = campaign::sample_policy_from_string(policy);
+    if (!p) throw hsx::InputError("sample_policy: \"uniform\" or \"intended\", not \"" + policy + "\"");
+    s.sample_policy = *p;
+  }
   if (time_limit < 0) throw hsx::InputError("time_limit: must be >= 0 (0: none)");
   s.time_limit = time_limit;
   s.brute_force_limit = option(options, "max_labellings", s.brute_force_limit);
@@ -221,6 +228,15 @@ void bind_campaign(py::module_& m) {
         },
         py::arg("seed"), py::arg("start"), py::arg("count"), py::arg("checks"), py::arg("jobs"),
         py::arg("time_limit"), py::arg("options"), py::arg("generator"));
+  m.def(
+      "_campaign_scene",
+      [](std::uint64_t seed, std::uint64_t index, const std::string& checks, const py::dict& options,
+         const py::dict& generator) {
+        const campaign::CampaignSettings s = campaign_settings(seed, checks, 0, options, generator);
+        py::gil_scoped_release release;
+        return hsx::write_scene2(campaign::generate_scene(s, index)).dump(2) + "\n";
+      },
+      py::arg("seed"), py::arg("index"), py::arg("checks"), py::arg("options"), py::arg("generator"));
   m.def("_campaign_checks", [] {
     py::list l;
     for (const campaign::CheckInfo& c : campaign::check_catalogue())

@@ -171,3 +171,26 @@ def test_a_failing_scene_comes_back_as_a_scene(hsx_program, tmp_path):
     path = tmp_path / "scene80.json"
     path.write_text(s.to_json())
     assert subprocess.run([hsx_program, "check", str(path)], capture_output=True, text=True).returncode == 3
+
+
+def test_sample_policy_intended_equals_the_cli(hsx_program, tmp_path):
+    out = tmp_path / "intended"
+    checks = "existence,prop61,beam1,beam3"
+    cli = subprocess.run([hsx_program, "campaign", "--seed", "5", "--count", "8", "--halfspaces", "2..5",
+                          "--sample-policy", "intended", "--checks", checks, "--out", str(out)],
+                         capture_output=True, text=True)
+    assert cli.returncode in (0, 3), cli.stderr
+    lines = [json.loads(line) for line in (out / "results.jsonl").read_text().splitlines()]
+    records = list(hsx.campaign(seed=5, count=8, checks=checks, sample_policy="intended", min_halfspaces=2,
+                                max_halfspaces=5))
+    assert [r.to_json() for r in records] == lines
+    assert any(r.intended for r in records)
+    assert all(r.checks["prop61"][0] != "skipped" for r in records if r.outcome == "checked")
+    # The record's scene is the one the campaign checked: the intended shape's samples.
+    shaped = next(r for r in records if r.intended)
+    assert len(shaped.scene().to_dict()["samples"]) == shaped.samples
+    # The default policy is uniform (prop61 skipped: no intended shape); a bad policy is InputError.
+    uniform = next(iter(hsx.campaign(seed=5, count=1, checks="prop61")))
+    assert uniform.checks["prop61"][0] == "skipped" and not uniform.intended
+    with pytest.raises(hsx.InputError):
+        hsx.campaign(seed=5, count=1, sample_policy="random")

@@ -8,6 +8,7 @@
 #include <hsx/io/campaign_files.hpp>
 #include <hsx/io/scene_json.hpp>
 
+#include <array>
 #include <chrono>
 #include <iomanip>
 #include <iostream>
@@ -40,6 +41,9 @@ struct CampaignCommandOptions {
   bool minimise = true;                                 ///< --minimise / --no-minimise
   long minimise_steps = campaign::MinimiseOptions{}.max_steps;  ///< --minimise-steps
   std::vector<std::string> merge;                       ///< --merge DIR...
+  std::string primitives = "2..4";                      ///< --primitives (3D)
+  std::string beam_widths;                              ///< --beam-widths
+  const CLI::App* app = nullptr;                        ///< the subcommand, to ask which options were given
 };
 
 /// For --seed, --start, --count: a whole number 0 .. 2^64 - 1 written in digits (CLI11 alone would wrap "-1").
@@ -108,27 +112,62 @@ void parse_kinds(const std::string& text, RandomSceneSettings& g) {
   if (!g.halfplanes && !g.disks && !g.polygons) throw InputError("--kinds: name at least one kind");
 }
 
-/// NAME=W,...: the named patterns' weights; patterns not named keep weight 1.
-void parse_weights(const std::string& text, RandomSceneSettings& g) {
+/// NAME=W,...: the named patterns' weights (`weights`, one per pattern, named by `name_of`); patterns not named
+/// keep their weight.
+template <std::size_t N, class Name>
+void parse_weights(const std::string& text, std::array<int, N>& weights, Name name_of) {
   if (text.empty()) return;
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
     const std::size_t eq = item.find('=');
     const std::string name = item.substr(0, eq);
-    int k = 0;
-    while (k < kDegeneracyCount && name != to_string(static_cast<Degeneracy>(k))) ++k;
-    if (eq == std::string::npos || k == kDegeneracyCount) {
+    std::size_t k = 0;
+    while (k < N && name != name_of(k)) ++k;
+    if (eq == std::string::npos || k == N) {
       std::string known;
-      for (int d = 0; d < kDegeneracyCount; ++d) known += std::string(d ? ", " : "") + to_string(static_cast<Degeneracy>(d));
+      for (std::size_t d = 0; d < N; ++d) known += std::string(d ? ", " : "") + name_of(d);
       throw InputError("--degeneracy-weights: NAME=WEIGHT items, comma-separated, NAME one of " + known + "; got \"" +
                        item + "\"");
     }
     const std::string w = item.substr(eq + 1);
     if (w.empty() || w.size() > 6 || w.find_first_not_of("0123456789") != std::string::npos)
       throw InputError("--degeneracy-weights: \"" + item + "\": the weight is a whole number 0..999999");
-    g.degeneracy_weight[static_cast<std::size_t>(k)] = std::stoi(w);
+    weights[k] = std::stoi(w);
   }
+}
+
+/// The generator options of the dimension the campaign does not use, when given: refused (never ignored).
+void refuse_other_dimension(const CampaignCommandOptions& o, int dimension) {
+  static const std::vector<std::string> only2 = {"--halfspaces", "--kinds", "--complement-percent", "--denominator",
+                                                 "--coordinate-bound", "--max-radius", "--near-percent", "--against"};
+  static const std::vector<std::string> only3 = {"--primitives", "--segments", "--hollow", "--max-draws"};
+  for (const std::string& name : dimension == 3 ? only2 : only3)
+    if (o.app->count(name) > 0)
+      throw InputError(name + ": a " + (dimension == 3 ? "2D" : "3D") + " option (this campaign is --dimension " +
+                       std::to_string(dimension) + ")");
+  if (dimension == 3 && (o.app->count("--minimise") > 0 || o.app->count("--minimise-steps") > 0))
+    throw InputError("--minimise: 2D scenes only (a failing 3D scene is kept as generated)");
+}
+
+/// The generator's settings of either dimension from the options.
+void parse_generator(const CampaignCommandOptions& o, campaign::CampaignSettings& settings) {
+  refuse_other_dimension(o, settings.dimension);
+  if (settings.dimension == 3) {
+    campaign::Scene3Settings& g = settings.scene3;
+    std::tie(g.solid.min_primitives, g.solid.max_primitives) = parse_range(o.primitives, "--primitives", 1);
+    std::tie(g.min_degeneracies, g.max_degeneracies) = parse_range(o.degeneracies, "--degeneracies", 0);
+    g.max_samples = settings.scene.max_samples;
+    parse_weights(o.weights, g.degeneracy_weight,
+                  [](std::size_t k) { return std::string(to_string(static_cast<campaign::Degeneracy3>(k))); });
+    return;
+  }
+  std::tie(settings.scene.min_halfspaces, settings.scene.max_halfspaces) = parse_range(o.halfspaces, "--halfspaces", 1);
+  std::tie(settings.scene.min_degeneracies, settings.scene.max_degeneracies) =
+      parse_range(o.degeneracies, "--degeneracies", 0);
+  parse_kinds(o.kinds, settings.scene);
+  parse_weights(o.weights, settings.scene.degeneracy_weight,
+                [](std::size_t k) { return std::string(to_string(static_cast<Degeneracy>(k))); });
 }
 
 /// --against: the solver it runs (InputError naming the option when bad; nullopt without --against).
@@ -168,6 +207,7 @@ struct Kept {
 std::string encode_record(const Kept& k) {
   std::string text = record_to_json(k.record).dump() + "\n";
   if (k.record.scene) text += write_scene2(*k.record.scene).dump();
+  if (k.record.scene3) text += write_scene3(*k.record.scene3).dump();
   text += "\n";
   if (k.minimised) text += write_scene2(*k.minimised).dump();
   return text;
@@ -178,7 +218,10 @@ Kept decode_record(const std::string& text) {
   Kept k;
   k.record = record_from_json(nlohmann::json::parse(text.substr(0, end)));
   const std::string_view scene = std::string_view(text).substr(end + 1, second - end - 1);
-  if (!scene.empty()) k.record.scene = read_scene_text(scene);
+  if (!scene.empty()) {
+    if (nlohmann::json::parse(scene).value("dimension", 2) == 3) k.record.scene3 = read_scene3_text(scene);
+    else k.record.scene = read_scene_text(scene);
+  }
   if (second + 1 < text.size()) k.minimised = read_scene_text(std::string_view(text).substr(second + 1));
   return k;
 }
@@ -193,6 +236,8 @@ void run_all(const campaign::CampaignSettings& settings, const std::vector<std::
              const std::function<void(Kept&&)>& sink) {
   const auto keep = [&](campaign::SceneRecord&& r) {
     Kept k;
+    if (minimise && r.failed() && r.scene3)
+      std::cerr << "hsx campaign: scene " << r.index << " kept as generated (3D scenes are not minimised)\n";
     if (minimise && r.failed() && r.scene) {
       const campaign::MinimiseResult m = campaign::minimise_scene(settings, *r.scene, r, *minimise);
       k.minimised = minimised_failure(r, m);
@@ -230,6 +275,9 @@ int run_campaign(const CampaignCommandOptions& o) {
   if (o.list_checks) {
     for (const campaign::CheckInfo& c : campaign::check_catalogue())
       std::cout << std::left << std::setw(16) << c.name << c.description << "\n";
+    std::cout << std::left << std::setw(16) << "beamK"
+              << "Beam K=K for any K in 2.." << campaign::kMaxBeamWidth
+              << " (by name, or --beam-widths): as beam2 and beam4\n";
     return 0;
   }
   if (!o.merge.empty()) return run_merge(o);
@@ -242,12 +290,9 @@ int run_campaign(const CampaignCommandOptions& o) {
   if (o.out_dir == "-") throw InputError("--out: a folder, not - (standard output holds the table)");
   if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR (the campaign to continue)");
   campaign::CampaignSettings settings = o.settings;
-  std::tie(settings.scene.min_halfspaces, settings.scene.max_halfspaces) = parse_range(o.halfspaces, "--halfspaces", 1);
-  std::tie(settings.scene.min_degeneracies, settings.scene.max_degeneracies) =
-      parse_range(o.degeneracies, "--degeneracies", 0);
-  parse_kinds(o.kinds, settings.scene);
-  parse_weights(o.weights, settings.scene);
+  parse_generator(o, settings);
   settings.checks = campaign::parse_check_list(o.checks);
+  if (o.app->count("--beam-widths") > 0) settings.checks = campaign::with_beam_widths(settings.checks, o.beam_widths);
   const std::optional<campaign::SamplePolicy> policy = campaign::sample_policy_from_string(o.sample_policy);
   if (!policy) throw InputError("--sample-policy: uniform or intended, not \"" + o.sample_policy + "\"");
   settings.sample_policy = *policy;
@@ -344,6 +389,9 @@ void add_campaign_command(CLI::App& app) {
                   "comma-separated check names, default (check_all's nine: the default) or all; see --list-checks. "
                   "Only the named checks are computed (each as in a full run), recorded, counted, and able to fail "
                   "a scene");
+  cmd->add_option("--beam-widths", o->beam_widths,
+                  "K1,K2,...: add the beam checks of these widths to --checks (1: beam1, check_all's; K >= 2: beamK, "
+                  "beam K against the optimum, with its optimality table; beam2 and beam4 are the catalogue's)");
   cmd->add_flag("--list-checks", o->list_checks, "print the check names and what each checks, then exit");
   cmd->add_option("--out", o->out_dir,
                   "folder for campaign.json, results.jsonl (one line per scene), failures/ and summary.json: a new "
@@ -423,6 +471,20 @@ void add_campaign_command(CLI::App& app) {
                   "refuse a scene whose cells x halfspaces exceeds this (default " +
                       std::to_string(o->settings.limits.max_side_entries) + "; 0: no limit)")
       ->check(CLI::NonNegativeNumber);
+  // The 3D generator (algorithms/campaign/scene3.hpp).
+  cmd->add_option("--dimension", o->settings.dimension,
+                  "2 (default: random 2D scenes) or 3: random 3D CSG scenes of boxes, spheres, cylinders and planes "
+                  "with degeneracy patterns (algorithms/campaign/scene3.hpp); --degeneracies, "
+                  "--degeneracy-weights (PlaneOnBoxFace, CoincidentFaces, ConcurrentPlanes), --samples and "
+                  "--sample-policy apply to both");
+  cmd->add_option("--primitives", o->primitives, "3D: the number of primitives as A..B or N (default 2..4)");
+  cmd->add_option("--segments", o->settings.scene3.solid.segments,
+                  "3D: segments per circle of spheres and cylinders, 6..64 (default 8)");
+  cmd->add_flag("--hollow", o->settings.scene3.solid.hollow,
+                "3D: subtract an inner primitive from a box or sphere primitive 0 (a cavity)");
+  cmd->add_option("--max-draws", o->settings.scene3.solid.max_draws,
+                  "3D: an empty or unbounded solid is drawn again, at most this many draws (default 20)");
+  o->app = cmd;
   run_with_status(cmd, o, &run_campaign);
 }
 

@@ -27,6 +27,47 @@ std::vector<std::uint64_t> CampaignPlan::indices() const {
   return campaign::shard_indices(start, count, shard, shards);
 }
 
+namespace {
+
+/// campaign.json's "limits".
+nlohmann::json limits_json(const campaign::CampaignSettings& s) {
+  return {{"max_cells", s.limits.max_cells},
+          {"max_side_entries", s.limits.max_side_entries},
+          {"brute_force_limit", s.brute_force_limit},
+          {"max_states", s.max_states},
+          {"max_graph_cuts", s.max_graph_cuts},
+          {"precision_bits", s.precision_bits},
+          {"time_limit", s.time_limit}};
+}
+
+/// campaign_to_json for a 3D campaign: "dimension": 3 and the 3D generator's settings.
+nlohmann::json campaign3_to_json(const campaign::CampaignSettings& s, const CampaignPlan& plan,
+                                 const nlohmann::json& checks) {
+  const campaign::Scene3Settings& g = s.scene3;
+  nlohmann::json weights = nlohmann::json::object();
+  for (int k = 0; k < campaign::kDegeneracy3Count; ++k)
+    weights[to_string(static_cast<campaign::Degeneracy3>(k))] = g.degeneracy_weight[static_cast<std::size_t>(k)];
+  return {{"format", kCampaignFormat},
+          {"seed", s.seed},
+          {"dimension", 3},
+          {"plan", {{"start", plan.start}, {"count", plan.count}, {"shard", plan.shard}, {"shards", plan.shards}}},
+          {"generator",
+           {{"min_primitives", g.solid.min_primitives},
+            {"max_primitives", g.solid.max_primitives},
+            {"segments", g.solid.segments},
+            {"hollow", g.solid.hollow},
+            {"max_draws", g.solid.max_draws},
+            {"min_degeneracies", g.min_degeneracies},
+            {"max_degeneracies", g.max_degeneracies},
+            {"degeneracy_weights", weights},
+            {"max_samples", g.max_samples},
+            {"sample_policy", campaign::to_string(s.sample_policy)}}},
+          {"checks", checks},
+          {"limits", limits_json(s)}};
+}
+
+}  // namespace
+
 nlohmann::json campaign_to_json(const campaign::CampaignSettings& s, const CampaignPlan& plan) {
   const RandomSceneSettings& g = s.scene;
   nlohmann::json weights = nlohmann::json::object();
@@ -34,6 +75,7 @@ nlohmann::json campaign_to_json(const campaign::CampaignSettings& s, const Campa
     weights[to_string(static_cast<Degeneracy>(k))] = g.degeneracy_weight[static_cast<std::size_t>(k)];
   nlohmann::json checks = nlohmann::json::array();
   for (const std::string& c : s.checks.empty() ? campaign::default_checks() : s.checks) checks.push_back(c);
+  if (s.dimension == 3) return campaign3_to_json(s, plan, checks);
   nlohmann::json out = {{"format", kCampaignFormat},
           {"seed", s.seed},
           {"plan", {{"start", plan.start}, {"count", plan.count}, {"shard", plan.shard}, {"shards", plan.shards}}},
@@ -53,14 +95,7 @@ nlohmann::json campaign_to_json(const campaign::CampaignSettings& s, const Campa
             {"max_samples", g.max_samples},
             {"near_percent", g.near_percent}}},
           {"checks", checks},
-          {"limits",
-           {{"max_cells", s.limits.max_cells},
-            {"max_side_entries", s.limits.max_side_entries},
-            {"brute_force_limit", s.brute_force_limit},
-            {"max_states", s.max_states},
-            {"max_graph_cuts", s.max_graph_cuts},
-            {"precision_bits", s.precision_bits},
-            {"time_limit", s.time_limit}}}};
+          {"limits", limits_json(s)}};
   // Only when not the default, so that the manifests of uniform campaigns stay as before.
   if (s.sample_policy != campaign::SamplePolicy::Uniform)
     out["generator"]["sample_policy"] = campaign::to_string(s.sample_policy);
@@ -222,7 +257,9 @@ nlohmann::json summary_to_json(const Summary& s) {
   nlohmann::json out = {{"format", kCampaignSummaryFormat}, {"scenes", s.scenes},       {"checked", s.checked},
                         {"refused", s.refused},             {"errors", s.errors},       {"timed_out", s.timed_out},
                         {"failed_scenes", s.failed_scenes}, {"checks", checks}};
-  for (const auto& [beam, total] : s.beam_optimal) {
+  for (const std::string& beam : s.checks) {
+    if (!s.beam_optimal.count(beam)) continue;
+    const StatusCounts& total = s.beam_optimal.at(beam);
     const auto optimality = [](const StatusCounts& c) {
       const campaign::RateInterval i = c.held_interval();
       return nlohmann::json{{"optimal", c.held}, {"sub_optimal", c.failed}, {"rate", c.held_rate()},
@@ -290,7 +327,9 @@ std::string summary_table(const Summary& s) {
       for (const auto& [halfspaces, counts] : it->second) out << counts_row(std::to_string(halfspaces), counts);
     out << counts_row("all", s.by_check.at(name));
   }
-  for (const auto& [beam, total] : s.beam_optimal) {
+  for (const std::string& beam : s.checks) {  // in catalogue order (beam2 before beam16)
+    if (!s.beam_optimal.count(beam)) continue;
+    const StatusCounts& total = s.beam_optimal.at(beam);
     out << "\n" << beam << " optimality: the K=" << beam.substr(4) << " beam's energy equals the optimum, on the scenes where "
         << beam << " held\n";
     out << "  halfspaces  optimal  sub-optimal       rate  95% interval (Wilson)\n";
@@ -423,15 +462,24 @@ CampaignFolder::CampaignFolder(const std::string& dir, const nlohmann::json& man
 
 void CampaignFolder::append(const SceneRecord& record, const std::optional<Scene2>& minimised) {
   if (record.failed()) {
-    if (!record.scene) throw std::logic_error("CampaignFolder::append: a failed record without its scene");
+    if (!record.scene && !record.scene3)
+      throw std::logic_error("CampaignFolder::append: a failed record without its scene");
     std::error_code ec;
     const fs::path failures = fs::path(dir_) / "failures";
     if (!fs::is_directory(failures, ec) && !fs::create_directory(failures, ec) && ec)
       throw OutputError(failures.string() + ": cannot make the folder: " + ec.message());
-    Scene2 scene = *record.scene;
-    scene.description = failure_note(record);
     const std::string name = "scene-" + std::to_string(record.index);
-    write_file_atomically((failures / (name + ".json")).string(), write_scene2(scene).dump(2) + "\n");
+    std::string text;
+    if (record.scene) {
+      Scene2 scene = *record.scene;
+      scene.description = failure_note(record);
+      text = write_scene2(scene).dump(2);
+    } else {
+      Scene3 scene = *record.scene3;
+      scene.description = failure_note(record);
+      text = write_scene3(scene).dump(2);
+    }
+    write_file_atomically((failures / (name + ".json")).string(), text + "\n");
     if (minimised)
       write_file_atomically((failures / (name + ".min.json")).string(), write_scene2(*minimised).dump(2) + "\n");
   }

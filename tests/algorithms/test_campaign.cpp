@@ -761,3 +761,177 @@ TEST_CASE("campaign: describability's and nhrep's verdicts are tallied from thei
   r.checks[1] = {"nhrep", CheckStatus::Held, "maybe: ..."};
   CHECK_THROWS_AS(summary.add(r), std::logic_error);
 }
+
+namespace {
+
+/// Small 3D scenes: 1-2 primitives, 6 segments per circle, at most 40 cells (larger ones are refused, which is
+/// deterministic, unlike a time limit).
+CampaignSettings small_settings3() {
+  CampaignSettings s;
+  s.dimension = 3;
+  s.seed = 5;
+  s.scene3.solid.min_primitives = 1;
+  s.scene3.solid.max_primitives = 2;
+  s.scene3.solid.segments = 6;
+  s.scene3.max_samples = 4;
+  s.limits.max_cells = 40;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("campaign 3D: scenes reproducible, the same records for any number of threads, every check reported",
+          "[campaign][campaign3]") {
+  CampaignSettings s = small_settings3();
+  s.sample_policy = SamplePolicy::Intended;
+  s.checks = parse_check_list("all");
+  const std::vector<std::uint64_t> indices = range(0, 8);
+  const std::vector<SceneRecord> one = run_all(s, indices, 1);
+  REQUIRE(one.size() == indices.size());
+  CHECK(run_all(s, indices, 2) == one);
+  int checked = 0, with_shape = 0, decided = 0;
+  std::set<std::string> patterns;
+  for (const SceneRecord& r : one) {
+    CHECK(r == run_scene(s, r.index));
+    CHECK_FALSE(r.failed());
+    if (r.outcome != SceneOutcome::Checked) continue;
+    ++checked;
+    with_shape += !r.intended.empty();
+    REQUIRE(r.checks.size() == check_catalogue().size());
+    for (const CheckOutcome& c : r.checks) {
+      CHECK_FALSE(c.witness.empty());  // held, failed, stopped or skipped: never silent
+      decided += c.status == CheckStatus::Held;
+    }
+    for (const std::string& d : r.degeneracies) patterns.insert(d);
+    // The scene is the generator's, with GENERATE-SAMPLES' initial samples of the intended shape.
+    const CampaignScene3 g = random_campaign_scene3(s.scene3, Samples3::Intended, s.seed, r.index, s.limits);
+    CHECK(r.halfspaces == static_cast<int>(g.scene.halfspaces.size()));
+    CHECK(r.cells == static_cast<long>(g.arranged.complex.cells.size()));
+    CHECK(r.samples == static_cast<int>(g.scene.samples.size()));
+    CHECK(r.degeneracies == g.degeneracies);
+  }
+  CHECK(checked >= 5);
+  CHECK(with_shape >= 4);
+  CHECK(decided > 0);
+  CHECK_FALSE(patterns.empty());
+  // Shards partition the range and give the same records.
+  std::vector<SceneRecord> merged;
+  for (std::uint64_t shard = 0; shard < 2; ++shard)
+    for (SceneRecord& r : run_all(s, shard_indices(0, 8, shard, 2), 1)) merged.push_back(std::move(r));
+  std::sort(merged.begin(), merged.end(), [](const SceneRecord& a, const SceneRecord& b) { return a.index < b.index; });
+  CHECK(merged == one);
+}
+
+TEST_CASE("campaign 3D: the uniform policy, the degeneracy patterns, the manifest and the settings' validation",
+          "[campaign][campaign3]") {
+  CampaignSettings s = small_settings3();
+  s.checks = parse_check_list("existence,prop61,uniqueness,manifold");
+  s.scene3.min_degeneracies = 2;
+  s.scene3.max_degeneracies = 2;
+  for (std::uint64_t index = 0; index < 4; ++index) {
+    const SceneRecord r = run_scene(s, index);
+    if (r.outcome != SceneOutcome::Checked) continue;
+    CHECK(r.intended.empty());
+    CHECK(r.samples >= (r.patches > 0 ? 1 : 0));
+    CHECK(r.samples <= 4);
+    CHECK(r.degeneracies.size() == 2);
+    REQUIRE(r.checks.size() == 4);
+    CHECK(r.checks[3].check == "prop61");
+    CHECK(r.checks[3].status == CheckStatus::Skipped);  // no intended shape
+    CHECK(r.checks[3].witness.find("no intended shape") != std::string::npos);
+  }
+  // Each pattern alone.
+  for (int k = 0; k < kDegeneracy3Count; ++k) {
+    Scene3Settings g = s.scene3;
+    g.degeneracy_weight = {{0, 0, 0}};
+    g.degeneracy_weight[static_cast<std::size_t>(k)] = 1;
+    g.min_degeneracies = g.max_degeneracies = 1;
+    int applied = 0;
+    for (std::uint64_t index = 0; index < 8; ++index) {
+      const CampaignScene3 c = random_campaign_scene3(g, Samples3::Uniform, 9, index, {});
+      for (const std::string& d : c.degeneracies) {
+        CHECK(d == to_string(static_cast<Degeneracy3>(k)));
+        ++applied;
+      }
+      CHECK(c.intended.size() == c.arranged.complex.cells.size());
+    }
+    CHECK(applied > 0);
+    CHECK(degeneracy3_from_string(to_string(static_cast<Degeneracy3>(k))) == static_cast<Degeneracy3>(k));
+  }
+  CHECK_FALSE(degeneracy3_from_string("ConcurrentLines"));
+  const nlohmann::json m = campaign_to_json(s, CampaignPlan{});
+  CHECK(m["dimension"] == 3);
+  CHECK(m["generator"]["segments"] == 6);
+  CHECK_FALSE(campaign_to_json(small_settings(), CampaignPlan{}).contains("dimension"));
+  CampaignSettings bad = s;
+  bad.scene3.solid.segments = 4;
+  CHECK_THROWS_AS(validate(bad), InputError);
+  bad = s;
+  bad.dimension = 4;
+  CHECK_THROWS_AS(validate(bad), InputError);
+  bad = s;
+  bad.extra.push_back({"other", [](std::uint64_t, const Scene2&, const Arranged2&) { return CheckOutcome{}; }});
+  CHECK_THROWS_AS(validate(bad), InputError);
+}
+
+TEST_CASE("campaign 3D: a failing scene is kept as a 3D scene file", "[campaign][campaign3]") {
+  CampaignSettings s = small_settings3();
+  s.checks = parse_check_list("existence");
+  TempDir dir;
+  CampaignPlan plan;
+  plan.count = 3;
+  CampaignFolder folder(dir / "c", campaign_to_json(s, plan), false, plan.indices());
+  SceneRecord r = run_scene(s, 0);
+  REQUIRE(r.outcome == SceneOutcome::Checked);
+  // A failure forced on the record: the folder keeps its scene (3D) with the note.
+  r.checks[0].status = CheckStatus::Failed;
+  r.scene3 = random_campaign_scene3(s.scene3, Samples3::Uniform, s.seed, 0, s.limits).scene;
+  folder.append(r);
+  const Scene3 kept = read_scene3_file(dir / "c/failures/scene-0.json");
+  CHECK(kept.halfspaces.size() == r.scene3->halfspaces.size());
+  CHECK(kept.description.find("failed existence") != std::string::npos);
+}
+
+TEST_CASE("campaign: beam widths chosen by the user (beamK, --beam-widths)", "[campaign][beamwidths]") {
+  CHECK(beam_width_of("beam2") == 2);
+  CHECK(beam_width_of("beam16") == 16);
+  CHECK_FALSE(beam_width_of("beam1"));  // check_all's
+  CHECK_FALSE(beam_width_of("beam0"));
+  CHECK_FALSE(beam_width_of("beam02"));
+  CHECK_FALSE(beam_width_of("beam3x"));
+  CHECK_FALSE(beam_width_of("beam99999"));
+  CHECK(parse_check_list("beam16,beam3,beam1,nhrep,beam4") ==
+        std::vector<std::string>{"beam1", "beam3", "beam4", "beam16", "nhrep"});
+  CHECK_THROWS_AS(parse_check_list("beam0"), InputError);
+  CHECK_THROWS_AS(parse_check_list("beam3,beam3"), InputError);
+  std::vector<std::string> with = with_beam_widths({}, "1,16,3");
+  std::vector<std::string> expected = default_checks();
+  expected.push_back("beam3");
+  expected.push_back("beam16");
+  CHECK(with == expected);
+  CHECK(with_beam_widths(parse_check_list("beam2,existence"), "2,4") ==
+        std::vector<std::string>{"existence", "beam2", "beam4"});
+  CHECK_THROWS_AS(with_beam_widths({}, "0"), InputError);
+  CHECK_THROWS_AS(with_beam_widths({}, "2,"), InputError);
+  CHECK_THROWS_AS(with_beam_widths({}, "x"), InputError);
+  // beamK runs beam K against the optimum; beam2 by its name and by a width give the same outcome.
+  CampaignSettings s = small_settings();
+  s.checks = parse_check_list("beam2,beam3,beam16");
+  Summary summary(recorded_checks(s));
+  for (const SceneRecord& r : run_all(s, range(0, 12), 2)) {
+    REQUIRE(r.checks.size() == 3);
+    CHECK(r.checks[1].check == "beam3");
+    CHECK(r.checks[2].check == "beam16");
+    for (const CheckOutcome& c : r.checks)
+      if (c.status == CheckStatus::Held)
+        CHECK((c.witness.rfind("optimal:", 0) == 0 || c.witness.rfind("sub-optimal:", 0) == 0));
+    summary.add(r);
+  }
+  CHECK(summary.beam_optimal.at("beam16").total() > 0);
+  const std::string table = summary_table(summary);
+  const std::size_t b3 = table.find("beam3 optimality"), b16 = table.find("beam16 optimality");
+  CHECK(b3 != std::string::npos);
+  CHECK(b16 != std::string::npos);
+  CHECK(b3 < b16);
+  CHECK(summary_to_json(summary).contains("beam16_optimality"));
+}

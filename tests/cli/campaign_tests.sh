@@ -201,4 +201,39 @@ if grep -q '"status":"skipped","witness":"not run: no intended shape' u1/results
   bad "prop61 under the uniform policy: $(head -c 300 u1/results.jsonl)"; fi
 if [ "$(jq -c '.checks | length' j1/campaign.json)" = 9 ]; then ok; else bad "the default checks are not nine"; fi
 
+# ---- --beam-widths: beam checks of the user's widths ----
+expect 0 "" -- "$hsx" campaign "${gen[@]}" --count 6 --checks existence --beam-widths 1,8,2 --out bw --jobs 2 && cp out bw.txt
+if [ "$(jq -c '[.checks[].check]' bw/results.jsonl | sort -u)" = '["existence","beam1","beam2","beam8"]' ]; then ok; else
+  bad "--beam-widths 1,8,2: checks $(jq -c '[.checks[].check]' bw/results.jsonl | sort -u)"; fi
+if jq -e '.beam8_optimality.optimal + .beam8_optimality.sub_optimal > 0 and (.beam1_optimality | type) == "object"' \
+     bw/summary.json >/dev/null; then ok; else bad "--beam-widths: beam8_optimality in summary.json"; fi
+has bw.txt "beam8 optimality: the K=8 beam" "--beam-widths: the table"
+expect 0 "" -- "$hsx" campaign --list-checks && has out "beamK" "--list-checks names beamK"
+expect 2 "--beam-widths" -- "$hsx" campaign --count 2 --beam-widths 0
+
+# ---- 3D campaigns (--dimension 3: algorithms/campaign/scene3.hpp) ----
+gen3=(--dimension 3 --seed 4 --primitives 1..2 --segments 6 --samples 4 --degeneracies 1..2 --max-cells 40)
+expect 0 "" -- "$hsx" campaign "${gen3[@]}" --count 6 --sample-policy intended --checks all --out d1 --jobs 1 && cp out d1.txt
+expect 0 "" -- "$hsx" campaign "${gen3[@]}" --count 6 --sample-policy intended --checks all --out d2 --jobs 2 && cp out d2.txt
+same d1/results.jsonl d2/results.jsonl "3D, --jobs 1 vs 2 results.jsonl"
+same d1/summary.json d2/summary.json "3D, --jobs 1 vs 2 summary.json"
+same d1.txt d2.txt "3D, --jobs 1 vs 2 table"
+if [ "$(jq .dimension d1/campaign.json)" = 3 ] && [ "$(jq .generator.segments d1/campaign.json)" = 6 ]; then ok; else
+  bad "3D campaign.json: $(head -c 300 d1/campaign.json)"; fi
+if [ "$(jq '.checks | length' d1/results.jsonl | sort -u)" = 15 ]; then ok; else bad "3D: not every line has 15 checks"; fi
+if [ "$(jq -s '[.[] | select(.intended)] | length' d1/results.jsonl)" -ge 3 ]; then ok; else
+  bad "3D: few intended solids recorded"; fi
+if [ "$(jq -s '[.[] | select(.outcome == "checked")] | length' d1/results.jsonl)" -ge 3 ]; then ok; else
+  bad "3D: few scenes checked"; fi
+if [ -f d1/summary.svg ]; then ok; else bad "3D: no summary.svg"; fi
+expect 0 "" -- "$hsx" campaign "${gen3[@]}" --count 6 --sample-policy intended --checks all --shard 1/2 --out d3
+if [ "$(cat d3/results.jsonl)" = "$(sed -n '2p;4p;6p' d1/results.jsonl)" ]; then ok; else bad "3D shard 1/2 differs"; fi
+expect 2 "--kinds: a 2D option" -- "$hsx" campaign --dimension 3 --count 2 --kinds disk
+expect 2 "--primitives: a 3D option" -- "$hsx" campaign --count 2 --primitives 2
+expect 2 "--against: a 2D option" -- "$hsx" campaign --dimension 3 --count 2 --against 'true {input} {output}'
+expect 2 "--degeneracy-weights" -- "$hsx" campaign --dimension 3 --count 2 --degeneracy-weights ConcurrentLines=1
+expect 2 "segments" -- "$hsx" campaign --dimension 3 --count 2 --segments 4
+expect 2 "--dimension: 2 or 3" -- "$hsx" campaign --dimension 4 --count 2
+expect 2 "other settings" -- "$hsx" campaign "${gen3[@]/--segments/--max-draws}" --count 6 --sample-policy intended --checks all --out d1 --resume
+
 finish

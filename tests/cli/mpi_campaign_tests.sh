@@ -4,6 +4,7 @@
 #   single-process run, on a campaign with a real failure (scene 80 of seed 1 at 8 halfspaces fails Prop. 5.1);
 # - a campaign cut short (its results.jsonl truncated, the last line torn) and resumed under mpirun equals the
 #   uninterrupted one;
+# - a 3D campaign (--dimension 3) gives the same folder and table under mpirun;
 # - a folder rank 0 refuses stops every rank with exit 2 and leaves the folder as it was.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
@@ -18,16 +19,29 @@ same() {  # same A B WHAT
   if diff -r "$1" "$2" >"$TMP/diff.txt" 2>&1; then pass; else fail "$3 differ: $(head -c 600 "$TMP/diff.txt")"; fi
 }
 
+# both SUFFIX STATUS ARGS...: the campaign ARGS into $TMP/one<SUFFIX> (one process) and $TMP/two<SUFFIX> (mpirun),
+# both exiting STATUS, with the same folders and printed tables.
+both() {
+  local suffix="$1" want="$2"; shift 2
+  "$HSX" "$@" --out "$TMP/one$suffix" >"$TMP/one$suffix.txt" 2>"$TMP/one$suffix.err"
+  local one=$?
+  "${MPI[@]}" "$HSX" "$@" --out "$TMP/two$suffix" >"$TMP/two$suffix.txt" 2>"$TMP/two$suffix.err"
+  local two=$?
+  [[ $one == "$want" && $two == "$want" ]] && pass ||
+    fail "exit statuses $one (one process) and $two (mpirun), expected $want: $(cat "$TMP/two$suffix.err")"
+  same "$TMP/one$suffix" "$TMP/two$suffix" "the campaign folders$suffix"
+  same "$TMP/one$suffix.txt" "$TMP/two$suffix.txt" "the printed tables$suffix"
+}
+
 ARGS=(campaign --seed 1 --start 70 --count 16 --halfspaces 8 --checks existence,prop51,beam1,uniqueness)
-"$HSX" "${ARGS[@]}" --out "$TMP/one" >"$TMP/one.txt" 2>"$TMP/one.err"
-one=$?
-"${MPI[@]}" "$HSX" "${ARGS[@]}" --out "$TMP/two" >"$TMP/two.txt" 2>"$TMP/two.err"
-two=$?
-[[ $one == 3 && $two == 3 ]] && pass || fail "exit statuses $one (one process) and $two (mpirun), expected 3 and 3: $(cat "$TMP/two.err")"
-same "$TMP/one" "$TMP/two" "the campaign folders"
-same "$TMP/one.txt" "$TMP/two.txt" "the printed tables"
+both "" 3 "${ARGS[@]}"
 [[ -f "$TMP/two/failures/scene-80.json" ]] && pass || fail "mpirun: scene 80 not kept in failures/ ($(ls "$TMP/two/failures" 2>&1))"
 grep -q "2 MPI processes" "$TMP/two.err" && pass || fail "mpirun: the timing line does not count the processes: $(cat "$TMP/two.err")"
+
+# A 3D campaign (--dimension 3): the same bytes under mpirun.
+ARGS3=(campaign --dimension 3 --seed 4 --count 6 --primitives 1..2 --segments 6 --degeneracies 1..2 --max-cells 40
+       --sample-policy intended --checks existence,uniqueness,manifold,prop61,beam2)
+both 3 0 "${ARGS3[@]}"
 
 # Cut short, then resumed under mpirun.
 cp -r "$TMP/one" "$TMP/cut"

@@ -18,6 +18,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 
 namespace hsx::campaign {
 namespace {
@@ -31,7 +32,7 @@ class CatalogueMismatch : public std::logic_error {
 };
 
 /// The campaign's own checks (scene_checks.hpp), run by check_own.
-enum class Own { None, Prop61, PropB1, Beam2, Beam4, Describability, NhRep };
+enum class Own { None, Prop61, PropB1, Beam, Describability, NhRep };
 
 /// A catalogue entry: a check_all result (`own` None), recognised by its name starting with `prefix` and, when
 /// `suffix` is not empty, ending with it; or one of the campaign's own checks.
@@ -68,9 +69,9 @@ const std::vector<Entry>& entries() {
       {{"propB1", "Prop. B.1: GENERATE-SAMPLES with beam K=1 reproduces the intended shape by its greedy rounds alone"},
        "", "", bsh::Check::Existence, Own::PropB1},
       {{"beam2", "Beam K=2: admissible, energy >= optimum (its witness says optimal or sub-optimal)"},
-       "", "", bsh::Check::Existence, Own::Beam2},
+       "", "", bsh::Check::Existence, Own::Beam},
       {{"beam4", "Beam K=4: admissible, energy >= optimum (its witness says optimal or sub-optimal)"},
-       "", "", bsh::Check::Existence, Own::Beam4},
+       "", "", bsh::Check::Existence, Own::Beam},
       {{"describability", "Shapiro-Vossler describability = BHC builds a verified tree (intended shape, else optimum)"},
        "", "", bsh::Check::Existence, Own::Describability},
       {{"nhrep", "NH-Rep Thm. 4.3 tree checks and natural-halfspace evaluation (intended shape, else optimum)"},
@@ -79,7 +80,33 @@ const std::vector<Entry>& entries() {
   return e;
 }
 
-bool is_beam_check(const std::string& name) { return name == "beam1" || name == "beam2" || name == "beam4"; }
+bool is_beam_check(const std::string& name) { return name == "beam1" || beam_width_of(name).has_value(); }
+
+/// A check's place in catalogue order: its entry's index; every beamK (K >= 2) at beam2's entry, ordered by K.
+std::pair<std::size_t, int> catalogue_rank(const std::string& name) {
+  const auto it = std::find_if(entries().begin(), entries().end(), [&](const Entry& e) { return name == e.info.name; });
+  const std::optional<int> width = beam_width_of(name);
+  if (width) {
+    const auto beam2 = std::find_if(entries().begin(), entries().end(),
+                                    [](const Entry& e) { return std::string(e.info.name) == "beam2"; });
+    return {static_cast<std::size_t>(beam2 - entries().begin()), *width};
+  }
+  if (it == entries().end()) throw std::logic_error("campaign: catalogue_rank of an unknown check");
+  return {static_cast<std::size_t>(it - entries().begin()), 0};
+}
+
+bool is_known_check(const std::string& name) {
+  return beam_width_of(name).has_value() ||
+         std::any_of(entries().begin(), entries().end(), [&](const Entry& e) { return name == e.info.name; });
+}
+
+/// `names` in catalogue order (catalogue_rank), each once.
+std::vector<std::string> in_catalogue_order(std::vector<std::string> names) {
+  std::sort(names.begin(), names.end(),
+            [](const std::string& a, const std::string& b) { return catalogue_rank(a) < catalogue_rank(b); });
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
 
 /// The verdicts a held describability or nhrep witness starts with (scene_checks.hpp); empty for other checks.
 const std::vector<std::string>& verdicts_of(const std::string& check) {
@@ -104,10 +131,6 @@ CheckStatus from_bsh(bsh::CheckResult::Status s) {
 }
 
 std::vector<std::string> selected(const CampaignSettings& s) { return s.checks.empty() ? default_checks() : s.checks; }
-
-bool is_selected(const std::vector<std::string>& checks, const std::string& name) {
-  return std::find(checks.begin(), checks.end(), name) != checks.end();
-}
 
 /// Every recorded check with one status and witness (a refused or failing scene).
 void all_checks(SceneRecord& r, const std::vector<std::string>& checks, CheckStatus status, const std::string& why) {
@@ -158,33 +181,52 @@ const std::vector<std::string>& default_checks() {
   return d;
 }
 
+std::optional<int> beam_width_of(const std::string& name) {
+  if (name.size() < 5 || name.size() > 8 || name.compare(0, 4, "beam") != 0 || name[4] == '0' ||
+      name.find_first_not_of("0123456789", 4) != std::string::npos)
+    return std::nullopt;
+  const int k = std::stoi(name.substr(4));
+  if (k < 2 || k > kMaxBeamWidth) return std::nullopt;
+  return k;
+}
+
 std::vector<std::string> parse_check_list(const std::string& list) {
-  std::vector<bool> wanted(entries().size(), false);
-  if (list.empty() || list == "default") {
-    for (std::size_t k = 0; k < entries().size(); ++k) wanted[k] = entries()[k].own == Own::None;
-  } else if (list == "all") {
-    wanted.assign(entries().size(), true);
-  } else {
-    std::stringstream in(list);
-    std::string name;
-    while (std::getline(in, name, ',')) {
-      const auto it = std::find_if(entries().begin(), entries().end(),
-                                   [&](const Entry& e) { return name == e.info.name; });
-      if (it == entries().end()) {
-        std::string known;
-        for (const Entry& e : entries()) known += std::string(known.empty() ? "" : ", ") + e.info.name;
-        throw InputError("--checks: unknown check \"" + name + "\" (the checks: " + known + "; or default, or all)");
-      }
-      const std::size_t k = static_cast<std::size_t>(it - entries().begin());
-      if (wanted[k]) throw InputError("--checks: \"" + name + "\" is named twice");
-      wanted[k] = true;
-    }
-    if (!list.empty() && list.back() == ',') throw InputError("--checks: an empty name after the last comma");
-  }
   std::vector<std::string> out;
-  for (std::size_t k = 0; k < entries().size(); ++k)
-    if (wanted[k]) out.push_back(entries()[k].info.name);
-  return out;
+  if (list.empty() || list == "default") return default_checks();
+  if (list == "all") {
+    for (const Entry& e : entries()) out.push_back(e.info.name);
+    return out;
+  }
+  std::stringstream in(list);
+  std::string name;
+  while (std::getline(in, name, ',')) {
+    if (!is_known_check(name)) {
+      std::string known;
+      for (const Entry& e : entries()) known += std::string(known.empty() ? "" : ", ") + e.info.name;
+      throw InputError("--checks: unknown check \"" + name + "\" (the checks: " + known + ", beamK for any K in 2.." +
+                       std::to_string(kMaxBeamWidth) + "; or default, or all)");
+    }
+    if (std::find(out.begin(), out.end(), name) != out.end())
+      throw InputError("--checks: \"" + name + "\" is named twice");
+    out.push_back(name);
+  }
+  if (!list.empty() && list.back() == ',') throw InputError("--checks: an empty name after the last comma");
+  return in_catalogue_order(out);
+}
+
+std::vector<std::string> with_beam_widths(std::vector<std::string> checks, const std::string& widths) {
+  if (checks.empty()) checks = default_checks();
+  std::stringstream in(widths);
+  std::string item;
+  while (std::getline(in, item, ',')) {
+    const std::string name = "beam" + item;
+    if (name != "beam1" && !beam_width_of(name))
+      throw InputError("--beam-widths: \"" + item + "\" is not a beam width (a whole number 1.." +
+                       std::to_string(kMaxBeamWidth) + ", no leading zero)");
+    checks.push_back(name);
+  }
+  if (widths.empty() || widths.back() == ',') throw InputError("--beam-widths: an empty width");
+  return in_catalogue_order(checks);
 }
 
 const char* to_string(CheckStatus s) {
@@ -251,12 +293,11 @@ std::vector<std::string> recorded_checks(const CampaignSettings& s) {
 
 void validate(const CampaignSettings& s) {
   for (const std::string& c : s.checks)
-    if (!std::any_of(entries().begin(), entries().end(), [&](const Entry& e) { return c == e.info.name; }))
-      throw InputError("checks: unknown check \"" + c + "\"");
+    if (!is_known_check(c)) throw InputError("checks: unknown check \"" + c + "\"");
   for (std::size_t k = 0; k < s.extra.size(); ++k) {
     const ExtraCheck& e = s.extra[k];
     if (e.name.empty()) throw InputError("extra checks: an empty name");
-    if (std::any_of(entries().begin(), entries().end(), [&](const Entry& c) { return e.name == c.info.name; }))
+    if (is_known_check(e.name))
       throw InputError("extra checks: \"" + e.name + "\" is a catalogue check's name");
     for (std::size_t j = 0; j < k; ++j)
       if (s.extra[j].name == e.name) throw InputError("extra checks: \"" + e.name + "\" is named twice");
@@ -268,6 +309,16 @@ void validate(const CampaignSettings& s) {
   if (s.precision_bits < 64) throw InputError("--precision: at least 64 bits");
   if (!(s.time_limit >= 0) || !std::isfinite(s.time_limit)) throw InputError("--time-limit: a finite number >= 0");
   if (s.limits.max_cells < 0 || s.limits.max_side_entries < 0) throw InputError("arrangement limits: must be >= 0");
+  if (s.dimension != 2 && s.dimension != 3) throw InputError("--dimension: 2 or 3");
+  if (s.dimension == 3) {
+    if (!s.extra.empty()) throw InputError("--against: 2D campaigns only (the graded programs read 2D inputs)");
+    try {
+      validate(s.scene3);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("3D generator settings: ") + e.what());
+    }
+    return;
+  }
   try {
     // The generator's own validation of its settings, without the arrangement that choosing samples builds.
     RandomSceneSettings g = s.scene;
@@ -362,8 +413,9 @@ class Deadline {
 /// needs it.
 struct SceneChecks {
   const CampaignSettings& settings;
-  const Scene2& scene;
-  const Arranged2& arranged;
+  const Complex& complex;             ///< the scene's (2D or 3D)
+  /// check_nhrep on the scene (2D: check_nhrep, 3D: check_nhrep3), for (name, solid, what).
+  std::function<CheckOutcome(const std::string&, const std::vector<char>&, const std::string&)> nhrep;
   const std::vector<char>& intended;  ///< empty: none
   const Deadline& deadline;
   std::optional<bsh::ExtractResult> optimum;
@@ -379,7 +431,7 @@ struct SceneChecks {
     return l;
   }
   const bsh::ExtractResult& the_optimum() {
-    if (!optimum) optimum = reference_optimum(arranged.complex, limits());
+    if (!optimum) optimum = reference_optimum(complex, limits());
     return *optimum;
   }
 };
@@ -395,7 +447,7 @@ std::vector<CheckOutcome> run_check_all(SceneChecks& c, const std::vector<const 
   options.cancel = c.deadline.cancel();
   options.time_limit = c.deadline.left();
   for (const Entry* e : wanted) options.only.push_back(e->id);
-  const std::vector<bsh::CheckResult> results = bsh::check_all(c.arranged.complex, options);
+  const std::vector<bsh::CheckResult> results = bsh::check_all(c.complex, options);
   if (results.size() != wanted.size())
     throw CatalogueMismatch("campaign: check_all gave " + std::to_string(results.size()) + " results, expected " +
                             std::to_string(wanted.size()) + " (update the catalogue in campaign.cpp)");
@@ -426,32 +478,30 @@ std::optional<std::vector<char>> shape_for(SceneChecks& c, std::string& what, st
   return o.labelling;
 }
 
-/// One of the campaign's own checks on the scene.
-CheckOutcome run_own(SceneChecks& c, const Entry& e) {
-  const std::string name = e.info.name;
+/// One of the campaign's own checks on the scene: `name` (an entry's, or beamK), `own` its kind.
+CheckOutcome run_own(SceneChecks& c, const std::string& name, Own own) {
   if (c.deadline.stop())
     return {name, CheckStatus::Skipped, "the time limit was spent (or the run was cancelled) before this check"};
   CheckOutcome out;
-  switch (e.own) {
+  switch (own) {
     case Own::Prop61:
     case Own::PropB1:
       if (c.intended.empty())
         return {name, CheckStatus::Skipped,
                 "not run: no intended shape (the samples are uniform; --sample-policy intended gives one)"};
-      out = check_generate_samples(name, c.arranged.complex, c.intended,
-                                   e.own == Own::Prop61 ? bsh::Method::BestFirst : bsh::Method::Beam, c.limits());
+      out = check_generate_samples(name, c.complex, c.intended,
+                                   own == Own::Prop61 ? bsh::Method::BestFirst : bsh::Method::Beam, c.limits());
       break;
-    case Own::Beam2:
-    case Own::Beam4:
-      out = check_beam_optimality(name, c.arranged.complex, e.own == Own::Beam2 ? 2 : 4, c.the_optimum(), c.limits());
+    case Own::Beam:
+      out = check_beam_optimality(name, c.complex, *beam_width_of(name), c.the_optimum(), c.limits());
       break;
     case Own::Describability:
     case Own::NhRep: {
       std::string what, why;
       const std::optional<std::vector<char>> solid = shape_for(c, what, why);
       if (!solid) return {name, CheckStatus::Stopped, why};
-      out = e.own == Own::Describability ? check_describability(name, c.arranged.complex, *solid, what)
-                                         : check_nhrep(name, c.scene, c.arranged, *solid, what);
+      out = own == Own::Describability ? check_describability(name, c.complex, *solid, what)
+                                         : c.nhrep(name, *solid, what);
       break;
     }
     case Own::None: throw std::logic_error("campaign: run_own on a check_all check");
@@ -462,29 +512,67 @@ CheckOutcome run_own(SceneChecks& c, const Entry& e) {
 
 }  // namespace
 
-std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene2& scene, const Arranged2& arranged,
-                                         const std::vector<char>& intended, double time_limit,
-                                         const std::function<bool()>& cancel) {
-  if (!intended.empty() && intended.size() != arranged.complex.cells.size())
+namespace {
+
+/// check_arranged's body for either dimension: `complex` the scene's, `nhrep` its NH-Rep check.
+std::vector<CheckOutcome> check_complex(
+    const CampaignSettings& s, const Complex& complex,
+    std::function<CheckOutcome(const std::string&, const std::vector<char>&, const std::string&)> nhrep,
+    const std::vector<char>& intended, double time_limit, const std::function<bool()>& cancel) {
+  if (!intended.empty() && intended.size() != complex.cells.size())
     throw std::invalid_argument("check_arranged: the intended solid needs one flag per cell");
   const std::vector<std::string> checks = selected(s);
   const Deadline deadline(time_limit, cancel);
-  SceneChecks c{s, scene, arranged, intended, deadline, std::nullopt};
-  std::vector<const Entry*> of_check_all, own;
-  for (const Entry& e : entries())
-    if (is_selected(checks, e.info.name)) (e.own == Own::None ? of_check_all : own).push_back(&e);
+  SceneChecks c{s, complex, std::move(nhrep), intended, deadline, std::nullopt};
+  std::vector<const Entry*> of_check_all;
+  std::vector<std::pair<std::string, Own>> own;
+  for (const std::string& name : in_catalogue_order(checks)) {
+    const auto e = std::find_if(entries().begin(), entries().end(), [&](const Entry& x) { return name == x.info.name; });
+    if (e == entries().end()) own.emplace_back(name, Own::Beam);  // beamK beyond the catalogue's
+    else if (e->own == Own::None) of_check_all.push_back(&*e);
+    else own.emplace_back(name, e->own);
+  }
   std::vector<CheckOutcome> out = run_check_all(c, of_check_all);
-  for (const Entry* e : own) out.push_back(run_own(c, *e));
+  for (const auto& [name, kind] : own) out.push_back(run_own(c, name, kind));
   return out;
+}
+
+}  // namespace
+
+std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene2& scene, const Arranged2& arranged,
+                                         const std::vector<char>& intended, double time_limit,
+                                         const std::function<bool()>& cancel) {
+  return check_complex(
+      s, arranged.complex,
+      [&](const std::string& name, const std::vector<char>& solid, const std::string& what) {
+        return check_nhrep(name, scene, arranged, solid, what);
+      },
+      intended, time_limit, cancel);
+}
+
+std::vector<CheckOutcome> check_arranged(const CampaignSettings& s, const Scene3& scene, const Arranged3& arranged,
+                                         const std::vector<char>& intended, double time_limit,
+                                         const std::function<bool()>& cancel) {
+  return check_complex(
+      s, arranged.complex,
+      [&](const std::string& name, const std::vector<char>& solid, const std::string& what) {
+        return check_nhrep3(name, scene, arranged, solid, what);
+      },
+      intended, time_limit, cancel);
 }
 
 namespace {
 
 /// check_scene with the scene's time limit counted from `start` (run_scene's: before generating the scene), and,
 /// when the generator already arranged it (SamplePolicy::Intended), its arrangement and intended solid.
-SceneRecord check_scene_since(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
+void keep_scene(SceneRecord& r, const Scene2& scene) { r.scene = scene; }
+void keep_scene(SceneRecord& r, const Scene3& scene) { r.scene3 = scene; }
+
+/// Scene2 with Arranged2, Scene3 with Arranged3 (a 3D scene comes arranged from its generator).
+template <class Scene, class Arranged>
+SceneRecord check_scene_since(const CampaignSettings& s, const Scene& scene, std::uint64_t index,
                               const std::function<bool()>& cancel, Clock::time_point start,
-                              std::optional<Arranged2> arranged = std::nullopt,
+                              std::optional<Arranged> arranged = std::nullopt,
                               const std::vector<char>& intended = {}) {
   const std::vector<std::string> checks = recorded_checks(s);
   const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
@@ -522,13 +610,14 @@ SceneRecord check_scene_since(const CampaignSettings& s, const Scene2& scene, st
   }
   r.timed_out = s.time_limit > 0 && elapsed() >= s.time_limit;
   // The extra checks, outside the time limit and outside the try: what they throw is not the scene's outcome.
-  if (arranged)
-    for (const ExtraCheck& e : s.extra) {
+  if constexpr (std::is_same_v<Scene, Scene2>)
+    if (arranged)
+      for (const ExtraCheck& e : s.extra) {
       CheckOutcome outcome = e.run(index, scene, *arranged);
       outcome.check = e.name;
       r.checks.push_back(std::move(outcome));
     }
-  if (r.failed()) r.scene = scene;
+  if (r.failed()) keep_scene(r, scene);
   return r;
 }
 
@@ -548,10 +637,40 @@ SceneRecord not_generated(const CampaignSettings& s, std::uint64_t index, SceneO
 
 SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, std::uint64_t index,
                         const std::function<bool()>& cancel) {
-  return check_scene_since(s, scene, index, cancel, Clock::now());
+  return check_scene_since<Scene2, Arranged2>(s, scene, index, cancel, Clock::now());
+}
+
+namespace {
+
+/// run_scene for CampaignSettings::dimension 3.
+SceneRecord run_scene3(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+  const Clock::time_point start = Clock::now();
+  const bool intended = s.sample_policy == SamplePolicy::Intended;
+  CampaignScene3 g;
+  try {
+    g = random_campaign_scene3(s.scene3, intended ? Samples3::Intended : Samples3::Uniform, s.seed, index, s.limits);
+  } catch (const InputError& e) {
+    return not_generated(s, index, SceneOutcome::Refused, std::string("generating it: ") + e.what());
+  } catch (const std::exception& e) {
+    return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what());
+  }
+  const std::vector<char> none;
+  SceneRecord r = check_scene_since<Scene3, Arranged3>(s, g.scene, index, cancel, start, std::move(g.arranged),
+                                                       intended ? g.intended : none);
+  r.degeneracies = g.degeneracies;
+  return r;
+}
+
+}  // namespace
+
+Scene2 generate_scene(const CampaignSettings& s, std::uint64_t index) {
+  if (s.dimension != 2) throw std::invalid_argument("generate_scene: a 2D campaign's scenes only");
+  return s.sample_policy == SamplePolicy::Intended ? generate_intended(s, index).generated.scene
+                                                   : random_scene(s.scene, s.seed, index).scene;
 }
 
 SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
+  if (s.dimension == 3) return run_scene3(s, index, cancel);
   const Clock::time_point start = Clock::now();
   Generated g;
   try {
@@ -566,7 +685,8 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
   } catch (const std::exception& e) {
     return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what());
   }
-  SceneRecord r = check_scene_since(s, g.generated.scene, index, cancel, start, std::move(g.arranged), g.intended);
+  SceneRecord r = check_scene_since<Scene2, Arranged2>(s, g.generated.scene, index, cancel, start,
+                                                       std::move(g.arranged), g.intended);
   for (Degeneracy d : g.generated.degeneracies) r.degeneracies.push_back(to_string(d));
   return r;
 }

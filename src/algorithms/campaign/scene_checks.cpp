@@ -212,4 +212,23 @@ CheckOutcome check_nhrep(const std::string& name, const Scene2& scene, const Arr
   return nhrep_outcome(name, nhrep::survey_solid(s), what);
 }
 
+CheckOutcome check_nhrep3(const std::string& name, const Scene3& scene, const Arranged3& arranged,
+                          const std::vector<char>& solid, const std::string& what) {
+  if (solid.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("check_nhrep3: the solid needs one flag per cell");
+  nhrep::SurveyOutcome not_run;
+  not_run.status = csg::solid_status(arranged.complex, solid);
+  if (not_run.status != csg::SolidStatus::Bounded) return nhrep_outcome(name, not_run, what);
+  if (scene.domain_given)
+    return {name, CheckStatus::Skipped,
+            "not run: the scene's domain was given (the 3D survey needs a domain chosen by hsx, holding every vertex)"};
+  nhrep::SurveySolid3 s;
+  s.name = what;
+  s.origin = "campaign";
+  s.scene = scene;
+  s.arranged = arranged;
+  s.solid = solid;
+  return nhrep_outcome(name, nhrep::survey_solid3(s), what);
+}
+
 }  // namespace hsx::campaign

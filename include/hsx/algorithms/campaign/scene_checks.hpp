@@ -24,6 +24,7 @@
 #include <hsx/algorithms/csg/bhc.hpp>
 #include <hsx/algorithms/nhrep/survey.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/complex/from_arrangement3.hpp>
 
 #include <functional>
 #include <string>
@@ -86,5 +87,12 @@ CheckOutcome nhrep_outcome(const std::string& name, const nhrep::SurveyOutcome& 
 /// convention) and on the scene's own domain; judged by nhrep_outcome.
 CheckOutcome check_nhrep(const std::string& name, const Scene2& scene, const Arranged2& arranged,
                          const std::vector<char>& solid, const std::string& what);
+
+/// The same in 3D: nhrep::survey_solid3 (hsx nhsurvey --dimension 3's pipeline) on `solid` (one flag per cell of
+/// `arranged.complex`, the arrangement of `scene`), on the scene's own arrangement, which holds every vertex when
+/// hsx chose the domain (no whole-space carry, no own-domain run: survey_solid3 has none). Skipped when the
+/// scene's domain was given (then some sign vectors of space may have no cell); judged by nhrep_outcome.
+CheckOutcome check_nhrep3(const std::string& name, const Scene3& scene, const Arranged3& arranged,
+                          const std::vector<char>& solid, const std::string& what);
 
 }  // namespace hsx::campaign

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace hsx {
@@ -897,6 +898,26 @@ void DoubleCombination::add(long k, const DoubleBounds& m) {
                          : k == -1 ? IntervalNT(sum_.lo, sum_.hi) - term
                                    : IntervalNT(sum_.lo, sum_.hi) + to_interval_nt(k) * term;
   sum_ = {sum.inf(), sum.sup()};
+}
+
+IntervalBatch::IntervalBatch() {
+  static_assert(std::is_unsigned<CGAL::FPU_CW_t>::value && sizeof(CGAL::FPU_CW_t) <= sizeof(unsigned long),
+                "IntervalBatch keeps CGAL::FPU_CW_t in an unsigned long");
+  saved_mode_ = CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD);
+}
+IntervalBatch::~IntervalBatch() { CGAL::FPU_set_cw(static_cast<CGAL::FPU_CW_t>(saved_mode_)); }
+
+// CGAL::Interval_nt<false> assumes upward rounding (set by the batch) and keeps the compiler from folding the
+// negated sums that give the lower ends.
+DoubleBounds IntervalBatch::add(const DoubleBounds& a, const DoubleBounds& b) const {
+  using Fast = CGAL::Interval_nt<false>;
+  const Fast sum = Fast(a.lo, a.hi) + Fast(b.lo, b.hi);
+  return {sum.inf(), sum.sup()};
+}
+DoubleBounds IntervalBatch::subtract(const DoubleBounds& a, const DoubleBounds& b) const {
+  using Fast = CGAL::Interval_nt<false>;
+  const Fast difference = Fast(a.lo, a.hi) - Fast(b.lo, b.hi);
+  return {difference.inf(), difference.sup()};
 }
 
 int Measure::algebraic_sign(mpfr_prec_t start_bits) const {

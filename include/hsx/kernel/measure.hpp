@@ -78,6 +78,26 @@ class DoubleCombination {
   DoubleBounds sum_;
 };
 
+/// Certified sums and differences of DoubleBounds for a batch of operations with one FPU rounding-mode switch
+/// (DoubleCombination switches per operation): the constructor sets the FPU to round upward, the destructor
+/// restores the caller's mode (CGAL's FPU control inside measure.cpp). `add` and `subtract` round outward only
+/// while their batch is alive; every other double operation in that scope rounds upward too, so the scope should
+/// hold interval arithmetic only (or double arithmetic whose rounding does not matter). Not copyable; nests.
+class IntervalBatch {
+ public:
+  IntervalBatch();
+  ~IntervalBatch();
+  IntervalBatch(const IntervalBatch&) = delete;
+  IntervalBatch& operator=(const IntervalBatch&) = delete;
+  /// a + b, outward rounded (a and b are enclosures: lo <= hi, not NaN).
+  DoubleBounds add(const DoubleBounds& a, const DoubleBounds& b) const;
+  /// a - b, outward rounded (a and b are enclosures: lo <= hi, not NaN).
+  DoubleBounds subtract(const DoubleBounds& a, const DoubleBounds& b) const;
+
+ private:
+  unsigned long saved_mode_;  // CGAL::FPU_CW_t, an unsigned integer on every platform CGAL supports
+};
+
 class Measure {
  public:
   Measure() = default;  ///< zero

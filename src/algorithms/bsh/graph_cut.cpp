@@ -1,6 +1,7 @@
 #include <hsx/algorithms/bsh/graph_cut.hpp>
 
 #include "algorithms/flow_graph.hpp"
+#include "geometry/components.hpp"
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
@@ -10,6 +11,8 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <tuple>
+#include <utility>
 
 namespace hsx::bsh {
 namespace {
@@ -161,66 +164,133 @@ namespace {
 using Traits = FlowTraits;
 using FlowGraph = hsx::FlowGraph<Capacity>;
 
-/// The unary and binary terms of Eqs. 2-4 as plain data.
-struct Terms {
-  std::vector<long> source_samples, sink_samples;  // h_c(0), h_c(1) finite parts
-  std::vector<char> source_infinite, sink_infinite; // forced labels: forced 1 (or outer) can't be cut from s
-  std::map<std::pair<int, int>, Capacity> binary;  // (a, b) -> h_ab(1, 0)
+// ---- the network of Fig. 8 as plain data ----
+
+/// One arc of the network: s -> c (samples or infinite), c -> t (samples or infinite) or a -> b (the sum of the
+/// measures of the supports between a and b with a inside, or infinite). Its reverse arc has capacity 0.
+struct Arc {
+  int from = 0, to = 0;
+  bool infinite = false;
+  long samples = 0;
+  int atoms_begin = 0, atoms_end = 0;  ///< its supports in Network::atoms, ascending (each counted once)
+  DoubleBounds measure;                ///< certified enclosure of the sum of their measures
 };
 
-Terms build_terms(const Problem& problem, const CutConstraints& constraints) {
+/// The network: vertices 0..cells-1 (the cells), s = cells, t = cells + 1; arcs in a fixed order (for each cell
+/// s -> c then c -> t, then the binary arcs by (a, b)).
+struct Network {
+  int cells = 0, s = 0, t = 1;
+  std::vector<Arc> arcs;
+  std::vector<int> atoms;
+};
+
+Network build_network(const Problem& problem, const CutConstraints& constraints) {
   const Complex& c = problem.complex();
-  Terms t;
   const int n = problem.cell_count();
-  t.source_samples.assign(n, 0);
-  t.sink_samples.assign(n, 0);
-  t.sink_infinite.assign(n, 0);
-  t.source_infinite.assign(n, 0);
-  for (int k = 0; k < n; ++k) {
-    t.sink_infinite[k] = c.cells[k].outer;
-  }
+  Network net;
+  net.cells = n;
+  net.s = n;
+  net.t = n + 1;
+  std::vector<long> source_samples(n, 0), sink_samples(n, 0);  // h_c(0), h_c(1) finite parts
+  std::vector<char> source_infinite(n, 0), sink_infinite(n, 0);  // forced 1 can't be cut from s, outer from t
+  for (int k = 0; k < n; ++k) sink_infinite[k] = c.cells[k].outer;
   for (int k = 0; k < n; ++k) {
     if (constraints.forced.empty() || constraints.forced[k] < 0) continue;
     // Forced 1: cutting s -> k is impossible; forced 0: cutting k -> t is impossible.
-    if (constraints.forced[k] == 1) t.source_infinite[k] = 1; else t.sink_infinite[k] = 1;
+    if (constraints.forced[k] == 1) source_infinite[k] = 1; else sink_infinite[k] = 1;
   }
   for (const Patch& p : c.patches) {
-    t.source_samples[p.inside_cell] += static_cast<long>(p.samples.size());
-    t.sink_samples[p.outside_cell] += static_cast<long>(p.samples.size());
+    source_samples[p.inside_cell] += static_cast<long>(p.samples.size());
+    sink_samples[p.outside_cell] += static_cast<long>(p.samples.size());
   }
+  const auto add_unary = [&net](int from, int to, bool infinite, long samples) {
+    if (!infinite && samples == 0) return;
+    Arc a;
+    a.from = from;
+    a.to = to;
+    a.infinite = infinite;
+    a.samples = infinite ? 0 : samples;
+    net.arcs.push_back(a);
+  };
+  for (int k = 0; k < n; ++k) {
+    add_unary(net.s, k, source_infinite[k], source_samples[k]);
+    add_unary(k, net.t, sink_infinite[k], sink_samples[k]);
+  }
+  // Binary arcs: every support g between a and b adds |g| to a -> b and to b -> a, or makes the arc infinite when
+  // it does not allow that orientation or is removed.
+  struct Entry {
+    int from, to, support;
+    bool allowed;
+  };
+  std::vector<Entry> entries;
+  entries.reserve(2 * static_cast<std::size_t>(problem.support_count()));
   for (int g = 0; g < problem.support_count(); ++g) {
-    const SupportTerm& s = problem.supports()[g];
-    Capacity& ab = t.binary[{s.cell_a, s.cell_b}];
-    Capacity& ba = t.binary[{s.cell_b, s.cell_a}];
+    const SupportTerm& st = problem.supports()[g];
     const bool removed = !constraints.removed.empty() && constraints.removed[g];
-    ab = !removed && s.allow_a_inside ? ab + Capacity::of_support(problem, g) : Capacity::inf();
-    ba = !removed && s.allow_b_inside ? ba + Capacity::of_support(problem, g) : Capacity::inf();
+    entries.push_back({st.cell_a, st.cell_b, g, !removed && st.allow_a_inside});
+    entries.push_back({st.cell_b, st.cell_a, g, !removed && st.allow_b_inside});
   }
-  return t;
+  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+    return std::tie(x.from, x.to, x.support) < std::tie(y.from, y.to, y.support);
+  });
+  net.atoms.reserve(entries.size());
+  const IntervalBatch batch;
+  for (std::size_t i = 0; i < entries.size();) {
+    std::size_t j = i;
+    Arc a;
+    a.from = entries[i].from;
+    a.to = entries[i].to;
+    a.atoms_begin = static_cast<int>(net.atoms.size());
+    for (; j < entries.size() && entries[j].from == a.from && entries[j].to == a.to; ++j) {
+      if (!entries[j].allowed) a.infinite = true;
+      net.atoms.push_back(entries[j].support);
+    }
+    if (a.infinite) net.atoms.resize(a.atoms_begin);
+    a.atoms_end = static_cast<int>(net.atoms.size());
+    for (int k = a.atoms_begin; k < a.atoms_end; ++k) {
+      const auto& [lo, hi] = problem.support_enclosures()[net.atoms[k]];
+      a.measure = batch.add(a.measure, DoubleBounds{lo, hi});
+    }
+    net.arcs.push_back(a);
+    i = j;
+  }
+  return net;
 }
 
+/// The exact capacity of an arc.
+Capacity capacity_of(const Problem& problem, const Network& net, const Arc& a) {
+  if (a.infinite) return Capacity::inf();
+  Capacity c = Capacity::of_samples(a.samples);
+  for (int k = a.atoms_begin; k < a.atoms_end; ++k) c.atoms.emplace_back(net.atoms[k], 1);
+  if (!c.atoms.empty()) c.problem = &problem;
+  return c;
+}
 
-/// One arc of the flow network (its reverse edge, of capacity 0, is reverse[e]).
-struct Arc {
-  Traits::edge_descriptor e;
-  int from, to;
-};
+/// A path of infinite arcs from s to t: the constraints admit no finite labelling.
+bool infeasible(const Network& net) {
+  std::vector<std::vector<int>> infinite_out(net.cells + 2);
+  for (const Arc& a : net.arcs)
+    if (a.infinite) infinite_out[a.from].push_back(a.to);
+  std::vector<char> seen(net.cells + 2, 0);
+  std::vector<int> stack{net.s};
+  seen[net.s] = 1;
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (int w : infinite_out[v])
+      if (!seen[w]) {
+        seen[w] = 1;
+        stack.push_back(w);
+      }
+  }
+  return seen[net.t];
+}
 
-/// The network of Fig. 8 built on a Boost graph, with its arcs in insertion order.
-struct Network {
-  explicit Network(int vertices) : g(vertices) {}
-  FlowGraph g;
-  std::vector<Arc> arcs;
-};
-
-// ---- the double-precision warm start ----
-// The certified max flow starts from a flow found in doubles: Boost's Boykov-Kolmogorov on the capacities rounded to
-// one scalar each (samples * lambda + measure, lambda above the measure of every cut, so the scalar order of cuts
-// is the lexicographic one up to rounding), decomposed into s-t paths; each path is then augmented exactly by its
-// certified bottleneck. Rounding only makes the warm start less than maximal: Edmonds-Karp finishes the flow in
-// exact arithmetic and the certificate below is checked exactly, so the result does not depend on the doubles
-// (the source side is the set reachable from s in the residual graph of a maximum flow, the same for every
-// maximum flow).
+// ---- the double-precision max flow ----
+// Both ways of certifying a cut start from a flow found in doubles: Boost's Boykov-Kolmogorov on the capacities
+// rounded to one scalar each (samples * lambda + measure, lambda above the measure of every cut, so the scalar
+// order of cuts is the lexicographic one up to rounding). The doubles only guide: whatever they are, the answer
+// is checked exactly.
 
 using DoubleGraph = hsx::FlowGraph<double>;
 
@@ -231,48 +301,444 @@ double lambda_of(const Problem& problem) {
   return 2 * total + 1;
 }
 
-double double_capacity(const Capacity& c, const Problem& problem, double lambda) {
-  if (c.infinite) return std::numeric_limits<double>::infinity();
-  double value = static_cast<double>(c.samples) * lambda;
-  for (const auto& [g, k] : c.atoms) {
-    const auto& [lo, hi] = problem.support_enclosures()[g];
-    value += static_cast<double>(k) * (lo + (hi - lo) / 2);
+double double_capacity(const Problem& problem, const Network& net, const Arc& a, double lambda) {
+  if (a.infinite) return std::numeric_limits<double>::infinity();
+  double value = static_cast<double>(a.samples) * lambda;
+  for (int k = a.atoms_begin; k < a.atoms_end; ++k) {
+    const auto& [lo, hi] = problem.support_enclosures()[net.atoms[k]];
+    value += lo + (hi - lo) / 2;
   }
   return value;
 }
 
-/// The flow on each arc of `net` (by index) of a maximum flow of the rounded capacities.
-std::vector<double> double_flow(const Network& net, const Problem& problem, int s, int t) {
+/// A maximum flow of the rounded capacities, per arc of the network (by index).
+struct DoubleFlow {
+  std::vector<double> capacity, flow, residual;  ///< residual = capacity - flow as Boykov-Kolmogorov left it
+};
+
+DoubleFlow double_flow(const Problem& problem, const Network& net) {
   const double lambda = lambda_of(problem);
-  const auto n = boost::num_vertices(net.g);
+  const auto n = static_cast<std::size_t>(net.cells + 2);
   DoubleGraph g(n);
   auto capacity = boost::get(boost::edge_capacity, g);
   auto residual = boost::get(boost::edge_residual_capacity, g);
   auto reverse = boost::get(boost::edge_reverse, g);
-  auto exact_capacity = boost::get(boost::edge_capacity, net.g);
-  std::vector<Traits::edge_descriptor> reverse_of_arc;
+  DoubleFlow out;
+  out.capacity.reserve(net.arcs.size());
+  std::vector<Traits::edge_descriptor> forward, backward;
+  forward.reserve(net.arcs.size());
+  backward.reserve(net.arcs.size());
   for (const Arc& a : net.arcs) {
     auto e = boost::add_edge(a.from, a.to, g).first;
     auto r = boost::add_edge(a.to, a.from, g).first;
-    capacity[e] = double_capacity(exact_capacity[a.e], problem, lambda);
+    capacity[e] = double_capacity(problem, net, a, lambda);
     capacity[r] = 0;
     reverse[e] = r;
     reverse[r] = e;
-    reverse_of_arc.push_back(r);
+    out.capacity.push_back(capacity[e]);
+    forward.push_back(e);
+    backward.push_back(r);
   }
   std::vector<boost::default_color_type> color(n);
   boost::boykov_kolmogorov_max_flow(g, capacity, residual, reverse,
                                     boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
-                                    boost::get(boost::vertex_index, g), s, t);
-  std::vector<double> flow;
-  flow.reserve(net.arcs.size());
-  for (const auto& r : reverse_of_arc) flow.push_back(residual[r]);  // the reverse edge's residual = the arc's flow
-  return flow;
+                                    boost::get(boost::vertex_index, g), net.s, net.t);
+  out.flow.reserve(net.arcs.size());
+  out.residual.reserve(net.arcs.size());
+  for (std::size_t i = 0; i < net.arcs.size(); ++i) {
+    out.flow.push_back(residual[backward[i]]);  // the reverse edge's residual = the arc's flow
+    out.residual.push_back(residual[forward[i]]);
+  }
+  return out;
 }
+
+// ---- certification of a basic flow close to the double flow (the fast path) ----
+// The arcs are split by the double flow into zero (Z), saturated (U) and free (F) ones; free arcs that close a
+// cycle (s and t taken as one vertex G) are cancelled in doubles (flow pushed around the cycle until an arc reaches
+// a bound, which then joins Z or U), so that the free arcs form a forest. The exact flow is then *defined* as 0 on
+// Z, the capacity on U, and on each free arc the value conservation forces: the net saturated outflow of the
+// subtree below it. It is conserved at every cell by construction, except at the root of a tree without G, where
+// the subtree sum must be exactly 0 (checked). What is left to check is 0 <= f <= c on free arcs; intervals decide
+// almost all of it, and the exact sums (supports with integer coefficients, then Measure) the rest. The source side
+// is then the set reachable from s through positive residuals (decided the same way); t must not be in it.
+// proofs/bsh.md entry 3 has the argument. Any check that fails (or does not decide) gives up: the caller falls
+// back to the exact augmenting-path max flow below.
+
+enum class ArcState : char { Zero, Saturated, Free };
+
+/// An exact value (samples, measure) known by its samples and an enclosure of its measure.
+struct Enclosed {
+  long samples = 0;
+  DoubleBounds measure;
+};
+
+/// Sign of an enclosed value when the enclosure decides it (an enclosure [0, 0] is an exact 0).
+std::optional<int> enclosed_sign(const Enclosed& v) {
+  if (v.samples != 0) return v.samples > 0 ? 1 : -1;
+  if (const int s = v.measure.certain_sign()) return s;
+  if (v.measure.lo == 0 && v.measure.hi == 0) return 0;
+  return std::nullopt;
+}
+
+class BasicFlow {
+ public:
+  BasicFlow(const Problem& problem, const Network& net, DoubleFlow doubles)
+      : problem_(problem), net_(net), d_(std::move(doubles)), ground_(net.cells), nodes_(net.cells + 1) {}
+
+  /// The certified cut, or nullopt when a check fails or does not decide.
+  std::optional<CutResult> certify();
+
+ private:
+  int node(int vertex) const { return vertex < net_.cells ? vertex : ground_; }
+  void classify();
+  void build_forest();
+  void cancel_cycle(int e);
+  void root_forest();
+  void solve_flows();
+  std::optional<int> exact_sign(int below, int sign, int plus_arc);
+  std::optional<int> sign_of_flow(int e, bool slack);
+  bool decide_residuals();
+  std::optional<CutResult> cut_from_residuals();
+
+  const Problem& problem_;
+  const Network& net_;
+  DoubleFlow d_;
+  int ground_, nodes_;
+  std::vector<ArcState> state_;
+  std::vector<std::vector<int>> forest_;  // per node: its free (forest) arcs
+  std::vector<int> parent_arc_, order_, position_, size_;
+  std::vector<Enclosed> subtree_, flow_;  // per node: net saturated outflow of its subtree; per arc: the flow
+  std::vector<char> forward_, backward_;  // per arc: positive residual forward (capacity - f), backward (f)
+  std::vector<long> coefficient_;         // per support: scratch for exact sums
+  std::vector<int> stamp_, via_;          // scratch for cycle search
+  int stamp_now_ = 0;
+};
+
+void BasicFlow::classify() {
+  double largest = 0;
+  for (double c : d_.capacity)
+    if (std::isfinite(c)) largest = std::max(largest, c);
+  const double tolerance = std::ldexp(largest, -40);
+  state_.assign(net_.arcs.size(), ArcState::Free);
+  for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
+    if (!net_.arcs[e].infinite && d_.residual[e] <= tolerance) {
+      state_[e] = ArcState::Saturated;
+      d_.flow[e] = d_.capacity[e];
+    } else if (d_.flow[e] <= tolerance) {
+      state_[e] = ArcState::Zero;
+      d_.flow[e] = 0;
+    }
+  }
+}
+
+void BasicFlow::build_forest() {
+  forest_.assign(nodes_, {});
+  stamp_.assign(nodes_, 0);
+  via_.assign(nodes_, -1);
+  DisjointSets sets(static_cast<std::size_t>(nodes_));
+  for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
+    if (state_[e] != ArcState::Free) continue;
+    const int u = node(net_.arcs[e].from), v = node(net_.arcs[e].to);
+    const auto ru = sets.find_set(u), rv = sets.find_set(v);
+    if (ru == rv) {
+      cancel_cycle(static_cast<int>(e));
+      continue;
+    }
+    sets.link(ru, rv);
+    forest_[u].push_back(static_cast<int>(e));
+    forest_[v].push_back(static_cast<int>(e));
+  }
+}
+
+/// Free arc e closes a cycle with the forest: pushes flow around the cycle (in doubles) in the direction that
+/// reaches a bound first; the arc that reaches it becomes zero or saturated and leaves the forest, e takes its place.
+void BasicFlow::cancel_cycle(int e) {
+  const int u = node(net_.arcs[e].from), v = node(net_.arcs[e].to);
+  // Breadth-first search of the forest from v to u: via_[x] = the forest arc that reached x.
+  ++stamp_now_;
+  std::vector<int> queue{v};
+  stamp_[v] = stamp_now_;
+  for (std::size_t head = 0; head < queue.size() && stamp_[u] != stamp_now_; ++head) {
+    const int x = queue[head];
+    for (int a : forest_[x]) {
+      const int y = node(net_.arcs[a].from) == x ? node(net_.arcs[a].to) : node(net_.arcs[a].from);
+      if (stamp_[y] == stamp_now_) continue;
+      stamp_[y] = stamp_now_;
+      via_[y] = a;
+      queue.push_back(y);
+    }
+  }
+  // The cycle u -> v along e, then back from v to u through the forest; orientation +1 where the arc points
+  // along the cycle.
+  std::vector<std::pair<int, int>> cycle{{e, 1}};
+  for (int x = u; x != v;) {
+    const int a = via_[x];
+    const int y = node(net_.arcs[a].from) == x ? node(net_.arcs[a].to) : node(net_.arcs[a].from);
+    cycle.emplace_back(a, node(net_.arcs[a].from) == y ? 1 : -1);  // walked from y to x
+    x = y;
+  }
+  const auto room = [this](int a, int direction) {  // how far a's flow can move in `direction`
+    return direction > 0 ? std::max(0.0, d_.capacity[a] - d_.flow[a]) : d_.flow[a];
+  };
+  double best = std::numeric_limits<double>::infinity();
+  int limiting = e, push = 1;
+  for (int direction : {1, -1})
+    for (const auto& [a, orientation] : cycle) {
+      const double r = room(a, direction * orientation);
+      if (r < best) {
+        best = r;
+        limiting = a;
+        push = direction;
+      }
+    }
+  for (const auto& [a, orientation] : cycle) d_.flow[a] += push * orientation * best;
+  const int hit = push * (limiting == e ? 1 : [&] {
+    for (const auto& [a, orientation] : cycle)
+      if (a == limiting) return orientation;
+    return 1;
+  }());
+  state_[limiting] = hit > 0 ? ArcState::Saturated : ArcState::Zero;
+  d_.flow[limiting] = hit > 0 ? d_.capacity[limiting] : 0;
+  if (limiting == e) return;
+  for (int x : {node(net_.arcs[limiting].from), node(net_.arcs[limiting].to)}) {
+    auto& arcs = forest_[x];
+    arcs.erase(std::find(arcs.begin(), arcs.end(), limiting));
+  }
+  forest_[u].push_back(e);
+  forest_[v].push_back(e);
+}
+
+/// Preorder of each tree (G's first), with parent arcs and subtree sizes: a subtree is a range of the preorder.
+void BasicFlow::root_forest() {
+  parent_arc_.assign(nodes_, -1);
+  position_.assign(nodes_, -1);
+  size_.assign(nodes_, 1);
+  order_.clear();
+  order_.reserve(nodes_);
+  std::vector<int> stack;
+  for (int root = -1; root < nodes_; ++root) {
+    const int r = root < 0 ? ground_ : root;
+    if (position_[r] >= 0) continue;
+    stack.push_back(r);
+    position_[r] = 0;
+    while (!stack.empty()) {
+      const int x = stack.back();
+      stack.pop_back();
+      position_[x] = static_cast<int>(order_.size());
+      order_.push_back(x);
+      for (int a : forest_[x]) {
+        if (a == parent_arc_[x]) continue;
+        const int y = node(net_.arcs[a].from) == x ? node(net_.arcs[a].to) : node(net_.arcs[a].from);
+        parent_arc_[y] = a;
+        position_[y] = 0;
+        stack.push_back(y);
+      }
+    }
+  }
+  for (auto it = order_.rbegin(); it != order_.rend(); ++it)
+    if (parent_arc_[*it] >= 0) {
+      const Arc& a = net_.arcs[parent_arc_[*it]];
+      size_[node(a.from) == *it ? node(a.to) : node(a.from)] += size_[*it];
+    }
+}
+
+/// Enclosures of the subtree sums and of the free arcs' flows, leaves first.
+void BasicFlow::solve_flows() {
+  const IntervalBatch batch;
+  subtree_.assign(nodes_, Enclosed{});
+  flow_.assign(net_.arcs.size(), Enclosed{});
+  for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
+    if (state_[e] != ArcState::Saturated) continue;
+    const Arc& a = net_.arcs[e];
+    Enclosed& out = subtree_[node(a.from)];
+    Enclosed& in = subtree_[node(a.to)];
+    out.samples += a.samples;
+    out.measure = batch.add(out.measure, a.measure);
+    in.samples -= a.samples;
+    in.measure = batch.subtract(in.measure, a.measure);
+    flow_[e] = {a.samples, a.measure};
+  }
+  for (auto it = order_.rbegin(); it != order_.rend(); ++it) {
+    const int x = *it, p = parent_arc_[x];
+    if (p < 0) continue;
+    const Arc& a = net_.arcs[p];
+    const Enclosed& below = subtree_[x];
+    const bool into = node(a.to) == x;  // p points into the subtree: f = its sum; out of it: f = -its sum
+    flow_[p] = into ? below : Enclosed{-below.samples, DoubleBounds{-below.measure.hi, -below.measure.lo}};
+    Enclosed& up = subtree_[into ? node(a.from) : node(a.to)];
+    up.samples += below.samples;
+    up.measure = batch.add(up.measure, below.measure);
+  }
+}
+
+/// Exact sign of sign * (the subtree sum below node `below`) + (capacity of arc plus_arc, when >= 0): the
+/// saturated arcs that cross the subtree's border, summed support by support; nullopt when not separated.
+std::optional<int> BasicFlow::exact_sign(int below, int sign, int plus_arc) {
+  const int first = position_[below], last = first + size_[below];
+  const auto inside = [&](int vertex) {
+    const int x = node(vertex);
+    return position_[x] >= first && position_[x] < last;
+  };
+  coefficient_.resize(problem_.support_count(), 0);
+  std::vector<int> touched;
+  long samples = 0;
+  const auto add_arc = [&](const Arc& a, long k) {
+    samples += k * a.samples;
+    for (int i = a.atoms_begin; i < a.atoms_end; ++i) {
+      if (coefficient_[net_.atoms[i]] == 0) touched.push_back(net_.atoms[i]);
+      coefficient_[net_.atoms[i]] += k;
+    }
+  };
+  for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
+    if (state_[e] != ArcState::Saturated) continue;
+    const Arc& a = net_.arcs[e];
+    const bool from = inside(a.from), to = inside(a.to);
+    if (from != to) add_arc(a, from ? sign : -sign);
+  }
+  if (plus_arc >= 0) add_arc(net_.arcs[plus_arc], 1);
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  Capacity sum = Capacity::of_samples(samples);
+  sum.problem = &problem_;
+  for (int g : touched) {
+    if (coefficient_[g] != 0) sum.atoms.emplace_back(g, coefficient_[g]);
+    coefficient_[g] = 0;
+  }
+  if (sum.samples != 0) return sum.samples > 0 ? 1 : -1;
+  if (sum.atoms.empty()) return 0;
+  return sign_of(sum);
+}
+
+/// Sign of a free arc's flow (slack: of its capacity minus its flow), by enclosure or exactly.
+std::optional<int> BasicFlow::sign_of_flow(int e, bool slack) {
+  const Arc& a = net_.arcs[e];
+  Enclosed v = flow_[e];
+  if (slack) {
+    const IntervalBatch batch;
+    v = {a.samples - v.samples, batch.subtract(a.measure, v.measure)};
+  }
+  if (const auto s = enclosed_sign(v)) return s;
+  // f = +-(sum below x), x the arc's lower end in the tree.
+  const int x = parent_arc_[node(a.to)] == e ? node(a.to) : node(a.from);
+  const int sign = node(a.to) == x ? 1 : -1;
+  return slack ? exact_sign(x, -sign, e) : exact_sign(x, sign, -1);
+}
+
+/// Checks 0 <= f <= c on free arcs and exact conservation at the roots without G; sets forward_ / backward_.
+bool BasicFlow::decide_residuals() {
+  forward_.assign(net_.arcs.size(), 0);
+  backward_.assign(net_.arcs.size(), 0);
+  for (int x = 0; x < nodes_; ++x) {
+    if (x == ground_ || parent_arc_[x] >= 0) continue;
+    const auto s = enclosed_sign(subtree_[x]);
+    if (s ? *s != 0 : exact_sign(x, 1, -1) != std::optional<int>(0)) return false;
+  }
+  for (std::size_t i = 0; i < net_.arcs.size(); ++i) {
+    const int e = static_cast<int>(i);
+    const Arc& a = net_.arcs[e];
+    const auto positive_capacity = [&] {
+      if (a.infinite || a.samples > 0 || a.measure.lo > 0) return true;
+      const auto s = enclosed_sign(Enclosed{a.samples, a.measure});
+      return s ? *s > 0 : sign_of(capacity_of(problem_, net_, a)) == std::optional<int>(1);
+    };
+    switch (state_[e]) {
+      case ArcState::Zero: forward_[e] = positive_capacity(); break;
+      case ArcState::Saturated: backward_[e] = positive_capacity(); break;
+      case ArcState::Free: {
+        const auto f = sign_of_flow(e, false);
+        if (!f || *f < 0) return false;
+        backward_[e] = *f > 0;
+        if (a.infinite) {
+          forward_[e] = 1;
+          break;
+        }
+        const auto slack = sign_of_flow(e, true);
+        if (!slack || *slack < 0) return false;
+        forward_[e] = *slack > 0;
+        break;
+      }
+    }
+  }
+  return true;
+}
+
+/// The source side (reachable from s through positive residuals), its energy and the check that the cut's
+/// capacity equals that energy; nullopt when t is reachable or the check fails.
+std::optional<CutResult> BasicFlow::cut_from_residuals() {
+  const int n = net_.cells;
+  std::vector<int> start(n + 3, 0);
+  for (const Arc& a : net_.arcs) {
+    ++start[a.from + 1];
+    ++start[a.to + 1];
+  }
+  for (int v = 0; v < n + 2; ++v) start[v + 1] += start[v];
+  std::vector<int> incident(start.back()), fill(start.begin(), start.end() - 1);
+  for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
+    incident[fill[net_.arcs[e].from]++] = static_cast<int>(e);
+    incident[fill[net_.arcs[e].to]++] = static_cast<int>(e);
+  }
+  std::vector<char> reach(n + 2, 0);
+  std::vector<int> stack{net_.s};
+  reach[net_.s] = 1;
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (int k = start[v]; k < start[v + 1]; ++k) {
+      const int e = incident[k];
+      const Arc& a = net_.arcs[e];
+      const int w = a.from == v ? a.to : a.from;
+      if (reach[w] || !(a.from == v ? forward_[e] : backward_[e])) continue;
+      reach[w] = 1;
+      stack.push_back(w);
+    }
+  }
+  if (reach[net_.t]) return std::nullopt;
+  CutResult result;
+  result.labelling.assign(reach.begin(), reach.begin() + n);
+  result.energy = energy(problem_, result.labelling);
+  // The cut's capacity: its samples and its supports (each arc across counted once) must be the energy's.
+  long samples = 0;
+  std::vector<int> supports;
+  for (const Arc& a : net_.arcs) {
+    if (!reach[a.from] || reach[a.to]) continue;
+    if (a.infinite) return std::nullopt;
+    samples += a.samples;
+    supports.insert(supports.end(), net_.atoms.begin() + a.atoms_begin, net_.atoms.begin() + a.atoms_end);
+  }
+  std::sort(supports.begin(), supports.end());
+  if (samples != result.energy.missing_samples || supports != boundary_supports(problem_, result.labelling))
+    return std::nullopt;
+  result.certified = true;
+  return result;
+}
+
+std::optional<CutResult> BasicFlow::certify() {
+  classify();
+  build_forest();
+  root_forest();
+  solve_flows();
+  if (!decide_residuals()) return std::nullopt;
+  return cut_from_residuals();
+}
+
+// ---- the exact max flow by augmenting paths (the reference, and the fallback of the fast path) ----
+
+/// One arc of the exact flow network (its reverse edge, of capacity 0, is reverse[e]).
+struct ExactArc {
+  Traits::edge_descriptor e;
+  int from, to;
+};
+
+/// The network on a Boost graph with exact capacities, with its arcs in the order of Network::arcs.
+struct ExactNetwork {
+  explicit ExactNetwork(int vertices) : g(vertices) {}
+  FlowGraph g;
+  std::vector<ExactArc> arcs;
+};
 
 /// Augments the exact flow by its certified bottleneck along `path` (arc indices, s to t); a path whose bottleneck
 /// is not certainly positive is left alone.
-void augment_exactly(Network& net, const std::vector<int>& path) {
+void augment_exactly(ExactNetwork& net, const std::vector<int>& path) {
   auto residual = boost::get(boost::edge_residual_capacity, net.g);
   auto reverse = boost::get(boost::edge_reverse, net.g);
   Capacity bottleneck = residual[net.arcs[path.front()].e];
@@ -289,7 +755,7 @@ void augment_exactly(Network& net, const std::vector<int>& path) {
 /// Decomposes `flow` (per arc, in doubles) into s-t paths, depth first with a current arc per vertex (an arc whose
 /// remaining flow is negligible, or that closes a cycle, is passed over for good), and augments the exact flow
 /// along each. Asks `stop` before each path; false when stopped.
-bool warm_start(Network& net, std::vector<double> flow, int s, int t, const std::function<bool()>& stop) {
+bool warm_start(ExactNetwork& net, std::vector<double> flow, int s, int t, const std::function<bool()>& stop) {
   const int n = static_cast<int>(boost::num_vertices(net.g));
   double largest = 0;
   for (double f : flow)
@@ -330,105 +796,48 @@ bool warm_start(Network& net, std::vector<double> flow, int s, int t, const std:
   }
 }
 
-}  // namespace
-
-bool cut_cost(const Problem& problem, const CutConstraints& constraints, const Labelling& labelling, Energy* cost) {
-  const Terms t = build_terms(problem, constraints);
-  Capacity total;
-  for (int k = 0; k < problem.cell_count(); ++k) {
-    if (labelling[k]) {
-      if (t.sink_infinite[k]) return false;
-      total = total + Capacity::of_samples(t.sink_samples[k]);
-    } else {
-      if (t.source_infinite[k]) return false;
-      total = total + Capacity::of_samples(t.source_samples[k]);
-    }
-  }
-  for (const auto& [pair, w] : t.binary)
-    if (labelling[pair.first] && !labelling[pair.second]) total = total + w;
-  if (total.infinite) return false;
-  *cost = Energy(total.samples, total.measure());
-  return true;
+CutResult stopped_result(int cells) {
+  CutResult stopped;
+  stopped.labelling.assign(cells, 0);
+  stopped.energy.missing_samples = -1;
+  stopped.certificate_note = "stopped";
+  stopped.stopped = true;
+  return stopped;
 }
 
-CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, const std::function<bool()>& stop) {
-  const int n = problem.cell_count();
-  const Terms terms = build_terms(problem, constraints);
-  Network net(n + 2);
+/// Edmonds-Karp in exact arithmetic from `warm` (a double flow decomposed into paths) or, when null, from the zero
+/// flow; the source side of the maximum flow and the a-posteriori certificate of CutResult.
+CutResult exact_max_flow_cut(const Problem& problem, const Network& flat, const std::vector<double>* warm,
+                             const std::function<bool()>& stop) {
+  const int n = flat.cells, s = flat.s, t = flat.t;
+  ExactNetwork net(n + 2);
   FlowGraph& g = net.g;
-  const int s = n, t = n + 1;
   auto capacity = boost::get(boost::edge_capacity, g);
   auto residual = boost::get(boost::edge_residual_capacity, g);
   auto reverse = boost::get(boost::edge_reverse, g);
-  auto add = [&](int from, int to, const Capacity& w) {
-    auto e = boost::add_edge(from, to, g).first;
-    auto r = boost::add_edge(to, from, g).first;
+  for (const Arc& a : flat.arcs) {
+    const Capacity w = capacity_of(problem, flat, a);
+    auto e = boost::add_edge(a.from, a.to, g).first;
+    auto r = boost::add_edge(a.to, a.from, g).first;
     capacity[e] = w;
     capacity[r] = Capacity();
     residual[e] = w;
     residual[r] = Capacity();
     reverse[e] = r;
     reverse[r] = e;
-    net.arcs.push_back({e, from, to});
-  };
-  for (int k = 0; k < n; ++k) {
-    if (terms.source_infinite[k])
-      add(s, k, Capacity::inf());
-    else if (terms.source_samples[k])
-      add(s, k, Capacity::of_samples(terms.source_samples[k]));
-    if (terms.sink_infinite[k])
-      add(k, t, Capacity::inf());
-    else if (terms.sink_samples[k])
-      add(k, t, Capacity::of_samples(terms.sink_samples[k]));
-  }
-  for (const auto& [pair, w] : terms.binary)
-    if (!w.is_zero()) add(pair.first, pair.second, w);
-
-  // Infeasible constraints show as a path of infinite edges from s to t; Edmonds-Karp would loop on it.
-  {
-    std::vector<char> seen(n + 2, 0);
-    std::vector<int> stack{s};
-    seen[s] = 1;
-    while (!stack.empty()) {
-      const int v = stack.back();
-      stack.pop_back();
-      for (auto [it, end] = boost::out_edges(v, g); it != end; ++it) {
-        const int w = static_cast<int>(boost::target(*it, g));
-        if (!seen[w] && capacity[*it].infinite) {
-          seen[w] = 1;
-          stack.push_back(w);
-        }
-      }
-    }
-    if (seen[t]) {
-      CutResult infeasible;
-      infeasible.labelling.assign(n, 0);
-      infeasible.energy.missing_samples = -1;
-      infeasible.certificate_note = "infeasible constraints";
-      return infeasible;
-    }
+    net.arcs.push_back({e, a.from, a.to});
   }
   std::vector<boost::default_color_type> color(n + 2);
   std::vector<Traits::edge_descriptor> pred(n + 2);
   // The flow value is computed below from the flow on each arc out of s (Boost's own sum would add "capacity -
-  // residual" on infinite edges, which is meaningless here). `stop` is asked before the double flow, before each
-  // warm-start path and before each augmenting path of Edmonds-Karp.
-  const auto stopped_result = [n] {
-    CutResult stopped;
-    stopped.labelling.assign(n, 0);
-    stopped.energy.missing_samples = -1;
-    stopped.certificate_note = "stopped";
-    stopped.stopped = true;
-    return stopped;
-  };
-  if (stop && stop()) return stopped_result();
-  if (constraints.warm_start && !warm_start(net, double_flow(net, problem, s, t), s, t, stop))
-    return stopped_result();
+  // residual" on infinite edges, which is meaningless here). `stop` is asked before each warm-start path and
+  // before each augmenting path of Edmonds-Karp.
+  if (warm && !warm_start(net, *warm, s, t, stop)) return stopped_result(n);
   if (!interruptible_augment(
           g, s, t, residual, reverse,
           boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
           boost::make_iterator_property_map(pred.begin(), boost::get(boost::vertex_index, g)), stop))
-    return stopped_result();
+    return stopped_result(n);
 
   // S side: vertices reachable from s through edges with (certainly) positive residual capacity.
   CutResult result;
@@ -458,7 +867,7 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
   if (reach[t]) note("sink reachable after max flow");
   std::vector<Capacity> balance(n + 2);
   Capacity flow;
-  for (const Arc& a : net.arcs) {
+  for (const ExactArc& a : net.arcs) {
     const Capacity& cap = capacity[a.e];
     const Capacity& res = residual[a.e];
     if (cap.infinite) {
@@ -497,6 +906,39 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
   }
   result.certified = result.certificate_note.empty();
   return result;
+}
+
+}  // namespace
+
+bool cut_cost(const Problem& problem, const CutConstraints& constraints, const Labelling& labelling, Energy* cost) {
+  const Network net = build_network(problem, constraints);
+  const auto side = [&](int vertex) { return vertex == net.s || (vertex != net.t && labelling[vertex]); };
+  Capacity total;
+  for (const Arc& a : net.arcs) {
+    if (!side(a.from) || side(a.to)) continue;
+    if (a.infinite) return false;
+    total += capacity_of(problem, net, a);
+  }
+  *cost = Energy(total.samples, total.measure());
+  return true;
+}
+
+CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, const std::function<bool()>& stop) {
+  const int n = problem.cell_count();
+  const Network net = build_network(problem, constraints);
+  if (infeasible(net)) {
+    CutResult infeasible;
+    infeasible.labelling.assign(n, 0);
+    infeasible.energy.missing_samples = -1;
+    infeasible.certificate_note = "infeasible constraints";
+    return infeasible;
+  }
+  if (stop && stop()) return stopped_result(n);
+  if (!constraints.warm_start) return exact_max_flow_cut(problem, net, nullptr, stop);
+  DoubleFlow doubles = double_flow(problem, net);
+  const std::vector<double> warm = doubles.flow;
+  if (auto certified = BasicFlow(problem, net, std::move(doubles)).certify()) return *std::move(certified);
+  return exact_max_flow_cut(problem, net, &warm, stop);
 }
 
 }  // namespace hsx::bsh

@@ -33,16 +33,18 @@ struct CutResult {
 struct CutConstraints {
   std::vector<char> removed;       ///< per support: 1 = may not lie on the boundary (|p| = infinity); empty: none
   std::vector<signed char> forced; ///< per cell: -1 free, 0 or 1 fixed (used to enumerate ties); empty: none
-  /// How the exact max flow starts: true (the default) from a flow found in doubles (Boost's Boykov-Kolmogorov,
-  /// decomposed into paths, each augmented exactly by its certified bottleneck), false from the zero flow. Either
-  /// way Edmonds-Karp finishes it exactly and the result is the same; false is the reference tests compare with.
+  /// How the max flow is found: true (the default) from a flow found in doubles (Boost's Boykov-Kolmogorov): first
+  /// a basic flow read off it is certified without exact capacities where double enclosures decide (proofs/bsh.md
+  /// entry 3); when that fails, the double flow is decomposed into paths, each augmented exactly by its certified
+  /// bottleneck, and Edmonds-Karp finishes it exactly. false: Edmonds-Karp from the zero flow, the reference tests
+  /// compare with. The labelling is the same either way (and so are energy and `certified` where both certify).
   bool warm_start = true;
 };
 
 /// Minimum-energy orientation-preserving labelling under `constraints`. When the constraints admit no finite
 /// labelling, `energy.missing_samples` is -1 and `certified` is false. `stop`, when set, is asked before the double
-/// flow, before each warm-start path and before every augmenting path of the max flow (a time limit); when it says
-/// stop, the result has `stopped` set.
+/// flow, and, when the exact max flow is needed, before each warm-start path and before every augmenting path (a
+/// time limit); when it says stop, the result has `stopped` set.
 CutResult graph_cut(const Problem& problem, const CutConstraints& constraints,
                     const std::function<bool()>& stop = {});
 

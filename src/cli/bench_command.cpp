@@ -448,6 +448,17 @@ double double_cut(const bsh::Problem& problem, bool bk) {
                                       boost::make_iterator_property_map(pred.begin(), index));
 }
 
+/// Refuses a mode's random-scene options: `prefix`-scenes below 1 (0 allowed when the mode takes given inputs,
+/// `inputs` not null, and some are given) and a `prefix`-halfspaces size below 1.
+void check_random_scenes(const std::string& prefix, int scenes, const std::vector<int>& sizes,
+                         const std::vector<std::string>* inputs) {
+  if (scenes < 0 || (scenes == 0 && (!inputs || inputs->empty())))
+    throw InputError(prefix + "-scenes: must be at least 1" +
+                     (inputs ? " (0 only with " + prefix + "-inputs)" : std::string()));
+  for (int h : sizes)
+    if (h < 1) throw InputError(prefix + "-halfspaces: every size must be at least 1");
+}
+
 /// The certified cut (warm-started and from the zero flow) and the two double max flows of one problem, timed.
 void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& repeat, BenchRow& row) {
   row.sizes = {problem.cell_count(), patches};
@@ -497,10 +508,7 @@ BenchRow bench_cut_input(const std::string& path, const BenchOptions& o, const R
 /// Graph-cut mode: the certified cut (warm-started, and from the zero flow: CutConstraints::warm_start) and the two
 /// double max flows on random scenes, as ratios to Boykov-Kolmogorov; notes: both certified, the same cut.
 void run_cut_bench(const BenchOptions& o, OutputFiles& files) {
-  if (o.cut_scenes < 0 || (o.cut_scenes == 0 && o.cut_inputs.empty()))
-    throw InputError("--cut-scenes: must be at least 1 (0 only with --cut-inputs)");
-  for (int h : o.cut_halfspaces)
-    if (h < 1) throw InputError("--cut-halfspaces: every size must be at least 1");
+  check_random_scenes("--cut", o.cut_scenes, o.cut_halfspaces, &o.cut_inputs);
   Report report;
   report.mode = "cuts";
   report.input_name = "scene";
@@ -921,10 +929,7 @@ BenchRow bench_arrange_scene(const std::string& name, const Scene2& scene, const
 /// Arrangement mode: hsx::arrange beside CGAL's bare Arrangement_2 insertion of the same curves, on random scenes
 /// of several sizes and on given 2D scene files; the ratio is hsx's median over CGAL's.
 void run_arrange_bench(const BenchOptions& o, OutputFiles& files) {
-  if (o.arrange_scenes < 0 || (o.arrange_scenes == 0 && o.arrange_inputs.empty()))
-    throw InputError("--arrange-scenes: must be at least 1 (0 only with --arrange-inputs)");
-  for (int h : o.arrange_halfspaces)
-    if (h < 1) throw InputError("--arrange-halfspaces: every size must be at least 1");
+  check_random_scenes("--arrange", o.arrange_scenes, o.arrange_halfspaces, &o.arrange_inputs);
   Report report;
   report.mode = "arrange";
   report.input_name = "scene";
@@ -992,9 +997,7 @@ BenchRow bench_brute_scene(int halfspaces, int index, const BenchOptions& o, con
 
 /// Brute-force mode: the oracle's labellings per second on random scenes of several sizes.
 void run_brute_bench(const BenchOptions& o, OutputFiles& files) {
-  if (o.brute_scenes < 1) throw InputError("--brute-scenes: must be at least 1");
-  for (int h : o.brute_halfspaces)
-    if (h < 1) throw InputError("--brute-halfspaces: every size must be at least 1");
+  check_random_scenes("--brute", o.brute_scenes, o.brute_halfspaces, nullptr);
   Report report;
   report.mode = "brute-force";
   report.input_name = "scene";

@@ -1,5 +1,6 @@
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/bsh/exact.hpp>
+#include "algorithms/bsh/support_lists.hpp"
 
 #include <algorithm>
 #include <cfloat>
@@ -656,7 +657,7 @@ class GreaterScreen {
     // that, and the nearest sum's at most n 2^-53) has a positive lower end too: Greater, no rounding-mode switch.
     double sum = 0, magnitude = 0;
     long terms = 0;
-    for_each_difference([&](int g, int k) {
+    for_each_difference(supports_, best_supports_, [&](int g, int k) {
       const auto& e = problem_.support_enclosures()[g];
       const double x = k > 0 ? e.first : -e.second;
       sum += x;
@@ -665,7 +666,7 @@ class GreaterScreen {
     });
     if (std::isfinite(magnitude) && sum > 4 * static_cast<double>(terms + 1) * DBL_EPSILON * magnitude) return true;
     DoubleCombination bounds;  // undecided in doubles: exactly compare()'s first test
-    for_each_difference([&](int g, int k) {
+    for_each_difference(supports_, best_supports_, [&](int g, int k) {
       const auto& e = problem_.support_enclosures()[g];
       bounds.add(k, DoubleBounds{e.first, e.second});
     });
@@ -683,22 +684,6 @@ class GreaterScreen {
     for (const SampledPatch& p : sampled_)
       if (label[p.cell_a] != label[p.cell_b] && label[p.inside_cell]) m -= p.samples;
     return m;
-  }
-  // Calls f(g, +1) for each support only in supports_ and f(g, -1) for each only in best_supports_, ascending
-  // (the order compare() adds them in).
-  template <class F>
-  void for_each_difference(F f) const {
-    std::size_t i = 0, j = 0;
-    while (i < supports_.size() || j < best_supports_.size()) {
-      if (j == best_supports_.size() || (i < supports_.size() && supports_[i] < best_supports_[j])) {
-        f(supports_[i++], 1);
-      } else if (i == supports_.size() || best_supports_[j] < supports_[i]) {
-        f(best_supports_[j++], -1);
-      } else {
-        ++i;
-        ++j;
-      }
-    }
   }
   // The supports on the boundary of `label`, ascending (boundary_supports without a Labelling copy).
   void boundary(const std::vector<signed char>& label, std::vector<int>& out) const {

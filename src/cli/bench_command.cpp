@@ -68,6 +68,13 @@ struct BenchOptions {
   /// but the two about best-first itself (Props. 5.2 and 5.1, whose complete best-first search dominates).
   std::vector<std::string> campaign_checks{"all", kWithoutBestFirst};
   std::vector<std::string> bsh_examples;  ///< the BSH authors' example folders: end to end beside their figures
+  bool arrange = false;             ///< arrangement mode: hsx::arrange beside CGAL's bare Arrangement_2 insertion
+  std::vector<int> arrange_halfspaces{4, 16, 32, 64, 128};  ///< arrangement mode: random scenes of these sizes
+  int arrange_scenes = 1;           ///< arrangement mode: scenes per size
+  std::vector<std::string> arrange_inputs;  ///< arrangement mode: also these 2D scene files
+  bool brute = false;               ///< brute-force mode: labellings per second of the oracle
+  std::vector<int> brute_halfspaces{8, 10, 12, 14};  ///< brute-force mode: random scenes of these sizes
+  int brute_scenes = 3;             ///< brute-force mode: scenes per size
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -441,6 +448,17 @@ double double_cut(const bsh::Problem& problem, bool bk) {
                                       boost::make_iterator_property_map(pred.begin(), index));
 }
 
+/// Refuses a mode's random-scene options: `prefix`-scenes below 1 (0 allowed when the mode takes given inputs,
+/// `inputs` not null, and some are given) and a `prefix`-halfspaces size below 1.
+void check_random_scenes(const std::string& prefix, int scenes, const std::vector<int>& sizes,
+                         const std::vector<std::string>* inputs) {
+  if (scenes < 0 || (scenes == 0 && (!inputs || inputs->empty())))
+    throw InputError(prefix + "-scenes: must be at least 1" +
+                     (inputs ? " (0 only with " + prefix + "-inputs)" : std::string()));
+  for (int h : sizes)
+    if (h < 1) throw InputError(prefix + "-halfspaces: every size must be at least 1");
+}
+
 /// The certified cut (warm-started and from the zero flow) and the two double max flows of one problem, timed.
 void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& repeat, BenchRow& row) {
   row.sizes = {problem.cell_count(), patches};
@@ -490,10 +508,7 @@ BenchRow bench_cut_input(const std::string& path, const BenchOptions& o, const R
 /// Graph-cut mode: the certified cut (warm-started, and from the zero flow: CutConstraints::warm_start) and the two
 /// double max flows on random scenes, as ratios to Boykov-Kolmogorov; notes: both certified, the same cut.
 void run_cut_bench(const BenchOptions& o, OutputFiles& files) {
-  if (o.cut_scenes < 0 || (o.cut_scenes == 0 && o.cut_inputs.empty()))
-    throw InputError("--cut-scenes: must be at least 1 (0 only with --cut-inputs)");
-  for (int h : o.cut_halfspaces)
-    if (h < 1) throw InputError("--cut-halfspaces: every size must be at least 1");
+  check_random_scenes("--cut", o.cut_scenes, o.cut_halfspaces, &o.cut_inputs);
   Report report;
   report.mode = "cuts";
   report.input_name = "scene";
@@ -877,6 +892,170 @@ void run_campaign_bench(const BenchOptions& o, OutputFiles& files) {
   publish(report, o, files);
 }
 
+// ---- the 2D arrangement beside CGAL's bare insertion (issue 11, section 2) ----
+
+/// Random 2D scene `index` of `halfspaces` halfspaces (seed 1, up to 3 samples per halfspace), the scenes of
+/// --cuts, --arrange and --brute.
+Scene2 bench_random_scene(int halfspaces, int index) {
+  RandomSceneSettings settings;
+  settings.min_halfspaces = settings.max_halfspaces = halfspaces;
+  settings.max_samples = 3;
+  return random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene;
+}
+
+/// One scene: hsx::arrange (arrangement and complex) and bare_cgal_arrangement_faces, each timed repeatedly.
+BenchRow bench_arrange_scene(const std::string& name, const Scene2& scene, const BenchOptions& o,
+                             const RepeatOptions& repeat) {
+  BenchRow row;
+  row.input = name;
+  Arranged2 arranged;
+  try {
+    arranged = arrange(scene, o.limits);
+  } catch (const InputError& e) {
+    row.skipped = e.what();
+    return row;
+  }
+  row.sizes = {static_cast<long>(scene.halfspaces.size()), static_cast<long>(arranged.complex.cells.size()),
+               static_cast<long>(arranged.arrangement.edges().size())};
+  StageResult hsx_stage, cgal_stage;
+  hsx_stage.timing = time_repeatedly([&] { arrange(scene, o.limits); }, repeat);
+  long faces = 0;
+  cgal_stage.timing = time_repeatedly([&] { faces = bare_cgal_arrangement_faces(scene); }, repeat);
+  row.stages = {hsx_stage, cgal_stage};
+  row.notes = {faces == static_cast<long>(arranged.complex.cells.size()) ? "yes" : "NO"};
+  return row;
+}
+
+/// Arrangement mode: hsx::arrange beside CGAL's bare Arrangement_2 insertion of the same curves, on random scenes
+/// of several sizes and on given 2D scene files; the ratio is hsx's median over CGAL's.
+void run_arrange_bench(const BenchOptions& o, OutputFiles& files) {
+  check_random_scenes("--arrange", o.arrange_scenes, o.arrange_halfspaces, &o.arrange_inputs);
+  Report report;
+  report.mode = "arrange";
+  report.input_name = "scene";
+  report.size_names = {"halfsp", "cells", "edges"};
+  report.stage_names = {"hsx arrange", "bare CGAL"};
+  report.with_ratio = {1, 0};
+  report.reference = 1;
+  report.note_names = {"same cells"};
+  report.repeat = repeat_options(o);
+  for (int h : o.arrange_halfspaces)
+    for (int k = 0; k < o.arrange_scenes; ++k)
+      report.rows.push_back(bench_arrange_scene("random " + std::to_string(h) + " #" + std::to_string(k),
+                                                bench_random_scene(h, k), o, report.repeat));
+  for (const std::string& path : o.arrange_inputs) {
+    const LoadedInput in = load_input(path, o.limits);  // bad input: exit 2, as everywhere
+    if (!in.scene) throw InputError(path + ": --arrange-inputs needs 2D scene files");
+    report.rows.push_back(bench_arrange_scene(path, *in.scene, o, report.repeat));
+  }
+  report.footer = {
+      "hsx arrange: hsx::arrange (geometry/arrangement2.hpp and complex/from_arrangement2.hpp: CGAL's insertion "
+      "with a size guard, then vertices, edges with exact lengths, faces with exact areas and interior points, "
+      "sides, samples located, the complex); bare CGAL: bare_cgal_arrangement_faces, the same curves inserted into "
+      "the same CGAL arrangement and nothing else; same cells: both count the same bounded faces",
+      "random scenes: seed 1, up to 3 samples per halfspace (halfsp: halfspaces)"};
+  publish(report, o, files);
+}
+
+// ---- the brute-force oracle's rate (issue 11, section 2) ----
+
+/// Random scene `index` of `halfspaces` halfspaces: brute_force (with sample-connectedness), timed repeatedly;
+/// notes: the labellings it enumerates, their rate (over the median run) and the tie count.
+BenchRow bench_brute_scene(int halfspaces, int index, const BenchOptions& o, const RepeatOptions& repeat) {
+  BenchRow row;
+  row.input = "random " + std::to_string(halfspaces) + " #" + std::to_string(index);
+  Arranged2 arranged;
+  try {
+    arranged = arrange(bench_random_scene(halfspaces, index), o.limits);
+  } catch (const InputError& e) {
+    row.skipped = e.what();
+    return row;
+  }
+  const bsh::Problem problem(arranged.complex);
+  row.sizes = {halfspaces, problem.cell_count()};
+  bsh::BruteForceOptions options;
+  options.limit = o.brute_force_limit;
+  options.time_limit = o.time_limit;
+  bsh::BruteForceResult result;
+  StageResult stage;
+  try {
+    stage.timing = time_repeatedly([&] { result = bsh::brute_force(problem, true, options); }, repeat);
+  } catch (const bsh::LabellingLimitExceeded&) {
+    stage.status = "too large";
+  }
+  row.stages = {stage};
+  if (!stage.timing || result.stopped) {
+    if (result.stopped) row.stages[0].status = "stopped";
+    row.notes = {"-", "-", "-"};
+    return row;
+  }
+  row.notes = {std::to_string(result.enumerated),
+               printf_string("%.3g", static_cast<double>(result.enumerated) / stage.timing->median),
+               std::to_string(result.optimal.size())};
+  return row;
+}
+
+/// Brute-force mode: the oracle's labellings per second on random scenes of several sizes.
+void run_brute_bench(const BenchOptions& o, OutputFiles& files) {
+  check_random_scenes("--brute", o.brute_scenes, o.brute_halfspaces, nullptr);
+  Report report;
+  report.mode = "brute-force";
+  report.input_name = "scene";
+  report.size_names = {"halfsp", "cells"};
+  report.stage_names = {"brute force"};
+  report.with_ratio = {0};
+  report.note_names = {"labellings", "per second", "optima"};
+  report.repeat = repeat_options(o);
+  for (int h : o.brute_halfspaces)
+    for (int k = 0; k < o.brute_scenes; ++k) report.rows.push_back(bench_brute_scene(h, k, o, report.repeat));
+  report.footer = {"brute force: bsh::brute_force with sample-connectedness (hsx extract --method brute-force), "
+                   "refusing above --brute-force-limit labellings; per second: labellings enumerated over the median "
+                   "run; optima: the least-energy labellings (ties); random scenes: seed 1, up to 3 samples per "
+                   "halfspace (halfsp: halfspaces)"};
+  publish(report, o, files);
+}
+
+/// --arrange and the options only it takes.
+std::vector<CLI::Option*> add_arrange_bench_options(CLI::App* cmd, BenchOptions& o) {
+  cmd->add_flag("--arrange", o.arrange,
+                "time hsx's 2D arrangement (with its complex) beside CGAL's bare Arrangement_2 insertion of the same "
+                "curves on random scenes, instead");
+  return {cmd->add_option("--arrange-halfspaces", o.arrange_halfspaces,
+                          "--arrange: the random scenes' sizes (default 4,16,32,64,128)")
+              ->delimiter(','),
+          cmd->add_option("--arrange-scenes", o.arrange_scenes,
+                          "--arrange: random scenes per size (default 1; 0 with --arrange-inputs)"),
+          cmd->add_option("--arrange-inputs", o.arrange_inputs,
+                          "--arrange: also these 2D scene files, after the random scenes")
+              ->check(CLI::ExistingFile)};
+}
+
+/// --brute and the options only it takes.
+std::vector<CLI::Option*> add_brute_bench_options(CLI::App* cmd, BenchOptions& o) {
+  cmd->add_flag("--brute", o.brute,
+                "time the brute-force oracle on random scenes and report its labellings per second, instead");
+  return {cmd->add_option("--brute-halfspaces", o.brute_halfspaces,
+                          "--brute: the random scenes' sizes (default 8,10,12,14)")
+              ->delimiter(','),
+          cmd->add_option("--brute-scenes", o.brute_scenes, "--brute: random scenes per size (default 3)")};
+}
+
+/// Refuses the --arrange and --brute options without their mode, and the scene-folder options with them.
+void check_arrange_and_brute_options(const BenchOptions& o, const std::vector<CLI::Option*>& scene_options,
+                                     const std::vector<CLI::Option*>& only_arrange,
+                                     const std::vector<CLI::Option*>& only_brute) {
+  for (CLI::Option* option : only_arrange)
+    if (!o.arrange && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --arrange");
+  for (CLI::Option* option : only_brute)
+    if (!o.brute && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --brute");
+  for (CLI::Option* option : scene_options) {
+    if (option->count() == 0) continue;
+    const bool brute_takes = option->get_name() != scene_options.front()->get_name();  // the limits, not DIRS
+    if (o.arrange || (o.brute && !brute_takes))
+      throw InputError("bench: " + option->get_name() + " does not apply to " + (o.arrange ? "--arrange" : "--brute"));
+  }
+}
+
 }  // namespace
 
 void add_bench_command(CLI::App& app) {
@@ -941,8 +1120,11 @@ void add_bench_command(CLI::App& app) {
                   "figures, instead (a folder without config.json is reported as skipped)");
   cmd->add_flag("--campaign", o->campaign,
                 "time hsx campaign's runner (every check) on 1 and 2 threads, scenes per second, instead");
+  const std::vector<CLI::Option*> only_arrange = add_arrange_bench_options(cmd, *o);
+  const std::vector<CLI::Option*> only_brute = add_brute_bench_options(cmd, *o);
   add_arrangement_limits(cmd, o->limits);
-  cmd->callback([o, dirs, brute_force, time_limit, only_3d, only_campaign] {
+  cmd->callback([o, dirs, brute_force, time_limit, only_3d, only_campaign, only_arrange, only_brute] {
+    check_arrange_and_brute_options(*o, {dirs, brute_force, time_limit}, only_arrange, only_brute);
     for (CLI::Option* option : only_campaign)
       if (!o->campaign && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --campaign");
     for (CLI::Option* option : only_3d)
@@ -954,8 +1136,10 @@ void add_bench_command(CLI::App& app) {
     files.expect(o->csv_path, "--csv");
     files.expect(o->json_path, "--json");
     const bool examples = !o->bsh_examples.empty();
-    if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) + int(o->campaign) + int(examples) > 1)
-      throw InputError("bench: --cuts, --3d, --meshes, --campaign and --bsh-example exclude each other");
+    if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) + int(o->campaign) + int(examples) +
+            int(o->arrange) + int(o->brute) > 1)
+      throw InputError(
+          "bench: --cuts, --3d, --meshes, --campaign, --bsh-example, --arrange and --brute exclude each other");
     if (examples)
       for (CLI::Option* option : {dirs, brute_force})
         if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --bsh-example");
@@ -963,7 +1147,11 @@ void add_bench_command(CLI::App& app) {
       for (CLI::Option* option : {dirs, brute_force, time_limit})
         if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --campaign");
     if (!o->cuts && !o->cut_inputs.empty()) throw InputError("bench: --cut-inputs needs --cuts");
-    if (examples)
+    if (o->arrange)
+      run_arrange_bench(*o, files);
+    else if (o->brute)
+      run_brute_bench(*o, files);
+    else if (examples)
       run_bsh_example_bench(*o, files);
     else if (o->campaign)
       run_campaign_bench(*o, files);

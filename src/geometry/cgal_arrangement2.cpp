@@ -262,6 +262,11 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   guard.detach();
 
   // --- 2. Vertices. ----------------------------------------------------------------------------------------------
+  out.vertices_.reserve(arr.number_of_vertices());
+  out.edges_.reserve(arr.number_of_edges());
+  impl->vertex_index.reserve(arr.number_of_vertices());
+  impl->face_index.reserve(arr.number_of_faces());
+  impl->edge_index.reserve(2 * arr.number_of_edges());
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
     impl->vertex_index[key(VertexHandle(v))] = static_cast<int>(out.vertices_.size());
     out.vertices_.push_back({to_point(v->point()), static_cast<int>(v->degree())});
@@ -450,6 +455,13 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   }
   out.impl_ = std::move(impl);
   return out;
+}
+
+long bare_cgal_arrangement_faces(const Scene2& scene) {
+  const DistinctCurves curves = distinct_curves(scene);
+  CgalArrangement arr;
+  CGAL::insert(arr, curves.curves.begin(), curves.curves.end());
+  return static_cast<long>(arr.number_of_faces()) - static_cast<long>(arr.number_of_unbounded_faces());
 }
 
 int Arrangement2::connected_components() const {

@@ -337,6 +337,48 @@ if ((rc == 2)) && grep -q -- "--cut-inputs needs --cuts" "$TMP/stderr.txt"; then
 "$HSX" bench --cuts --cut-scenes 0 >/dev/null 2>"$TMP/stderr.txt"
 rc=$?
 if ((rc == 2)) && grep -q -- "--cut-scenes" "$TMP/stderr.txt"; then pass; else fail "bench --cuts --cut-scenes 0 alone: exit $rc"; fi
+# ---- bench --arrange: hsx's 2D arrangement beside CGAL's bare insertion of the same curves ----
+if "$HSX" bench --arrange --arrange-halfspaces 3,6 --arrange-inputs "$ROOT/data/scenes/lens.json" --repetitions 2 \
+  --min-time 0 --json "$TMP/bench-arrange.json" >/dev/null 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = d["rows"]
+assert d["mode"] == "arrange" and d["ratio_to"] == "bare CGAL", d
+assert [r["input"].split("/")[-1] for r in rows] == ["random 3 #0", "random 6 #0", "lens.json"], rows
+for r in rows:
+    assert [s["stage"] for s in r["stages"]] == ["hsx arrange", "bare CGAL"], r
+    assert r["same cells"] == "yes" and r["cells"] > 1 and r["stages"][0]["ratio"] > 0, r
+' "$TMP/bench-arrange.json"; then
+  pass
+else
+  fail "bench --arrange: $(head -c 300 "$TMP/stderr.txt")"
+fi
+"$HSX" bench --arrange-scenes 2 >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--arrange-scenes needs --arrange" "$TMP/stderr.txt"; then pass; else fail "bench --arrange-scenes alone: exit $rc"; fi
+"$HSX" bench --arrange --brute >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "exclude each other" "$TMP/stderr.txt"; then pass; else fail "bench --arrange --brute: exit $rc"; fi
+# ---- bench --brute: the brute-force oracle's labellings per second ----
+if "$HSX" bench --brute --brute-halfspaces 4,6 --brute-scenes 2 --repetitions 2 --min-time 0 \
+  --json "$TMP/bench-brute.json" >/dev/null 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = d["rows"]
+assert d["mode"] == "brute-force" and [r["halfsp"] for r in rows] == [4, 4, 6, 6], rows
+for r in rows:
+    assert [s["stage"] for s in r["stages"]] == ["brute force"] and r["stages"][0]["status"] == "ok", r
+    assert int(r["labellings"]) >= 1 and float(r["per second"]) > 0 and int(r["optima"]) >= 1, r
+' "$TMP/bench-brute.json"; then
+  pass
+else
+  fail "bench --brute: $(head -c 300 "$TMP/stderr.txt")"
+fi
+"$HSX" bench --brute "$ROOT/data/scenes" >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "does not apply to --brute" "$TMP/stderr.txt"; then pass; else fail "bench --brute DIRS: exit $rc"; fi
 # ---- bench --campaign: the campaign runner's scenes per second on 1 and 2 threads, the records compared ----
 if "$HSX" bench --campaign --campaign-halfspaces 2,3 --campaign-scenes 10 --campaign-time-limit 0 --repetitions 1 \
   --min-time 0 --json "$TMP/bench-campaign.json" >/dev/null 2>"$TMP/stderr.txt" &&

@@ -69,6 +69,14 @@ struct ArrangementLimits {
   long max_triangles = 20'000'000;    ///< 3D only: refined triangles (Arrangement3), checked before cells are found
 };
 
+/// Bench support (hsx bench --arrange), used by no algorithm: the baseline hsx's arrangement is measured
+/// against. Inserts the same distinct curves Arrangement2::build hands to CGAL (the domain box's sides and every
+/// halfspace boundary, coincident ones once) into a bare CGAL Arrangement_2 (the same instantiation:
+/// circle-segment traits over exact rationals, each curve's index as consolidated data; aggregated insertion, no
+/// observer) and returns its number of bounded faces. Nothing else is extracted: no vertices, edges, measures,
+/// interior points, sides or samples. `scene` must be validated (validate_and_resolve).
+long bare_cgal_arrangement_faces(const Scene2& scene);
+
 class Arrangement2 {
  public:
   /// Builds the arrangement of every halfspace boundary of `scene` (validated, see validate_and_resolve) with

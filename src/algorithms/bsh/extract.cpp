@@ -1,8 +1,11 @@
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/bsh/exact.hpp>
+#include "algorithms/bsh/support_lists.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -552,15 +555,16 @@ struct OutOfTime {
 
 /// Depth-first enumeration of the labellings: over the first unassigned cell, 0 then 1, with propagation of the
 /// implications. Both values always propagate without conflict (a value forced by a neighbour would already be
-/// assigned), so the tree is binary and the first leaf is the empty labelling.
+/// assigned), so the tree is binary and the first leaf is the empty labelling. No allocation per node: one trail
+/// and one propagation stack serve the whole enumeration.
 class Enumerator {
  public:
   Enumerator(const Problem& problem, const Implications& g, const BruteForceOptions& options)
       : g_(g), options_(options), start_(Clock::now()), label_(problem.cell_count(), -1) {
-    std::vector<int> trail;
     for (int k = 0; k < problem.cell_count(); ++k)
-      if (problem.complex().cells[k].outer && !assign(k, 0, trail))
+      if (problem.complex().cells[k].outer && !assign(k, 0))
         throw std::logic_error("brute force: outer cells forced inside");
+    trail_.clear();
   }
   /// The labels after the outer cells are fixed: -1 free, 0 fixed.
   const std::vector<signed char>& root() const { return label_; }
@@ -568,21 +572,21 @@ class Enumerator {
   void run(const std::function<void(const std::vector<signed char>&)>& leaf) { descend(0, leaf); }
 
  private:
-  // Assign with propagation; returns false on a conflict. `trail` records what to undo.
-  bool assign(int v, signed char value, std::vector<int>& trail) {
+  // Assign with propagation, recording every label set on trail_; returns false on a conflict.
+  bool assign(int v, signed char value) {
     if (label_[v] >= 0) return label_[v] == value;
-    std::vector<int> stack{v};
     label_[v] = value;
-    trail.push_back(v);
-    while (!stack.empty()) {
-      const int x = stack.back();
-      stack.pop_back();
+    trail_.push_back(v);
+    stack_.assign(1, v);
+    while (!stack_.empty()) {
+      const int x = stack_.back();
+      stack_.pop_back();
       for (int y : value ? g_.implies[x] : g_.implied_by[x]) {
         if (label_[y] == value) continue;
         if (label_[y] >= 0) return false;
         label_[y] = value;
-        trail.push_back(y);
-        stack.push_back(y);
+        trail_.push_back(y);
+        stack_.push_back(y);
       }
     }
     return true;
@@ -602,9 +606,12 @@ class Enumerator {
       return;
     }
     for (signed char value : {0, 1}) {
-      std::vector<int> trail;
-      if (assign(v, value, trail)) descend(v + 1, leaf);
-      for (int x : trail) label_[x] = -1;
+      const std::size_t mark = trail_.size();
+      if (assign(v, value)) descend(v + 1, leaf);
+      while (trail_.size() > mark) {
+        label_[trail_.back()] = -1;
+        trail_.pop_back();
+      }
     }
   }
 
@@ -612,7 +619,86 @@ class Enumerator {
   const BruteForceOptions& options_;
   Clock::time_point start_;
   std::vector<signed char> label_;
+  std::vector<int> trail_, stack_;
   long steps_ = 0;
+};
+
+/// Recognises, without building an Energy or testing sample-connectedness, the labellings whose energy compare()
+/// proves Greater than the best so far (most of them): brute force skips those, whether sample-connected or not,
+/// as it would after the full test. The decision is compare()'s own: missing samples counted as energy() counts
+/// them, then on equal counts the certified double sum of the supports on only one of the two boundaries
+/// (DoubleCombination, the same terms added in the same order as compare() adds them, after a plain-double sum
+/// that implies its verdict when it is clear); anything it does not prove Greater goes to the full test.
+class GreaterScreen {
+ public:
+  explicit GreaterScreen(const Problem& problem) : problem_(problem) {
+    const Complex& c = problem.complex();
+    for (const SupportTerm& s : problem.supports())
+      for (int p : s.patches)
+        if (!c.patches[p].samples.empty())
+          sampled_.push_back({s.cell_a, s.cell_b, c.patches[p].inside_cell,
+                              static_cast<long>(c.patches[p].samples.size())});
+  }
+  /// The new best labelling (compare() found it Less than the previous one, or it is the first).
+  void set_best(const std::vector<signed char>& label) {
+    best_missing_ = missing(label);
+    boundary(label, best_supports_);
+    have_best_ = true;
+  }
+  /// True when compare(energy(label), best) is Greater.
+  bool greater(const std::vector<signed char>& label) {
+    if (!have_best_) return false;
+    const long m = missing(label);
+    if (m != best_missing_) return m > best_missing_;
+    boundary(label, supports_);
+    // First in plain doubles: the terms DoubleCombination would add (lo of a support only on this boundary, -hi
+    // of one only on the best), summed in round-to-nearest. When that sum exceeds 4 (n + 1) 2^-52 times the sum
+    // of the terms' magnitudes, the outward-rounded sum of the same n terms (error at most about n 2^-52 times
+    // that, and the nearest sum's at most n 2^-53) has a positive lower end too: Greater, no rounding-mode switch.
+    double sum = 0, magnitude = 0;
+    long terms = 0;
+    for_each_difference(supports_, best_supports_, [&](int g, int k) {
+      const auto& e = problem_.support_enclosures()[g];
+      const double x = k > 0 ? e.first : -e.second;
+      sum += x;
+      magnitude += std::fabs(x);
+      ++terms;
+    });
+    if (std::isfinite(magnitude) && sum > 4 * static_cast<double>(terms + 1) * DBL_EPSILON * magnitude) return true;
+    DoubleCombination bounds;  // undecided in doubles: exactly compare()'s first test
+    for_each_difference(supports_, best_supports_, [&](int g, int k) {
+      const auto& e = problem_.support_enclosures()[g];
+      bounds.add(k, DoubleBounds{e.first, e.second});
+    });
+    return bounds.bounds().certain_sign() > 0;
+  }
+
+ private:
+  struct SampledPatch {
+    int cell_a, cell_b, inside_cell;
+    long samples;
+  };
+  // Samples not covered: those of patches off b or on b reversed, as energy() counts them.
+  long missing(const std::vector<signed char>& label) const {
+    long m = problem_.total_samples();
+    for (const SampledPatch& p : sampled_)
+      if (label[p.cell_a] != label[p.cell_b] && label[p.inside_cell]) m -= p.samples;
+    return m;
+  }
+  // The supports on the boundary of `label`, ascending (boundary_supports without a Labelling copy).
+  void boundary(const std::vector<signed char>& label, std::vector<int>& out) const {
+    out.clear();
+    for (int g = 0; g < problem_.support_count(); ++g) {
+      const SupportTerm& s = problem_.supports()[g];
+      if (label[s.cell_a] != label[s.cell_b]) out.push_back(g);
+    }
+  }
+
+  const Problem& problem_;
+  std::vector<SampledPatch> sampled_;
+  bool have_best_ = false;
+  long best_missing_ = 0;
+  std::vector<int> best_supports_, supports_;
 };
 
 /// Refuses before the real enumeration when there are more than `limit` labellings: at once when 2^k > limit for
@@ -643,8 +729,10 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, const Br
   Enumerator enumerate(problem, g, options);
   BruteForceResult result;
   bool have_best = false;
+  GreaterScreen screen(problem);
   auto leaf = [&](const std::vector<signed char>& label) {
     ++result.enumerated;
+    if (screen.greater(label)) return;  // compare() would say Greater: skipped, sample-connected or not
     Labelling l(label.begin(), label.end());
     if (connectivity && !sample_connectivity(problem, l).sample_connected()) return;
     Energy e = energy(problem, l);
@@ -652,6 +740,7 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, const Br
       have_best = true;
       result.energy = e;
       result.optimal = {l};
+      screen.set_best(label);
       return;
     }
     const Order o = bsh::compare(e, result.energy, options.compare);
@@ -659,6 +748,7 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, const Br
       result.energy = e;
       result.optimal = {l};
       result.certified = true;
+      screen.set_best(label);
     } else if (o == Order::Equal || o == Order::Tie) {
       if (o == Order::Tie) result.certified = false;
       result.optimal.push_back(l);

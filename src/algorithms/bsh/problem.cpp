@@ -1,5 +1,6 @@
 #include <hsx/algorithms/bsh/problem.hpp>
 
+#include "algorithms/bsh/support_lists.hpp"
 #include "geometry/components.hpp"
 
 #include <algorithm>
@@ -35,22 +36,6 @@ const Measure& Energy::measure() const {
 }
 
 namespace {
-
-/// Calls f(g, +1) for each support g only in `a` and f(g, -1) for each only in `b` (both ascending), in order.
-template <class F>
-void for_each_difference(const std::vector<int>& a, const std::vector<int>& b, F f) {
-  std::size_t i = 0, j = 0;
-  while (i < a.size() || j < b.size()) {
-    if (j == b.size() || (i < a.size() && a[i] < b[j])) {
-      f(a[i++], 1);
-    } else if (i == a.size() || b[j] < a[i]) {
-      f(b[j++], -1);
-    } else {
-      ++i;
-      ++j;
-    }
-  }
-}
 
 /// Sign of |a| - |b| for two support lists of one problem: the supports in only one of them, enclosed by the
 /// kernel's certified double combination, then summed exactly when that does not decide. nullopt: not separated.

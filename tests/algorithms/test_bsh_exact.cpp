@@ -82,6 +82,7 @@ void check_exact_against_oracle(const Problem& problem) {
   RC_CLASSIFY(bf.optimal.size() > 1u, "tie");
   RC_CLASSIFY(!problem.non_generic_junctions().empty(), "non-generic");
   RC_CLASSIFY(r.stats.pruned_by_islands > 0, "island pruning");
+  RC_CLASSIFY(r.stats.island_branches > 0, "island branching");
 }
 
 }  // namespace

@@ -519,7 +519,8 @@ class ExactSearch {
   /// there). It is queued last, so it is expanded first on equal bounds.
   void branch(const Node& node) {
     const SampleConnectivity& connectivity = connectivity_of(*node.candidate);
-    if (!connectivity.islands.empty()) return branch_on_island(node, connectivity);
+    if (!connectivity.islands.empty() && options_.exact_branching == ExactBranching::Islands)
+      return branch_on_island(node, connectivity);
     const int cell = branch_cell(node);
     const signed char keep = node.candidate->cut.labelling[cell];
     for (signed char value : {static_cast<signed char>(1 - keep), keep}) {
@@ -535,6 +536,7 @@ class ExactSearch {
   /// f_j on. What is left (I on, F off) has an island: no admissible labelling. Each child excludes the candidate.
   /// The island with the fewest children is taken.
   void branch_on_island(const Node& node, const SampleConnectivity& connectivity) {
+    ++stats_.island_branches;
     std::vector<int> island, frontier;
     for (int k : connectivity.islands) {
       std::vector<int> patches = connectivity.components[k].patches;
@@ -569,9 +571,16 @@ class ExactSearch {
     return implications_.assign(labels, islands_.inside(p), 1) && implications_.assign(labels, islands_.outside(p), 0);
   }
 
-  /// An undecided cell of a boundary support of the candidate, else the first undecided cell.
+  /// An undecided cell of a patch of the candidate's first island (ExactBranching::Cells), else of a boundary
+  /// support, else the first.
   int branch_cell(const Node& node) {
+    const Complex& c = problem_.complex();
     const Candidate& candidate = *node.candidate;
+    const SampleConnectivity& connectivity = connectivity_of(*node.candidate);
+    for (int island : connectivity.islands)
+      for (int p : connectivity.components[island].patches)
+        for (int cell : {c.patches[p].inside_cell, c.patches[p].outside_cell})
+          if (node.labels[cell] < 0) return cell;
     for (int g : boundary_supports(problem_, candidate.cut.labelling))
       for (int cell : {problem_.supports()[g].cell_a, problem_.supports()[g].cell_b})
         if (node.labels[cell] < 0) return cell;

@@ -462,23 +462,29 @@ void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& r
   row.notes = {verdict(cut), verdict(cold_cut), cut.labelling == cold_cut.labelling ? "yes" : "NO"};
 }
 
+/// Random scene `index` of seed 1 under `settings`, arranged within the limits; names `row` ("random H #index") and
+/// marks it skipped (nullopt) when the limits refuse the scene.
+std::optional<Arranged2> arrange_random(const RandomSceneSettings& settings, int index, const BenchOptions& o,
+                                        BenchRow& row) {
+  row.input = "random " + std::to_string(settings.max_halfspaces) + " #" + std::to_string(index);
+  try {
+    return arrange(random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene, o.limits);
+  } catch (const InputError& e) {
+    row.skipped = e.what();
+    return std::nullopt;
+  }
+}
+
 /// Random scene `index` of `halfspaces` halfspaces (seed 1, up to 3 samples per halfspace): its cut, timed.
 BenchRow bench_cut(int halfspaces, int index, const BenchOptions& o, const RepeatOptions& repeat) {
   RandomSceneSettings settings;
   settings.min_halfspaces = settings.max_halfspaces = halfspaces;
   settings.max_samples = 3;
   BenchRow row;
-  row.input = "random " + std::to_string(halfspaces) + " #" + std::to_string(index);
-  const Scene2 scene = random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene;
-  Arranged2 arranged;
-  try {
-    arranged = arrange(scene, o.limits);
-  } catch (const InputError& e) {
-    row.skipped = e.what();
-    return row;
-  }
-  const bsh::Problem problem(arranged.complex);
-  time_cuts(problem, static_cast<long>(arranged.complex.patches.size()), repeat, row);
+  const std::optional<Arranged2> arranged = arrange_random(settings, index, o, row);
+  if (!arranged) return row;
+  const bsh::Problem problem(arranged->complex);
+  time_cuts(problem, static_cast<long>(arranged->complex.patches.size()), repeat, row);
   return row;
 }
 
@@ -553,17 +559,10 @@ BenchRow bench_exact_scene(int halfspaces, int index, bool with_best_first, cons
   settings.min_samples_per_halfspace = 1;
   settings.max_samples_per_halfspace = 3;
   BenchRow row;
-  row.input = "random " + std::to_string(halfspaces) + " #" + std::to_string(index);
-  const Scene2 scene = random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene;
-  Arranged2 arranged;
-  try {
-    arranged = arrange(scene, o.limits);
-  } catch (const InputError& e) {
-    row.skipped = e.what();
-    return row;
-  }
-  const bsh::Problem problem(arranged.complex);
-  row.sizes = {problem.cell_count(), static_cast<long>(arranged.complex.patches.size()), problem.total_samples()};
+  const std::optional<Arranged2> arranged = arrange_random(settings, index, o, row);
+  if (!arranged) return row;
+  const bsh::Problem problem(arranged->complex);
+  row.sizes = {problem.cell_count(), static_cast<long>(arranged->complex.patches.size()), problem.total_samples()};
   bsh::ExtractOptions options;
   options.time_limit = o.time_limit;
   options.method = bsh::Method::Exact;

@@ -42,8 +42,12 @@ ExtractResult exact(const Problem& problem, int max_ties = kManyTies,
   return extract(problem, o);
 }
 
-/// The two branchings give the same optimum (up to unseparated ties) and, when ties are proven, the same ties.
-void check_branchings_agree(const Problem& problem, const ExtractResult& islands, const ExtractResult& cells) {
+/// On `scene`, the two branchings give the same optimum (up to unseparated ties) and, when ties are proven, the
+/// same ties.
+void check_branchings_agree(const Scene2& scene) {
+  const Complex complex = arrange(scene).complex;
+  const Problem problem(complex);
+  const ExtractResult islands = exact(problem), cells = exact(problem, kManyTies, ExactBranching::Cells);
   RC_ASSERT(islands.optimal);
   RC_ASSERT(cells.optimal);
   const Order o = compare(islands.energy, cells.energy);
@@ -178,19 +182,11 @@ TEST_CASE("exact property 2: exact = best-first where best-first is proven (medi
 
 TEST_CASE("exact property 3: branching on islands = branching on cells on larger scenes (energy, ties)",
           "[bsh][exact][property]") {
-  rc::prop("random scenes, every degeneracy kind", [] {
-    const Scene2 scene = *gen_scene(small_scenes(10));
-    const Complex complex = arrange(scene).complex;
-    const Problem problem(complex);
-    check_branchings_agree(problem, exact(problem), exact(problem, kManyTies, ExactBranching::Cells));
-  });
+  rc::prop("random scenes, every degeneracy kind", [] { check_branchings_agree(*gen_scene(small_scenes(10))); });
   rc::prop("concurrent lines and shared edges", [] {
-    SceneGenOptions o = small_scenes(10, {Degeneracy::ConcurrentLines, Degeneracy::PolygonsSharingEdge,
-                                          Degeneracy::HalfplaneOnPolygonEdge, Degeneracy::LineTangentToDisk});
-    const Scene2 scene = *gen_scene(o);
-    const Complex complex = arrange(scene).complex;
-    const Problem problem(complex);
-    check_branchings_agree(problem, exact(problem), exact(problem, kManyTies, ExactBranching::Cells));
+    check_branchings_agree(*gen_scene(small_scenes(10, {Degeneracy::ConcurrentLines, Degeneracy::PolygonsSharingEdge,
+                                                        Degeneracy::HalfplaneOnPolygonEdge,
+                                                        Degeneracy::LineTangentToDisk})));
   });
 }
 

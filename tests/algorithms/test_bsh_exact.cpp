@@ -190,7 +190,7 @@ TEST_CASE("exact property 3: branching on islands = branching on cells on larger
   });
 }
 
-TEST_CASE("exact: hsx bench --exact's scenes of 12 halfspaces branch on islands, with the oracle's optimum",
+TEST_CASE("exact: hsx bench --exact's scenes of 12 halfspaces branch on islands and agree with branching on cells",
           "[bsh][exact]") {
   // Deterministic scenes (random_scene, seed 1, 1 to 3 samples per halfspace) on which the candidate has islands.
   RandomSceneSettings settings;

@@ -193,10 +193,7 @@ TEST_CASE("exact property 3: branching on islands = branching on cells on larger
 TEST_CASE("exact: hsx bench --exact's scenes of 12 halfspaces branch on islands and agree with branching on cells",
           "[bsh][exact]") {
   // Deterministic scenes (random_scene, seed 1, 1 to 3 samples per halfspace) on which the candidate has islands.
-  RandomSceneSettings settings;
-  settings.min_halfspaces = settings.max_halfspaces = 12;
-  settings.min_samples_per_halfspace = 1;
-  settings.max_samples_per_halfspace = 3;
+  const RandomSceneSettings settings = per_halfspace_sampled(12);
   long island_branches = 0;
   for (std::uint64_t index = 0; index < 4; ++index) {
     INFO("scene " << index);

@@ -281,10 +281,7 @@ TEST_CASE("random_scene: settings respected", "[random_scene]") {
 }
 
 TEST_CASE("random_scene: samples per halfspace (hsx bench --exact's scenes)", "[random_scene]") {
-  RandomSceneSettings s;
-  s.min_halfspaces = s.max_halfspaces = 8;
-  s.min_samples_per_halfspace = 1;
-  s.max_samples_per_halfspace = 3;
+  RandomSceneSettings s = test::per_halfspace_sampled(8);
   int with_samples = 0;
   for (std::uint64_t index = 0; index < 20; ++index) {
     const Scene2 scene = random_scene(s, 5, index).scene;

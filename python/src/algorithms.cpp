@@ -142,6 +142,7 @@ py::dict stats_dict(const bsh::SearchStats& s) {
   d["nodes_created"] = s.nodes_created;
   d["pruned_by_bound"] = s.pruned_by_bound;
   d["pruned_by_islands"] = s.pruned_by_islands;
+  d["island_branches"] = s.island_branches;
   d["certified_bounds"] = s.certified_bounds;
   d["lower_bound"] = bound_dict(s.lower_bound);
   d["gap"] = bound_dict(s.gap);

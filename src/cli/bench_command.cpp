@@ -1,7 +1,8 @@
 // hsx bench [DIR...]: every method on every scene, each timed repeatedly (kernel/timing.hpp), reported as medians
 // with their spread and as ratios of medians to the graph cut, side by side in one run; with --meshes, NH-Rep's
 // stages on meshes, as ratios to reading the mesh; with --3d, the exact 3D arrangement beside CGAL's Nef polyhedra;
-// with --bsh-example, the BSH authors' examples end to end beside their own figures.
+// with --bsh-example, the BSH authors' examples end to end beside their own figures; with --exact, --method exact
+// on random scenes of growing size (issue 11's goals).
 // --csv and --json write the same figures.
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/algorithms/bsh/graph_cut.hpp>
@@ -75,6 +76,10 @@ struct BenchOptions {
   bool brute = false;               ///< brute-force mode: labellings per second of the oracle
   std::vector<int> brute_halfspaces{8, 10, 12, 14};  ///< brute-force mode: random scenes of these sizes
   int brute_scenes = 3;             ///< brute-force mode: scenes per size
+  bool exact = false;               ///< exact mode: --method exact on random scenes (issue 11's goal table)
+  std::vector<int> exact_halfspaces{8, 10, 12, 16, 20, 24, 30};  ///< exact mode: the scenes' sizes
+  int exact_scenes = 20;            ///< exact mode: random scenes per size
+  int exact_best_first_up_to = 12;  ///< exact mode: best-first beside exact up to this many halfspaces
   long brute_force_limit = 200000;
   double time_limit = 60;
   int repetitions = 5;
@@ -475,23 +480,29 @@ void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& r
   row.notes = {verdict(cut), verdict(cold_cut), cut.labelling == cold_cut.labelling ? "yes" : "NO"};
 }
 
+/// Random scene `index` of seed 1 under `settings`, arranged within the limits; names `row` ("random H #index") and
+/// marks it skipped (nullopt) when the limits refuse the scene.
+std::optional<Arranged2> arrange_random(const RandomSceneSettings& settings, int index, const BenchOptions& o,
+                                        BenchRow& row) {
+  row.input = "random " + std::to_string(settings.max_halfspaces) + " #" + std::to_string(index);
+  try {
+    return arrange(random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene, o.limits);
+  } catch (const InputError& e) {
+    row.skipped = e.what();
+    return std::nullopt;
+  }
+}
+
 /// Random scene `index` of `halfspaces` halfspaces (seed 1, up to 3 samples per halfspace): its cut, timed.
 BenchRow bench_cut(int halfspaces, int index, const BenchOptions& o, const RepeatOptions& repeat) {
   RandomSceneSettings settings;
   settings.min_halfspaces = settings.max_halfspaces = halfspaces;
   settings.max_samples = 3;
   BenchRow row;
-  row.input = "random " + std::to_string(halfspaces) + " #" + std::to_string(index);
-  const Scene2 scene = random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene;
-  Arranged2 arranged;
-  try {
-    arranged = arrange(scene, o.limits);
-  } catch (const InputError& e) {
-    row.skipped = e.what();
-    return row;
-  }
-  const bsh::Problem problem(arranged.complex);
-  time_cuts(problem, static_cast<long>(arranged.complex.patches.size()), repeat, row);
+  const std::optional<Arranged2> arranged = arrange_random(settings, index, o, row);
+  if (!arranged) return row;
+  const bsh::Problem problem(arranged->complex);
+  time_cuts(problem, static_cast<long>(arranged->complex.patches.size()), repeat, row);
   return row;
 }
 
@@ -527,6 +538,146 @@ void run_cut_bench(const BenchOptions& o, OutputFiles& files) {
                                                                " given input(s)") +
                    "; ratios to the double Boykov-Kolmogorov "
                    "max flow on the same graph, each built from the problem inside the timing"};
+  publish(report, o, files);
+}
+
+// ---- the exact method on random scenes (issue 11's goal table) ----
+// Random 2D scenes (half-planes, disks, polygons; random_scene's default settings with 1 to 3 samples per
+// halfspace, seed 1, scene k = index k) of each size; `--method exact` timed on each, best-first beside it on the
+// small sizes, and per size the distribution the goals speak of.
+
+/// What one scene's row says, for the per-size summary.
+struct ExactSceneFigures {
+  int halfspaces = 0;
+  long cells = 0;
+  bool exact_proven = false, best_first_proven = false;
+  double exact_seconds = 0, best_first_seconds = 0;
+  long nodes = 0;
+};
+
+/// Runs `method` on `problem` once (timed); when that run took less than --min-time and was not stopped, the
+/// median of repeated runs replaces it. `result` gets the first run's result.
+StageResult time_search(const bsh::Problem& problem, bsh::ExtractOptions options, const RepeatOptions& repeat,
+                        bsh::ExtractResult& result) {
+  StageResult stage;
+  stage.timing = time_repeatedly([&] { result = bsh::extract(problem, options); }, RepeatOptions{1, 0, 1, {}});
+  if (result.stopped_by.empty() && stage.timing->median < repeat.min_seconds)
+    stage.timing = time_repeatedly([&] { bsh::extract(problem, options); }, repeat);
+  return stage;
+}
+
+/// Random scene `index` of `halfspaces` halfspaces: exact, and best-first when `with_best_first`.
+BenchRow bench_exact_scene(int halfspaces, int index, bool with_best_first, const BenchOptions& o,
+                           const RepeatOptions& repeat, ExactSceneFigures& figures) {
+  RandomSceneSettings settings;
+  settings.min_halfspaces = settings.max_halfspaces = halfspaces;
+  settings.min_samples_per_halfspace = 1;
+  settings.max_samples_per_halfspace = 3;
+  BenchRow row;
+  const std::optional<Arranged2> arranged = arrange_random(settings, index, o, row);
+  if (!arranged) return row;
+  const bsh::Problem problem(arranged->complex);
+  row.sizes = {problem.cell_count(), static_cast<long>(arranged->complex.patches.size()), problem.total_samples()};
+  bsh::ExtractOptions options;
+  options.time_limit = o.time_limit;
+  options.method = bsh::Method::Exact;
+  bsh::ExtractResult exact, best_first;
+  row.stages.push_back(time_search(problem, options, repeat, exact));
+  figures = {halfspaces, problem.cell_count(), exact.optimal, false, row.stages[0].timing->median, 0, exact.stats.nodes};
+  std::string agree = "-";
+  if (with_best_first) {
+    options.method = bsh::Method::BestFirst;
+    row.stages.push_back(time_search(problem, options, repeat, best_first));
+    figures.best_first_proven = best_first.optimal && best_first.stopped_by.empty();
+    figures.best_first_seconds = row.stages[1].timing->median;
+    if (figures.best_first_proven && exact.optimal)
+      agree = bsh::compare(exact.energy, best_first.energy) == Order::Greater ||
+                      bsh::compare(exact.energy, best_first.energy) == Order::Less
+                  ? "DIFFERENT"
+                  : "same";
+  } else {
+    StageResult skipped;
+    skipped.status = "not run";
+    row.stages.push_back(skipped);
+  }
+  const auto verdict = [](const bsh::ExtractResult& r) { return r.optimal ? std::string("proven") : r.stopped_by; };
+  row.notes = {std::to_string(exact.stats.nodes), verdict(exact),
+               with_best_first ? verdict(best_first) : std::string("-"), agree};
+  return row;
+}
+
+/// The median of `values` (sorted copy; 0 when empty).
+double median_of(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+/// One footer line per size: cells, exact proven / median / max time / nodes, best-first proven, speed-up.
+std::vector<std::string> exact_summary(const std::vector<ExactSceneFigures>& scenes, const std::vector<int>& sizes,
+                                       double time_limit) {
+  std::vector<std::string> lines;
+  for (int h : sizes) {
+    std::vector<double> cells, times, nodes, speedups;
+    int proven = 0, best_first = 0, count = 0;
+    double worst = 0;
+    for (const ExactSceneFigures& f : scenes) {
+      if (f.halfspaces != h) continue;
+      ++count;
+      cells.push_back(static_cast<double>(f.cells));
+      times.push_back(f.exact_seconds);
+      nodes.push_back(static_cast<double>(f.nodes));
+      worst = std::max(worst, f.exact_seconds);
+      proven += f.exact_proven;
+      best_first += f.best_first_proven;
+      if (f.exact_proven && f.best_first_proven) speedups.push_back(f.best_first_seconds / f.exact_seconds);
+    }
+    std::ostringstream line;
+    line << h << " halfspaces: " << count << " scenes, cells median " << median_of(cells) << "; exact proven "
+         << proven << "/" << count << ", median " << seconds_text(median_of(times)) << ", max "
+         << (proven < count ? "> " + seconds_text(time_limit) + " (stopped)" : seconds_text(worst))
+         << ", nodes median " << median_of(nodes);
+    if (!speedups.empty())
+      line << "; best-first proven " << best_first << "/" << count << ", speed-up median "
+           << printf_string("%.0fx", median_of(speedups)) << " (min "
+           << printf_string("%.0fx", *std::min_element(speedups.begin(), speedups.end())) << ")";
+    lines.push_back(line.str());
+  }
+  double small_worst = 0;
+  int small = 0;
+  for (const ExactSceneFigures& f : scenes)
+    if (f.cells <= 60) ++small, small_worst = std::max(small_worst, f.exact_proven ? f.exact_seconds : time_limit);
+  lines.push_back(std::to_string(small) + " scenes of <= 60 cells: exact's slowest " + seconds_text(small_worst));
+  return lines;
+}
+
+/// Exact mode: `--method exact` on random scenes of each size (best-first beside it up to
+/// --exact-best-first-up-to halfspaces), each within --time-limit; ratio: best-first over exact.
+void run_exact_bench(const BenchOptions& o, OutputFiles& files) {
+  if (o.exact_scenes < 1) throw InputError("--exact-scenes: must be at least 1");
+  for (int h : o.exact_halfspaces)
+    if (h < 1) throw InputError("--exact-halfspaces: every size must be at least 1");
+  Report report;
+  report.mode = "exact";
+  report.input_name = "scene";
+  report.size_names = {"cells", "patches", "samples"};
+  report.stage_names = {"exact", "best-first"};
+  report.with_ratio = {0, 1};
+  report.reference = 0;
+  report.note_names = {"nodes", "exact", "best-first", "energies"};
+  report.repeat = repeat_options(o);
+  std::vector<ExactSceneFigures> figures;
+  for (int h : o.exact_halfspaces)
+    for (int k = 0; k < o.exact_scenes; ++k) {
+      ExactSceneFigures f;
+      report.rows.push_back(bench_exact_scene(h, k, h <= o.exact_best_first_up_to, o, report.repeat, f));
+      if (report.rows.back().skipped.empty()) figures.push_back(f);
+    }
+  report.footer = exact_summary(figures, o.exact_halfspaces, o.time_limit);
+  report.footer.push_back("random scenes: seed 1, scene k = index k, 1 to 3 samples per halfspace; each search "
+                          "within --time-limit " + seconds_text(o.time_limit) +
+                          "; a run under --min-time is repeated; energies: exact's against best-first's where both are proven");
   publish(report, o, files);
 }
 
@@ -1120,11 +1271,26 @@ void add_bench_command(CLI::App& app) {
                   "figures, instead (a folder without config.json is reported as skipped)");
   cmd->add_flag("--campaign", o->campaign,
                 "time hsx campaign's runner (every check) on 1 and 2 threads, scenes per second, instead");
+  cmd->add_flag("--exact", o->exact,
+                "time --method exact on random 2D scenes of each size (1 to 3 samples per halfspace), best-first "
+                "beside it on the small ones, and summarise each size (issue 11's goals), instead");
+  const std::vector<CLI::Option*> only_exact = {
+      cmd->add_option("--exact-halfspaces", o->exact_halfspaces,
+                      "--exact: the scenes' sizes (default 8,10,12,16,20,24,30)")
+          ->delimiter(','),
+      cmd->add_option("--exact-scenes", o->exact_scenes, "--exact: random scenes per size (default 20)"),
+      cmd->add_option("--exact-best-first-up-to", o->exact_best_first_up_to,
+                      "--exact: run best-first too on scenes of at most this many halfspaces (default 12; 0: never)")};
   const std::vector<CLI::Option*> only_arrange = add_arrange_bench_options(cmd, *o);
   const std::vector<CLI::Option*> only_brute = add_brute_bench_options(cmd, *o);
   add_arrangement_limits(cmd, o->limits);
-  cmd->callback([o, dirs, brute_force, time_limit, only_3d, only_campaign, only_arrange, only_brute] {
+  cmd->callback([o, dirs, brute_force, time_limit, only_3d, only_campaign, only_exact, only_arrange, only_brute] {
     check_arrange_and_brute_options(*o, {dirs, brute_force, time_limit}, only_arrange, only_brute);
+    for (CLI::Option* option : only_exact)
+      if (!o->exact && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --exact");
+    if (o->exact)
+      for (CLI::Option* option : {dirs, brute_force})
+        if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --exact");
     for (CLI::Option* option : only_campaign)
       if (!o->campaign && option->count() > 0) throw InputError("bench: " + option->get_name() + " needs --campaign");
     for (CLI::Option* option : only_3d)
@@ -1137,9 +1303,9 @@ void add_bench_command(CLI::App& app) {
     files.expect(o->json_path, "--json");
     const bool examples = !o->bsh_examples.empty();
     if (int(o->cuts) + int(o->three_d) + int(!o->meshes.empty()) + int(o->campaign) + int(examples) +
-            int(o->arrange) + int(o->brute) > 1)
+            int(o->arrange) + int(o->brute) + int(o->exact) > 1)
       throw InputError(
-          "bench: --cuts, --3d, --meshes, --campaign, --bsh-example, --arrange and --brute exclude each other");
+          "bench: --cuts, --3d, --meshes, --campaign, --bsh-example, --exact, --arrange and --brute exclude each other");
     if (examples)
       for (CLI::Option* option : {dirs, brute_force})
         if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --bsh-example");
@@ -1147,7 +1313,9 @@ void add_bench_command(CLI::App& app) {
       for (CLI::Option* option : {dirs, brute_force, time_limit})
         if (option->count() > 0) throw InputError("bench: " + option->get_name() + " does not apply to --campaign");
     if (!o->cuts && !o->cut_inputs.empty()) throw InputError("bench: --cut-inputs needs --cuts");
-    if (o->arrange)
+    if (o->exact)
+      run_exact_bench(*o, files);
+    else if (o->arrange)
       run_arrange_bench(*o, files);
     else if (o->brute)
       run_brute_bench(*o, files);

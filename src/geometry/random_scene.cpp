@@ -67,6 +67,9 @@ void check_settings(const RandomSceneSettings& s) {
   for (int w : s.degeneracy_weight)
     if (w < 0) fail("degeneracy weights must be >= 0");
   if (s.max_samples < 0) fail("max_samples must be >= 0");
+  if (s.max_samples_per_halfspace > 0 && (s.min_samples_per_halfspace < 0 || s.max_samples > 0 ||
+                                          s.min_samples_per_halfspace > s.max_samples_per_halfspace))
+    fail("need 0 <= min_samples_per_halfspace <= max_samples_per_halfspace, and max_samples = 0 with them");
   if (s.complement_percent < 0 || s.complement_percent > 100 || s.near_percent < 0 || s.near_percent > 100)
     fail("percentages must be in [0, 100]");
 }
@@ -348,30 +351,47 @@ std::vector<PointQ2> sample_candidates(const Scene2& scene, const Arrangement2& 
   return out;
 }
 
-/// Step 6: samples on patches of the sample-free arrangement.
+/// One sample of halfspace i at the candidate p: `at`, or `near` (an off-boundary point snapping exactly to p).
+Sample2 draw_sample(const RandomSceneSettings& s, Random& rng, const Scene2& scene, int i, const PointQ2& p) {
+  const Halfspace2& h = scene.halfspaces[static_cast<std::size_t>(i)];
+  Sample2 sample;
+  sample.halfspace = i;
+  sample.given = p;
+  if (h.kind != HalfspaceKind2::Polygon && rng.percent(s.near_percent)) {
+    sample.snapped = true;
+    if (h.kind == HalfspaceKind2::Halfplane)
+      sample.given = canonical(add(p, scale(h.normal, rng.pick(std::vector<Rational>{frac(1, 2), Rational(-1), Rational(1)}))));
+    else
+      sample.given = canonical(add(h.center, scale(sub(p, h.center), rng.pick(std::vector<Rational>{frac(1, 2), Rational(2)}))));
+  }
+  return sample;
+}
+
+/// Step 6: samples on patches of the sample-free arrangement (in all, or per halfspace).
 void add_samples(const RandomSceneSettings& s, Random& rng, Scene2& scene) {
   const Arrangement2 arr = Arrangement2::build(scene);
-  std::vector<std::pair<int, PointQ2>> fitting;
+  std::vector<std::vector<PointQ2>> fitting(scene.halfspaces.size());
+  std::vector<std::pair<int, PointQ2>> all;
   for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i)
     for (const PointQ2& p : sample_candidates(scene, arr, i))
-      if (sample_fits(arr, i, p)) fitting.emplace_back(i, p);
-  if (fitting.empty()) return;
-  const long count = rng.in(0, s.max_samples);
-  for (long k = 0; k < count; ++k) {
-    const auto& [i, p] = rng.pick(fitting);
-    const Halfspace2& h = scene.halfspaces[static_cast<std::size_t>(i)];
-    Sample2 sample;
-    sample.halfspace = i;
-    sample.given = p;
-    if (h.kind != HalfspaceKind2::Polygon && rng.percent(s.near_percent)) {
-      // A point off the boundary whose nearest boundary point is exactly p.
-      sample.snapped = true;
-      if (h.kind == HalfspaceKind2::Halfplane)
-        sample.given = canonical(add(p, scale(h.normal, rng.pick(std::vector<Rational>{frac(1, 2), Rational(-1), Rational(1)}))));
-      else
-        sample.given = canonical(add(h.center, scale(sub(p, h.center), rng.pick(std::vector<Rational>{frac(1, 2), Rational(2)}))));
+      if (sample_fits(arr, i, p)) {
+        fitting[static_cast<std::size_t>(i)].push_back(p);
+        all.emplace_back(i, p);
+      }
+  if (all.empty()) return;
+  if (s.max_samples_per_halfspace > 0) {
+    for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
+      const auto& mine = fitting[static_cast<std::size_t>(i)];
+      if (mine.empty()) continue;
+      const long count = rng.in(s.min_samples_per_halfspace, s.max_samples_per_halfspace);
+      for (long k = 0; k < count; ++k) scene.samples.push_back(draw_sample(s, rng, scene, i, rng.pick(mine)));
     }
-    scene.samples.push_back(sample);
+  } else {
+    const long count = rng.in(0, s.max_samples);
+    for (long k = 0; k < count; ++k) {
+      const auto& [i, p] = rng.pick(all);
+      scene.samples.push_back(draw_sample(s, rng, scene, i, p));
+    }
   }
   validate_and_resolve(scene);
 }
@@ -444,7 +464,7 @@ RandomScene random_scene(const RandomSceneSettings& s, Random& rng) {
     }
   while (b.count() < s.min_halfspaces) b.random_halfspace();
   out.scene = b.finish_geometry();
-  if (s.max_samples > 0) add_samples(s, rng, out.scene);
+  if (s.max_samples > 0 || s.max_samples_per_halfspace > 0) add_samples(s, rng, out.scene);
   return out;
 }
 

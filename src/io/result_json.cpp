@@ -205,6 +205,7 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
                                  {"nodes_created", r.stats.nodes_created},
                                  {"pruned_by_bound", r.stats.pruned_by_bound},
                                  {"pruned_by_islands", r.stats.pruned_by_islands},
+                                 {"island_branches", r.stats.island_branches},
                                  {"certified_bounds", r.stats.certified_bounds},
                                  {"lower_bound", bound(r.stats.lower_bound)},
                                  {"gap", bound(r.stats.gap)},

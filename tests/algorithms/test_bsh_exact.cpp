@@ -5,6 +5,7 @@
 #include <hsx/algorithms/bsh/exact.hpp>
 #include <hsx/algorithms/bsh/extract.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include <hsx/geometry/random_scene.hpp>
 #include <hsx/io/scene_json.hpp>
 #include "support/random_scenes.hpp"
 
@@ -28,11 +29,38 @@ namespace {
 constexpr long kOracleLimit = 20000;
 constexpr int kManyTies = 100000;  ///< max_ties large enough that no small scene reaches it
 
-ExtractResult exact(const Problem& problem, int max_ties = kManyTies) {
+bool contains(const std::vector<Labelling>& list, const Labelling& l) {
+  return std::find(list.begin(), list.end(), l) != list.end();
+}
+
+ExtractResult exact(const Problem& problem, int max_ties = kManyTies,
+                    ExactBranching branching = ExactBranching::Islands) {
   ExtractOptions o;
   o.method = Method::Exact;
   o.max_ties = max_ties;
+  o.exact_branching = branching;
   return extract(problem, o);
+}
+
+/// On `scene`, the two branchings give the same optimum (up to unseparated ties) and, when ties are proven, the
+/// same ties.
+void check_branchings_agree(const Scene2& scene) {
+  const Complex complex = arrange(scene).complex;
+  const Problem problem(complex);
+  const ExtractResult islands = exact(problem), cells = exact(problem, kManyTies, ExactBranching::Cells);
+  RC_ASSERT(islands.optimal);
+  RC_ASSERT(cells.optimal);
+  const Order o = compare(islands.energy, cells.energy);
+  RC_ASSERT(o != Order::Less);
+  RC_ASSERT(o != Order::Greater);
+  if (islands.ties.certified && cells.ties.certified) {
+    RC_ASSERT(o == Order::Equal);
+    RC_ASSERT(islands.ties.count == cells.ties.count);
+    RC_ASSERT(islands.labelling == cells.labelling || contains(cells.tied, islands.labelling));
+  }
+  RC_ASSERT(cells.stats.island_branches == 0);
+  RC_CLASSIFY(islands.stats.island_branches > 0, "island branching");
+  RC_CLASSIFY(problem.cell_count() > 60, "more than 60 cells");
 }
 
 /// Small random scenes with every degeneracy kind (coincident boundaries, tangencies, concurrent lines, ...).
@@ -45,10 +73,6 @@ SceneGenOptions small_scenes(int max_halfspaces, std::vector<Degeneracy> degener
   o.samples = true;
   o.max_samples = 2 * max_halfspaces + 1;
   return o;
-}
-
-bool contains(const std::vector<Labelling>& list, const Labelling& l) {
-  return std::find(list.begin(), list.end(), l) != list.end();
 }
 
 /// Exact against the oracle: the same energy (Tie only when the oracle itself did not separate), a labelling
@@ -82,6 +106,11 @@ void check_exact_against_oracle(const Problem& problem) {
   RC_CLASSIFY(bf.optimal.size() > 1u, "tie");
   RC_CLASSIFY(!problem.non_generic_junctions().empty(), "non-generic");
   RC_CLASSIFY(r.stats.pruned_by_islands > 0, "island pruning");
+  RC_CLASSIFY(r.stats.island_branches > 0, "island branching");
+  // The earlier rule (one cell at a time) finds the same optima: the oracle's.
+  const ExtractResult cells = exact(problem, kManyTies, ExactBranching::Cells);
+  RC_ASSERT(contains(bf.optimal, cells.labelling));
+  if (bf.certified && cells.ties.certified) RC_ASSERT(static_cast<std::size_t>(cells.ties.count) == bf.optimal.size());
 }
 
 }  // namespace
@@ -149,6 +178,36 @@ TEST_CASE("exact property 2: exact = best-first where best-first is proven (medi
     RC_CLASSIFY(r.ties.count > 1, "tie");
     RC_CLASSIFY(problem.cell_count() > 20, "more than 20 cells");
   });
+}
+
+TEST_CASE("exact property 3: branching on islands = branching on cells on larger scenes (energy, ties)",
+          "[bsh][exact][property]") {
+  rc::prop("random scenes, every degeneracy kind", [] { check_branchings_agree(*gen_scene(small_scenes(10))); });
+  rc::prop("concurrent lines and shared edges", [] {
+    check_branchings_agree(*gen_scene(small_scenes(10, {Degeneracy::ConcurrentLines, Degeneracy::PolygonsSharingEdge,
+                                                        Degeneracy::HalfplaneOnPolygonEdge,
+                                                        Degeneracy::LineTangentToDisk})));
+  });
+}
+
+TEST_CASE("exact: hsx bench --exact's scenes of 12 halfspaces branch on islands and agree with branching on cells",
+          "[bsh][exact]") {
+  // Deterministic scenes (random_scene, seed 1, 1 to 3 samples per halfspace) on which the candidate has islands.
+  const RandomSceneSettings settings = per_halfspace_sampled(12);
+  long island_branches = 0;
+  for (std::uint64_t index = 0; index < 4; ++index) {
+    INFO("scene " << index);
+    const Complex complex = arrange(random_scene(settings, 1, index).scene).complex;
+    const Problem problem(complex);
+    const ExtractResult islands = exact(problem);
+    const ExtractResult cells = exact(problem, kManyTies, ExactBranching::Cells);
+    REQUIRE(islands.optimal);
+    REQUIRE(cells.optimal);
+    CHECK(compare(islands.energy, cells.energy) == Order::Equal);
+    CHECK(islands.ties.count == cells.ties.count);
+    island_branches += islands.stats.island_branches;
+  }
+  CHECK(island_branches > 0);
 }
 
 TEST_CASE("exact: the Prop. 5.1 counterexample (three concurrent lines) gets the oracle's optimum",

@@ -379,6 +379,28 @@ fi
 "$HSX" bench --brute "$ROOT/data/scenes" >/dev/null 2>"$TMP/stderr.txt"
 rc=$?
 if ((rc == 2)) && grep -q -- "does not apply to --brute" "$TMP/stderr.txt"; then pass; else fail "bench --brute DIRS: exit $rc"; fi
+# ---- bench --exact: --method exact on random scenes, best-first beside it on the small ones, a summary per size ----
+if "$HSX" bench --exact --exact-halfspaces 4,6 --exact-scenes 3 --exact-best-first-up-to 4 --time-limit 60 \
+  --repetitions 1 --min-time 0 --json "$TMP/bench-exact.json" >"$TMP/bench-exact.txt" 2>"$TMP/stderr.txt" &&
+  python3 -c '
+import json, sys
+d = json.load(open(sys.argv[1]))
+rows = d["rows"]
+assert d["mode"] == "exact" and [r["input"] for r in rows] == ["random %d #%d" % (h, k) for h in (4, 6) for k in range(3)], rows
+for r in rows:
+    assert r["exact"] == "proven" and r["samples"] >= 1 and int(r["nodes"]) >= 1, r
+    small = r["input"].startswith("random 4 ")
+    assert (r["stages"][1]["status"] == "ok") == small, r
+    if small and r["best-first"] == "proven":
+        assert r["energies"] == "same", r
+' "$TMP/bench-exact.json" && grep -q "^6 halfspaces: 3 scenes, .* exact proven 3/3" "$TMP/bench-exact.txt"; then
+  pass
+else
+  fail "bench --exact: $(head -c 300 "$TMP/stderr.txt")"
+fi
+"$HSX" bench --exact-scenes 2 >/dev/null 2>"$TMP/stderr.txt"
+rc=$?
+if ((rc == 2)) && grep -q -- "--exact-scenes needs --exact" "$TMP/stderr.txt"; then pass; else fail "bench --exact-scenes without --exact: exit $rc"; fi
 # ---- bench --campaign: the campaign runner's scenes per second on 1 and 2 threads, the records compared ----
 if "$HSX" bench --campaign --campaign-halfspaces 2,3 --campaign-scenes 10 --campaign-time-limit 0 --repetitions 1 \
   --min-time 0 --json "$TMP/bench-campaign.json" >/dev/null 2>"$TMP/stderr.txt" &&

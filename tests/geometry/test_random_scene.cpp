@@ -280,6 +280,23 @@ TEST_CASE("random_scene: settings respected", "[random_scene]") {
   CHECK_THROWS_AS(random_scene(bad, 1, 0), std::invalid_argument);
 }
 
+TEST_CASE("random_scene: samples per halfspace (hsx bench --exact's scenes)", "[random_scene]") {
+  RandomSceneSettings s = test::per_halfspace_sampled(8);
+  int with_samples = 0;
+  for (std::uint64_t index = 0; index < 20; ++index) {
+    const Scene2 scene = random_scene(s, 5, index).scene;
+    std::vector<int> count(scene.halfspaces.size(), 0);
+    for (const Sample2& sample : scene.samples) ++count[static_cast<std::size_t>(sample.halfspace)];
+    for (int c : count) {
+      CHECK(c <= 3);
+      with_samples += c >= 1;
+    }
+  }
+  CHECK(with_samples >= 20 * 8 * 3 / 4);  // nearly every halfspace has a fitting candidate
+  s.max_samples = 2;  // the two forms exclude each other
+  CHECK_THROWS_AS(random_scene(s, 5, 0), std::invalid_argument);
+}
+
 TEST_CASE("random_scene: every applied degeneracy is in the scene, and each kind occurs", "[random_scene]") {
   RandomSceneSettings s;  // the property tests' usual settings: up to 6 halfspaces, up to 2 patterns
   s.max_samples = 4;

@@ -245,6 +245,14 @@ rc::Gen<Scene2> gen_rooms_scene() {
   }));
 }
 
+RandomSceneSettings per_halfspace_sampled(int halfspaces) {
+  RandomSceneSettings s;
+  s.min_halfspaces = s.max_halfspaces = halfspaces;
+  s.min_samples_per_halfspace = 1;
+  s.max_samples_per_halfspace = 3;
+  return s;
+}
+
 }  // namespace hsx::test
 
 namespace hsx {

@@ -55,6 +55,9 @@ rc::Gen<Scene2> gen_scene(const SceneGenOptions& options = {});
 /// The library settings gen_scene uses for `options` (before any shrinking).
 RandomSceneSettings scene_settings(const SceneGenOptions& options);
 
+/// random_scene's settings of `hsx bench --exact`: exactly `halfspaces` halfspaces, 1 to 3 samples per halfspace.
+RandomSceneSettings per_halfspace_sampled(int halfspaces);
+
 /// A rational point strictly inside `box`, coordinates multiples of 1/denominator.
 rc::Gen<PointQ2> gen_point_in(const Box2& box, int denominator = 2);
 

@@ -35,7 +35,9 @@
 //    (halfspace order, then candidate order); for a
 //    half-plane or a disk made `near` when rng.percent(near_percent): then the given point is p + t n (half-plane,
 //    t picked from {1/2, -1, 1}) or c + t (p - c) (disk, t picked from {1/2, 2}), snapped back to p exactly.
-//    validate_and_resolve again.
+//    validate_and_resolve again. With max_samples_per_halfspace > 0 (and max_samples = 0) instead: for each
+//    halfspace i in order that has a fitting candidate, count = in(min_samples_per_halfspace,
+//    max_samples_per_halfspace) samples, each a uniformly picked candidate of i, `near` as above.
 // Scenes are small (a few halfspaces): one arrangement takes a few milliseconds.
 #pragma once
 
@@ -112,6 +114,11 @@ struct RandomSceneSettings {
   /// choosing them builds the scene's arrangement once. near_percent (0..100): probability of a `near` sample.
   int max_samples = 0;
   int near_percent = 33;
+  /// Samples per halfspace instead (step 6's second form; used when max_samples_per_halfspace > 0, which needs
+  /// max_samples = 0 and 0 <= min_samples_per_halfspace <= max_samples_per_halfspace): each halfspace with a
+  /// fitting candidate gets in(min, max) of them (`hsx bench --exact`: 1 to 3, as issue 11's scenes).
+  int min_samples_per_halfspace = 0;
+  int max_samples_per_halfspace = 0;
 };
 
 struct RandomScene {

@@ -18,7 +18,7 @@
 //    "stats": {"graph_cuts", "uncertified_cuts", "states_expanded", "states_created", "max_queue",
 //              "labellings_enumerated", "seconds",
 //              "branch_and_bound" (exact only): {"nodes", "nodes_created", "pruned_by_bound", "pruned_by_islands",
-//                "certified_bounds", "lower_bound", "gap", "max_gap"}}}   bounds and gaps as
+//                "island_branches", "certified_bounds", "lower_bound", "gap", "max_gap"}}}   bounds and gaps as
 //                {"missing_samples", "measure" (a double: the bound rounded down; gaps incumbent's upper enclosure
 //                minus the bound)}
 // M = {"decimal", "certified": false (only when the digits are not pinned down), "exact" (null: no closed form)};

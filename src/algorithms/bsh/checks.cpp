@@ -286,6 +286,7 @@ class CheckBudget {
     o.compare = options_.compare;
     o.max_states = options_.max_states;
     o.max_nodes = options_.max_states;  // the exact search's deterministic limit (CheckOptions::max_states)
+    o.exact_branching = ExactBranching::Cells;  // the records count exact's graph cuts: keep them reproducible
     o.max_graph_cuts = options_.max_graph_cuts;
     o.time_limit = options_.time_limit > 0 ? std::max(seconds_left(), 1e-9) : 0;
     o.cancel = options_.cancel;

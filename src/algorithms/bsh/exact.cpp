@@ -17,6 +17,7 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <tuple>
 
 namespace hsx::bsh {
 namespace {
@@ -260,16 +261,20 @@ class IslandRule {
       allowed_.push_back(s.allows(patch.inside_cell));
       sampled_.push_back(!patch.samples.empty());
       bit_.push_back(patch.inside_cell == s.cell_a ? 1 : 2);
+      support_.push_back(patch.support);
     }
   }
 
-  /// Dead patches are the possible ones that no possible sampled patch of their halfspace reaches.
-  Verdict judge(const Labels& labels) const {
+  /// Dead patches are the possible ones that no possible sampled patch of their halfspace reaches. `forbidden`
+  /// (per support, FastBound::solve's bits; empty: none) holds the orientations the node has excluded: patches
+  /// with those are not possible. The verdict's `off` has the dead orientations and the forbidden ones.
+  Verdict judge(const Labels& labels, const std::vector<char>& forbidden) const {
     const std::size_t count = inside_.size();
     std::vector<char> possible(count, 0), alive(count, 0);
     std::vector<int> stack;
     for (std::size_t p = 0; p < count; ++p) {
-      possible[p] = allowed_[p] && labels[inside_[p]] != 0 && labels[outside_[p]] != 1;
+      possible[p] = allowed_[p] && labels[inside_[p]] != 0 && labels[outside_[p]] != 1 &&
+                    !(!forbidden.empty() && (forbidden[support_[p]] & bit_[p]));
       if (possible[p] && sampled_[p]) {
         alive[p] = 1;
         stack.push_back(static_cast<int>(p));
@@ -285,7 +290,7 @@ class IslandRule {
         }
     }
     Verdict verdict;
-    verdict.off.assign(problem_.support_count(), 0);
+    verdict.off = forbidden.empty() ? std::vector<char>(problem_.support_count(), 0) : forbidden;
     for (std::size_t p = 0; p < count; ++p) {
       if (!possible[p] || alive[p]) continue;
       if (labels[inside_[p]] == 1 && labels[outside_[p]] == 0) {
@@ -293,18 +298,23 @@ class IslandRule {
         return verdict;
       }
       verdict.dead.push_back(static_cast<int>(p));
-      verdict.off[problem_.complex().patches[p].support] |= bit_[p];
+      verdict.off[support_[p]] |= bit_[p];
     }
     return verdict;
   }
 
   int inside(int p) const { return inside_[p]; }
   int outside(int p) const { return outside_[p]; }
+  int support(int p) const { return support_[p]; }
+  /// The orientation bit of patch p on its support (FastBound::solve's convention).
+  char bit(int p) const { return bit_[p]; }
+  /// The patches of p's halfspace that share a junction with p.
+  const std::vector<int>& neighbours(int p) const { return neighbours_[p]; }
 
  private:
   const Problem& problem_;
   std::vector<std::vector<int>> neighbours_;  ///< per patch, the patches of its halfspace sharing a junction
-  std::vector<int> inside_, outside_;
+  std::vector<int> inside_, outside_, support_;
   std::vector<char> allowed_, sampled_, bit_;
 };
 
@@ -334,8 +344,10 @@ struct Candidate {
   std::optional<SampleConnectivity> connectivity;
 };
 
+/// A node: closed labels and the orientations its branching excluded (per support, FastBound::solve's bits).
 struct Node {
   Labels labels;
+  std::vector<char> off;
   std::shared_ptr<Candidate> candidate;
   long id = 0;
 };
@@ -408,7 +420,7 @@ class ExactSearch {
   // -- nodes --
 
   void push_root() {
-    Node root{Labels(problem_.cell_count(), -1), nullptr, next_id_++};
+    Node root{Labels(problem_.cell_count(), -1), std::vector<char>(problem_.support_count(), 0), nullptr, next_id_++};
     for (int k = 0; k < problem_.cell_count(); ++k)
       if (problem_.complex().cells[k].outer && !implications_.assign(root.labels, k, 0))
         throw std::logic_error("exact: outer cells are forced inside");
@@ -420,7 +432,7 @@ class ExactSearch {
   /// island's supports kept off the boundary, until it is sample-connected. It ends: each step keeps at least one
   /// more support off, and with every support off only the empty labelling is left.
   void seed_incumbent(const Labels& root) {
-    std::vector<char> off = islands_.judge(root).off;
+    std::vector<char> off = islands_.judge(root, {}).off;
     FastBound::Cut cut = *bound_.solve(root, off);  // no cell forced 1: the empty labelling is always there
     ++stats_.graph_cuts;
     for (;;) {
@@ -436,7 +448,7 @@ class ExactSearch {
 
   /// Bounds a new node (reusing `keep`, a candidate that still fits it) and queues it unless it is pruned.
   void consider(Node node, const std::shared_ptr<Candidate>& keep) {
-    const IslandRule::Verdict verdict = settle(node.labels);
+    const IslandRule::Verdict verdict = settle(node.labels, node.off);
     if (!verdict.hopeless) {
       const bool reuse = keep && agrees(keep->cut.labelling, node.labels) &&
                          !uses_forbidden(problem_, keep->cut.labelling, verdict.off);
@@ -455,20 +467,25 @@ class ExactSearch {
     stats_.max_queue = std::max(stats_.max_queue, static_cast<long>(queue_.size()));
   }
 
-  /// Propagates the island rule into the labels until nothing changes: a dead patch may not have its inside
-  /// cell 1 and its outside cell 0 (Lemma 10.2 of proofs/bsh.md), so one of them decided forces the other.
-  /// Hopeless when that conflicts. The labels stay closed under the implications.
-  IslandRule::Verdict settle(Labels& labels) const {
+  /// Propagates the island rule and the node's excluded orientations into the labels until nothing changes: a
+  /// dead or excluded orientation (inside cell `in`, outside cell `out`) may not have in = 1 and out = 0
+  /// (Lemmas 10.2 and 10.6 of proofs/bsh.md), so one of them decided forces the other. Hopeless when that
+  /// conflicts. The labels stay closed under the implications.
+  IslandRule::Verdict settle(Labels& labels, const std::vector<char>& forbidden) const {
     for (;;) {
-      IslandRule::Verdict verdict = islands_.judge(labels);
+      IslandRule::Verdict verdict = islands_.judge(labels, forbidden);
       if (verdict.hopeless) return verdict;
       bool changed = false;
-      for (int p : verdict.dead) {
-        const int in = islands_.inside(p), out = islands_.outside(p);
-        bool ok = true;
-        if (labels[in] == 1 && labels[out] < 0) ok = implications_.assign(labels, out, 1), changed = true;
-        else if (labels[out] == 0 && labels[in] < 0) ok = implications_.assign(labels, in, 0), changed = true;
-        if (!ok) return IslandRule::Verdict{true, {}, {}};
+      for (int g = 0; g < problem_.support_count(); ++g) {
+        if (!verdict.off[g]) continue;
+        const SupportTerm& s = problem_.supports()[g];
+        for (const auto& [bit, in, out] : {std::tuple<char, int, int>{1, s.cell_a, s.cell_b}, {2, s.cell_b, s.cell_a}}) {
+          if (!(verdict.off[g] & bit)) continue;
+          bool ok = !(labels[in] == 1 && labels[out] == 0);
+          if (ok && labels[in] == 1 && labels[out] < 0) ok = implications_.assign(labels, out, 1), changed = true;
+          else if (ok && labels[out] == 0 && labels[in] < 0) ok = implications_.assign(labels, in, 0), changed = true;
+          if (!ok) return IslandRule::Verdict{true, {}, {}};
+        }
       }
       if (!changed) return verdict;
     }
@@ -497,19 +514,65 @@ class ExactSearch {
     return static_cast<int>(std::count(labels.begin(), labels.end(), static_cast<signed char>(-1)));
   }
 
-  /// Two children on one undecided cell; the one with the candidate's value keeps the candidate (it is still
-  /// feasible and optimal for the rounded cut there). It is queued last, so it is expanded first on equal bounds.
+  /// On an island of the candidate when it has one (branch_on_island), else two children on one undecided cell;
+  /// the one with the candidate's value keeps the candidate (it is still feasible and optimal for the rounded cut
+  /// there). It is queued last, so it is expanded first on equal bounds.
   void branch(const Node& node) {
+    const SampleConnectivity& connectivity = connectivity_of(*node.candidate);
+    if (!connectivity.islands.empty() && options_.exact_branching == ExactBranching::Islands)
+      return branch_on_island(node, connectivity);
     const int cell = branch_cell(node);
     const signed char keep = node.candidate->cut.labelling[cell];
     for (signed char value : {static_cast<signed char>(1 - keep), keep}) {
-      Node child{node.labels, nullptr, next_id_++};
+      Node child{node.labels, node.off, nullptr, next_id_++};
       if (!implications_.assign(child.labels, cell, value)) continue;  // no labelling there
       consider(std::move(child), value == keep ? node.candidate : nullptr);
     }
   }
 
-  /// An undecided cell of a patch of the candidate's first island, else of a boundary support, else the first.
+  /// Lemma 10.6's partition of the region by an island I = p_1..p_k of the candidate (halfspace i) and its
+  /// frontier F = f_1..f_m (the patches of i sharing a junction with I, outside it): child j has p_1..p_{j-1} on b
+  /// with i's orientation and p_j's orientation excluded; child k + j has all of I on, f_1..f_{j-1} excluded and
+  /// f_j on. What is left (I on, F off) has an island: no admissible labelling. Each child excludes the candidate.
+  /// The island with the fewest children is taken.
+  void branch_on_island(const Node& node, const SampleConnectivity& connectivity) {
+    ++stats_.island_branches;
+    std::vector<int> island, frontier;
+    for (int k : connectivity.islands) {
+      std::vector<int> patches = connectivity.components[k].patches;
+      std::sort(patches.begin(), patches.end());
+      std::vector<int> around;
+      for (int p : patches)
+        for (int q : islands_.neighbours(p))
+          if (!std::binary_search(patches.begin(), patches.end(), q)) around.push_back(q);
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
+      if (island.empty() || patches.size() + around.size() < island.size() + frontier.size()) {
+        island = std::move(patches);
+        frontier = std::move(around);
+      }
+    }
+    Node rest{node.labels, node.off, nullptr, 0};  // the patches handled so far: on (I), excluded (F)
+    for (int p : island) {
+      Node child{rest.labels, rest.off, nullptr, next_id_++};
+      child.off[islands_.support(p)] |= islands_.bit(p);
+      consider(std::move(child), nullptr);
+      if (!put_on(rest.labels, p)) return;  // no labelling has I on
+    }
+    for (int f : frontier) {
+      Node child{rest.labels, rest.off, nullptr, next_id_++};
+      if (put_on(child.labels, f)) consider(std::move(child), nullptr);
+      rest.off[islands_.support(f)] |= islands_.bit(f);
+    }
+  }
+
+  /// Puts patch p on b with its halfspace's orientation (inside cell 1, outside cell 0); false on a conflict.
+  bool put_on(Labels& labels, int p) const {
+    return implications_.assign(labels, islands_.inside(p), 1) && implications_.assign(labels, islands_.outside(p), 0);
+  }
+
+  /// An undecided cell of a patch of the candidate's first island (ExactBranching::Cells), else of a boundary
+  /// support, else the first.
   int branch_cell(const Node& node) {
     const Complex& c = problem_.complex();
     const Candidate& candidate = *node.candidate;

@@ -29,6 +29,7 @@ bsh::ExtractOptions search_options(const CheckLimits& limits, bsh::Method method
   o.cancel = limits.cancel;
   o.enumerate_ties = false;
   o.certify_limit = limits.certify_limit;
+  o.exact_branching = bsh::ExactBranching::Cells;  // the records count exact's graph cuts: keep them reproducible
   return o;
 }
 

@@ -28,9 +28,15 @@
 //   orientation in the node's cut and are propagated into the labels (inside 1 forces outside 1, outside 0
 //   forces inside 0), repeated until nothing changes. This removes only labellings that are not
 //   sample-connected, so the bound stays valid for every sample-connected labelling of the region.
-// - Branching: on an undecided cell of an island of the candidate (else of its boundary, else the first
-//   undecided cell); the child that keeps the candidate's value reuses its cut. Nodes are expanded best-bound
-//   first (deterministic order: bound, then the newest node).
+// - Branching (ExtractOptions::exact_branching): with Islands (the default), on an island I of the candidate (the
+//   one with the fewest children) and its frontier F (patches of I's halfspace sharing a junction with I, outside
+//   it): child j has I's first j - 1 patches on b with their orientation and the j-th one's orientation excluded;
+//   then child |I| + j has all of I on, F's first j - 1 patches excluded and the j-th one on. This partitions the
+//   sample-connected labellings of the region, and no child keeps the candidate. A node therefore carries, besides
+//   its labels, the orientations its branching excluded (forbidden in its cut, propagated like dead patches).
+//   With Cells, or when the candidate has no island: on an undecided cell of the candidate's first island (else of
+//   its boundary, else the first undecided cell); the child that keeps the candidate's value reuses its cut. Nodes
+//   are expanded best-bound first (deterministic order: bound, then the newest node).
 // - Incumbent: the empty labelling (always sample-connected), a greedy seed (the root's fast cut with every
 //   island's supports kept off the boundary, repeated until sample-connected) and every sample-connected
 //   candidate; all comparisons that choose it are bsh::compare. Ties are the distinct labellings whose energy equals the final
@@ -44,8 +50,8 @@
 
 namespace hsx::bsh {
 
-/// The exact method: `options.method` is ignored; uses time_limit, max_nodes, enumerate_ties, max_ties,
-/// compare and progress. The result's method is Method::Exact; `removed` is all zeros and `steps` empty (no
+/// The exact method: `options.method` is ignored; uses time_limit, max_nodes, exact_branching, enumerate_ties,
+/// max_ties, compare, progress and cancel. The result's method is Method::Exact; `removed` is all zeros and `steps` empty (no
 /// removed sets here); stats carry nodes, prunings, the lower bound and the gap. Never fails on valid input.
 ExtractResult extract_exact(const Problem& problem, const ExtractOptions& options);
 

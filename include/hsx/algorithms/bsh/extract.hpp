@@ -45,12 +45,24 @@ struct SearchProgress {
 /// machine's speed and load. max_states and max_graph_cuts are checked before every graph cut, time_limit also
 /// before every augmenting path inside a graph cut's max flow and every 1024 steps of brute force's enumeration.
 /// `cancel` is asked wherever time_limit is checked (a host's stop button or Ctrl-C: the Python module's).
+/// How the exact method (exact.hpp) branches on a node whose candidate has an island.
+enum class ExactBranching {
+  /// On the island itself (proofs/bsh.md Lemma 10.6): its patches taken off one by one, or all kept and one
+  /// patch next to it put on; every child excludes the candidate. Far fewer nodes on large scenes.
+  Islands,
+  /// On one undecided cell of the island, the child keeping the candidate's value reusing its cut: the rule of
+  /// hsx before Islands. The proposition checkers (checks.hpp, hsx campaign) keep it, because their records count
+  /// the search's graph cuts and must stay reproducible.
+  Cells,
+};
+
 struct ExtractOptions {
   Method method = Method::Beam;
   int beam_width = 1;
   long max_states = 0;          ///< expanded states before stopping (0: no limit)
   long max_graph_cuts = 0;      ///< graph cuts before stopping (0: no limit)
   long max_nodes = 0;           ///< exact: branch-and-bound nodes expanded before stopping (0: no limit)
+  ExactBranching exact_branching = ExactBranching::Islands;  ///< exact: how a node with an island branches
   double time_limit = 0;        ///< seconds before stopping (0: no limit), brute force included
   bool enumerate_ties = true;   ///< complete methods: find every optimal boundary (up to max_ties)
   int max_ties = 16;
@@ -92,6 +104,7 @@ struct SearchStats {
   long nodes_created = 0;       ///< nodes whose bound was computed
   long pruned_by_bound = 0;     ///< nodes dropped because their lower bound exceeds the incumbent
   long pruned_by_islands = 0;   ///< nodes dropped by the island rule (no completion is sample-connected)
+  long island_branches = 0;     ///< nodes branched on an island of their candidate (removed, or connected)
   long certified_bounds = 0;    ///< exact certified graph cuts run to decide a bound the fast one left open
   EnergyBound lower_bound;      ///< proven lower bound on the optimum at the end (= the energy when optimal)
   EnergyBound gap;              ///< incumbent - lower_bound at the end: (missing samples, measure) differences

@@ -36,4 +36,18 @@ Halfspace2 polygon(const std::string& name, std::vector<PointQ2> vertices, bool 
   return h;
 }
 
+Halfspace3 plane(const std::string& name, const PointQ3& normal, const Rational& offset, bool complement) {
+  Halfspace3 h;
+  h.name = name;
+  h.kind = HalfspaceKind3::Plane;
+  h.normal = normal;
+  h.offset = offset;
+  h.complement = complement;
+  return h;
+}
+
+Halfspace3 plane_through(const std::string& name, const PointQ3& normal, const PointQ3& through, bool complement) {
+  return plane(name, normal, normal.x * through.x + normal.y * through.y + normal.z * through.z, complement);
+}
+
 }  // namespace hsx

@@ -5,6 +5,7 @@
 #include <hsx/io/input.hpp>
 #include <hsx/io/files.hpp>
 #include <hsx/io/mesh_export.hpp>
+#include <hsx/io/png.hpp>
 #include <hsx/io/result_json.hpp>
 #include <hsx/io/svg.hpp>
 #include <hsx/io/svg3.hpp>
@@ -54,6 +55,7 @@ struct ExtractCommandOptions {
   int precision_bits = 2048;
   int max_ties = 16;
   std::string svg_path, json_path, states_svg_path;
+  std::string png_path, states_png_path;  ///< 3D: raster pictures
   std::string obj_path, ply_path, off_path;  ///< 3D: the shape's boundary mesh
   bool exact_coordinates = false;
   bool show_removed = false;
@@ -115,23 +117,29 @@ std::vector<char> patch_flags(const Complex& c, const std::vector<int>& supports
   return flags;
 }
 
-/// A picture of the shape `labelling` (2D: the arrangement with the shape filled; 3D: its boundary in four views,
-/// or in the isometric view alone when `small`), `highlight` (per patch, may be empty) marked as removed.
+/// The options of a 3D picture of the shape `labelling` (its boundary in four views, or in the isometric view
+/// alone when `small`), `highlight` (per patch, may be empty) marked as removed.
+Svg3Options shape_options3(const bsh::Labelling& labelling, const std::vector<char>& highlight,
+                           const std::string& title, bool labels, bool small) {
+  Svg3Options svg;
+  svg.title = title;
+  svg.cell_fill = labelling;
+  svg.show_cell_ids = svg.show_patch_ids = labels;
+  svg.highlight_patches = highlight;
+  svg.highlight_legend = "removed patches";
+  if (small) {
+    svg.width = 560;
+    svg.views = {default_svg_views3().back()};
+  }
+  return svg;
+}
+
+/// A picture of the shape `labelling` (2D: the arrangement with the shape filled; 3D: shape_options3's),
+/// `highlight` (per patch, may be empty) marked as removed.
 std::string shape_picture(const LoadedInput& in, const bsh::Labelling& labelling, const std::vector<char>& highlight,
                           const std::string& title, bool labels, bool small) {
-  if (in.scene3) {
-    Svg3Options svg;
-    svg.title = title;
-    svg.cell_fill = labelling;
-    svg.show_cell_ids = svg.show_patch_ids = labels;
-    svg.highlight_patches = highlight;
-    svg.highlight_legend = "removed patches";
-    if (small) {
-      svg.width = 560;
-      svg.views = {default_svg_views3().back()};
-    }
-    return arrangement_svg3(*in.scene3, *in.arranged3, svg);
-  }
+  if (in.scene3)
+    return arrangement_svg3(*in.scene3, *in.arranged3, shape_options3(labelling, highlight, title, labels, small));
   SvgOptions svg;
   svg.title = title;
   svg.cell_fill = labelling;
@@ -154,9 +162,9 @@ bsh::Labelling state_labelling(const bsh::Problem& problem, const bsh::ExtractRe
   return bsh::graph_cut(problem, constraints).labelling;
 }
 
-/// The search's states along the path to the result (ExtractResult::steps), one picture each, in a grid.
-std::string states_picture(const LoadedInput& in, const bsh::Problem& problem, const bsh::ExtractResult& r,
-                           int beam_width, bool labels) {
+/// The search's states along the path to the result (ExtractResult::steps): shape, removed patches, title.
+std::vector<Svg3State> path_states(const LoadedInput& in, const bsh::Problem& problem, const bsh::ExtractResult& r,
+                                   int beam_width) {
   const Complex& c = in.complex();
   std::vector<Svg3State> states;
   for (std::size_t k = 0; k < r.steps.size(); ++k) {
@@ -176,14 +184,13 @@ std::string states_picture(const LoadedInput& in, const bsh::Problem& problem, c
                                            std::string(r.stopped_by.empty() ? r.optimality_note
                                                                             : "stopped by " + r.stopped_by) +
                                            "): no path of states"});
-  if (in.scene3) {  // 3D: each patch drawn once, shared by the panels (io/svg3.hpp)
-    Svg3Options svg;
-    svg.show_cell_ids = svg.show_patch_ids = labels;
-    svg.highlight_legend = "removed patches";
-    svg.width = 560;
-    svg.views = {default_svg_views3().back()};
-    return states_svg3(*in.scene3, *in.arranged3, states, svg, 3);
-  }
+  return states;
+}
+
+/// path_states as one picture, a panel per state, in a grid.
+std::string states_picture(const LoadedInput& in, const std::vector<Svg3State>& states, bool labels) {
+  if (in.scene3)  // 3D: each patch drawn once, shared by the panels (io/svg3.hpp)
+    return states_svg3(*in.scene3, *in.arranged3, states, shape_options3({}, {}, "", labels, true), 3);
   std::vector<std::string> pictures;
   for (const Svg3State& state : states)
     pictures.push_back(shape_picture(in, state.cell_fill, state.highlight_patches, state.title, labels, true));
@@ -222,9 +229,10 @@ bsh::Method checked_method(const ExtractCommandOptions& o) {
   if (o.max_nodes < 0) throw InputError("--max-nodes: must be >= 0");
   if (o.time_limit < 0) throw InputError("--time-limit: must be >= 0");
   if (o.precision_bits < 64) throw InputError("--precision: at least 64 bits");
-  if (!o.states_svg_path.empty() && *method != bsh::Method::Beam && *method != bsh::Method::BestFirst)
-    throw InputError("--states-svg: only the beam and best-first searches go through states (--method beam or "
-                     "best-first)");
+  for (const auto& [path, option] : {std::pair{o.states_svg_path, "--states-svg"}, {o.states_png_path, "--states-png"}})
+    if (!path.empty() && *method != bsh::Method::Beam && *method != bsh::Method::BestFirst)
+      throw InputError(std::string(option) + ": only the beam and best-first searches go through states (--method "
+                       "beam or best-first)");
   if (o.obj_path == "-") throw InputError("--obj: needs a file (its .mtl is written beside it), not '-'");
   return *method;
 }
@@ -236,6 +244,8 @@ void run_extract(const ExtractCommandOptions& o) {
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
   out.expect(o.states_svg_path, "--states-svg");
+  out.expect(o.png_path, "--png");
+  out.expect(o.states_png_path, "--states-png");
   out.expect(o.obj_path, "--obj");
   out.expect(mtl_path, "--obj (its .mtl)");
   out.expect(o.ply_path, "--ply");
@@ -250,6 +260,10 @@ void run_extract(const ExtractCommandOptions& o) {
     for (const auto& [path, option] : {std::pair{o.obj_path, "--obj"}, {o.ply_path, "--ply"}, {o.off_path, "--off"}})
       if (!path.empty())
         throw InputError(std::string(option) + ": the boundary mesh needs a 3D scene (or a BSH config.json)");
+  if (!in.scene3)
+    for (const auto& [path, option] : {std::pair{o.png_path, "--png"}, {o.states_png_path, "--states-png"}})
+      if (!path.empty())
+        throw InputError(std::string(option) + ": PNG pictures need a 3D scene (or a BSH config.json); 2D: --svg");
 
   bsh::ExtractOptions options;
   options.method = method;
@@ -261,7 +275,7 @@ void run_extract(const ExtractCommandOptions& o) {
   options.time_limit = o.time_limit;
   options.max_ties = o.max_ties;
   options.compare.max_bits = o.precision_bits;
-  options.record_states = !o.states_svg_path.empty();
+  options.record_states = !o.states_svg_path.empty() || !o.states_png_path.empty();
   if (!o.quiet)
     options.progress = [](const bsh::SearchProgress& p) {
       std::cerr << "\r[hsx] " << (p.lower_bound ? "nodes " : "states expanded ") << p.states_expanded << ", queue "
@@ -276,23 +290,32 @@ void run_extract(const ExtractCommandOptions& o) {
   const bsh::ExtractResult result = bsh::extract(problem, options);
   if (options.progress && result.stats.seconds > 0.5) std::cerr << "\n";
 
-  std::string json_text, svg_text, states_text;
+  std::string json_text, svg_text, states_text, png_text, states_png_text;
   if (!o.json_path.empty()) json_text = result_to_json(problem, result, in.pieces(), !o.no_timing).dump(2) + "\n";
-  if (!o.svg_path.empty()) {
-    std::vector<char> highlight;
-    if (o.show_removed) {
-      highlight.assign(in.complex().patches.size(), 0);
-      for (int p : patches_of_supports(in.complex(), result.removed)) highlight[p] = 1;
-    }
-    svg_text = shape_picture(in, result.labelling, highlight,
-                             o.input + " - " + bsh::to_string(result.method) + (result.optimal ? " (optimal)" : ""),
-                             o.labels, false);
+  std::vector<char> highlight;
+  if (o.show_removed) {
+    highlight.assign(in.complex().patches.size(), 0);
+    for (int p : patches_of_supports(in.complex(), result.removed)) highlight[p] = 1;
   }
-  if (!o.states_svg_path.empty()) states_text = states_picture(in, problem, result, o.beam_width, o.labels);
+  const std::string title =
+      o.input + " - " + bsh::to_string(result.method) + (result.optimal ? " (optimal)" : "");
+  if (!o.svg_path.empty()) svg_text = shape_picture(in, result.labelling, highlight, title, o.labels, false);
+  if (!o.png_path.empty())
+    png_text = png_bytes(arrangement_raster3(*in.scene3, *in.arranged3,
+                                             shape_options3(result.labelling, highlight, title, false, false)));
+  if (!o.states_svg_path.empty() || !o.states_png_path.empty()) {
+    const std::vector<Svg3State> states = path_states(in, problem, result, o.beam_width);
+    if (!o.states_svg_path.empty()) states_text = states_picture(in, states, o.labels);
+    if (!o.states_png_path.empty())
+      states_png_text =
+          png_bytes(states_raster3(*in.scene3, *in.arranged3, states, shape_options3({}, {}, "", false, true), 3));
+  }
   MeshTexts mesh = in.scene3 ? mesh_texts(in, result.labelling, o, mtl_path) : MeshTexts{};
   out.put(o.json_path, json_text);
   out.put(o.svg_path, svg_text);
   out.put(o.states_svg_path, states_text);
+  out.put(o.png_path, std::move(png_text));
+  out.put(o.states_png_path, std::move(states_png_text));
   out.put(o.obj_path, std::move(mesh.obj));
   out.put(mtl_path, std::move(mesh.mtl));
   out.put(o.ply_path, std::move(mesh.ply));
@@ -331,13 +354,23 @@ void add_extract_command(CLI::App& app) {
                   "write a picture of the shape, missing samples ringed red: 2D its boundary bold; 3D its boundary "
                   "patches in four orthographic views (io/svg3.hpp)")
       ->check(output_path());
-  cmd->add_flag("--labels", o->labels, "label cells (c<k>) and patches (p<k>) in the picture, as in the JSON");
-  cmd->add_flag("--show-removed", o->show_removed, "highlight the removed patches in the picture (paper Fig. 10)");
+  cmd->add_option("--png", o->png_path,
+                  "3D: write the --svg picture as a PNG (the same four views, z-buffered and opaque, the samples and "
+                  "missing-sample rings; no text: no title, caption, label or legend; io/svg3.hpp)")
+      ->check(output_path());
+  cmd->add_flag("--labels", o->labels,
+                "label cells (c<k>) and patches (p<k>) in the SVG pictures, as in the JSON (the PNGs have no text)");
+  cmd->add_flag("--show-removed", o->show_removed,
+                "highlight the removed patches in the picture, SVG and PNG (paper Fig. 10)");
   cmd->add_option("--states-svg", o->states_svg_path,
                   "beam and best-first: write the states along the search's path to the result as one picture, a "
                   "panel per state (its boundary, its removed patches highlighted, its energy; 3D: the isometric "
                   "view), as in the paper's Fig. 10; K = 1 beam draws the states it recorded, other searches compute "
                   "each state's graph cut again")
+      ->check(output_path());
+  cmd->add_option("--states-png", o->states_png_path,
+                  "3D, beam and best-first: write the --states-svg panels as one PNG, in the same grid (3 per row, "
+                  "reading order; no titles: the removed patches are the amber ones)")
       ->check(output_path());
   cmd->add_option("--obj", o->obj_path,
                   "3D: write the shape's boundary as an OBJ mesh (outward, one group per patch, a material per "

@@ -1,4 +1,5 @@
 #include <hsx/geometry/random_scene3.hpp>
+#include <hsx/geometry/scene_builders.hpp>
 
 #include <hsx/kernel/random.hpp>
 
@@ -17,17 +18,15 @@ Scene3 random_plane_scene3(const RandomPlanesSettings& settings, std::uint64_t s
   scene.domain = {{Rational(-b), Rational(-b), Rational(-b)}, {Rational(b), Rational(b), Rational(b)}};
   scene.domain_given = true;
   for (int k = 0; k < settings.planes; ++k) {
-    Halfspace3 h;
-    h.name = "P" + std::to_string(k);
-    h.kind = HalfspaceKind3::Plane;
+    PointQ3 normal;
     do {
-      h.normal.x = rng.in(-m, m);
-      h.normal.y = rng.in(-m, m);
-      h.normal.z = rng.in(-m, m);
-    } while (h.normal.x == 0 && h.normal.y == 0 && h.normal.z == 0);
+      normal.x = rng.in(-m, m);
+      normal.y = rng.in(-m, m);
+      normal.z = rng.in(-m, m);
+    } while (normal.x == 0 && normal.y == 0 && normal.z == 0);
     PointQ3 p;
     for (Rational* c : {&p.x, &p.y, &p.z}) *c = make_rational(rng.in(-(b - 1) * d, (b - 1) * d), d);
-    h.offset = h.normal.x * p.x + h.normal.y * p.y + h.normal.z * p.z;
+    Halfspace3 h = plane_through("P" + std::to_string(k), normal, p);
     h.origin = "random plane";
     h.complement = rng.one_in(4);
     scene.halfspaces.push_back(std::move(h));

@@ -1,5 +1,6 @@
 // The BSH authors' config.json: see bsh_config.hpp.
 #include <hsx/io/bsh_config.hpp>
+#include <hsx/geometry/scene_builders.hpp>
 
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/exact_json.hpp>
@@ -115,10 +116,9 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
   Primitive3& p = hs.primitive;
   if (type == "plane") {
     f.check_keys({"type", "name", "samples", "color", "point", "normal"}, "a plane");
-    hs.kind = HalfspaceKind3::Plane;
-    hs.normal = point3(f.at("normal"));
-    if (sgn(hs.normal.x) == 0 && sgn(hs.normal.y) == 0 && sgn(hs.normal.z) == 0) f.at("normal").fail("must not be zero");
-    hs.offset = dot3(hs.normal, point3(f.at("point")));
+    const PointQ3 normal = point3(f.at("normal"));
+    if (sgn(normal.x) == 0 && sgn(normal.y) == 0 && sgn(normal.z) == 0) f.at("normal").fail("must not be zero");
+    hs = plane_through("", normal, point3(f.at("point")));  // named below, as every type
   } else if (type == "sphere") {
     f.check_keys({"type", "name", "samples", "color", "is_flipped", "center", "radius"}, "a sphere");
     hs.kind = HalfspaceKind3::Sphere;

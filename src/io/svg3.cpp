@@ -5,6 +5,8 @@
 #include <hsx/io/svg.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -89,10 +91,18 @@ Rgb parse_colour(const char* hex) {  // "#rrggbb"
   return {r / 255.0, g / 255.0, b / 255.0};
 }
 
+/// `c` times `factor`, clamped, as 8-bit channels (the colours of both the SVG and the raster pictures).
+std::array<std::uint8_t, 3> shade(const Rgb& c, double factor) {
+  auto channel = [&](double v) {
+    return static_cast<std::uint8_t>(std::lround(std::clamp(v * factor, 0.0, 1.0) * 255));
+  };
+  return {channel(c.r), channel(c.g), channel(c.b)};
+}
+
 std::string colour_text(const Rgb& c, double factor) {
-  auto channel = [&](double v) { return static_cast<int>(std::lround(std::clamp(v * factor, 0.0, 1.0) * 255)); };
+  const auto rgb = shade(c, factor);
   char buffer[16];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", channel(c.r), channel(c.g), channel(c.b));
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
   return buffer;
 }
 
@@ -186,6 +196,19 @@ const char* const kHighlightColour = "#ffc400";
 const char* const kGreyColour = "#b4b4b4";  // faces of no halfspace's colour (a shape under cell marks)
 const char* const kMarkColours[2] = {"#f4a261", "#e63946"};  // cell_marks 1 and 2, as io/svg.hpp
 
+/// The colour a paint is filled with, before lighting.
+Rgb base_colour(const Paint& paint) {
+  return parse_colour(paint.overlay == 1   ? kHighlightColour
+                      : paint.overlay > 1 ? kMarkColours[paint.overlay - 2]
+                      : paint.halfspace < 0 ? kGreyColour
+                                            : svg_palette_colour(paint.halfspace));
+}
+
+/// The light factor of triangle `t` in projection `p`: 0.35 + 0.65 |n . l|.
+double light_factor(const Arrangement3& arr, const ArrTriangle3& t, const Projection& p) {
+  return 0.35 + 0.65 * std::fabs(dot(unit(to_vec(exact_normal(arr, t))), p.light));
+}
+
 /// The paints with `highlight` set as given, back to front, in one "view" group (none for highlights when there
 /// are none).
 std::string faces_svg(const Arrangement3& arr, const std::vector<Paint>& paints, bool highlight,
@@ -213,12 +236,8 @@ std::string faces_svg(const Arrangement3& arr, const std::vector<Paint>& paints,
   for (const Face& f : faces) {
     const Paint& paint = paints[f.paint];
     const ArrTriangle3& t = triangles[static_cast<std::size_t>(paint.triangle)];
-    const Vec n = unit(to_vec(exact_normal(arr, t)));
-    const double light = 0.35 + 0.65 * std::fabs(dot(n, p.light));
-    const Rgb base = parse_colour(paint.overlay == 1   ? kHighlightColour
-                                  : paint.overlay > 1 ? kMarkColours[paint.overlay - 2]
-                                  : paint.halfspace < 0 ? kGreyColour
-                                                        : svg_palette_colour(paint.halfspace));
+    const double light = light_factor(arr, t, p);
+    const Rgb base = base_colour(paint);
     const char* const kind = paint.overlay == 1 ? "highlight" : paint.overlay == 2 ? "mark-inside"
                              : paint.overlay == 3                                ? "mark-outside"
                                                                                  : "face";
@@ -522,7 +541,7 @@ std::string patch_paths(const Arranged3& a, int patch, const char* colour, const
   };
   for (const Face& f : faces) {
     const ArrTriangle3& t = arr.triangles()[static_cast<std::size_t>(f.triangle)];
-    const double light = 0.35 + 0.65 * std::fabs(dot(unit(to_vec(exact_normal(arr, t))), p.light));
+    const double light = light_factor(arr, t, p);
     const std::string here = colour_text(base, light);
     if (here != fill) flush();
     fill = here;
@@ -537,24 +556,32 @@ std::string patch_paths(const Arranged3& a, int patch, const char* colour, const
   return s;
 }
 
-}  // namespace
 
-std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
-                        const Svg3Options& options, int columns) {
+/// The arguments of states_svg3 and states_raster3 (`who` names the function in messages); throws
+/// std::invalid_argument as they say.
+void check_states(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
+                  const Svg3Options& options, int columns, const std::string& who) {
   if (!options.cell_fill.empty() || !options.highlight_patches.empty() || !options.cell_marks.empty() ||
       !options.title.empty())
-    throw std::invalid_argument("states_svg3: the shapes, highlights and titles come from the states");
-  if (columns < 1) throw std::invalid_argument("states_svg3: columns must be at least 1");
-  if (states.empty()) throw std::invalid_argument("states_svg3: no state");
+    throw std::invalid_argument(who + ": the shapes, highlights and titles come from the states");
+  if (columns < 1) throw std::invalid_argument(who + ": columns must be at least 1");
+  if (states.empty()) throw std::invalid_argument(who + ": no state");
   check_fit(scene, arranged, options);
-  const Complex& c = arranged.complex;
   for (const Svg3State& state : states) {
     Svg3Options o = options;
     o.cell_fill = state.cell_fill;
     o.highlight_patches = state.highlight_patches;
     check_fit(scene, arranged, o);
-    if (state.cell_fill.empty()) throw std::invalid_argument("states_svg3: a state without a shape");
+    if (state.cell_fill.empty()) throw std::invalid_argument(who + ": a state without a shape");
   }
+}
+
+}  // namespace
+
+std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
+                        const Svg3Options& options, int columns) {
+  check_states(scene, arranged, states, options, columns, "states_svg3");
+  const Complex& c = arranged.complex;
   const Layout l = layout_of(arranged, options, true);
   const std::vector<Vec> patch_points = patch_label_points(arranged);
   // Shared definitions: per view, every patch on some state's boundary (its colour) or highlighted (amber).
@@ -650,6 +677,169 @@ std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const st
          "\" height=\"" + svg_number(heights[k]) + "\">\n" + panels[k] + "</svg>\n";
   }
   return s + "</svg>\n";
+}
+
+
+// ---- raster pictures: the same views with a z-buffer (see the conventions' "Raster pictures") ----
+
+namespace {
+
+using Colour8 = std::array<std::uint8_t, 3>;
+
+/// Per pixel, the nearest surface drawn so far: its depth (infinity: none) and colour.
+struct DepthBuffer {
+  std::vector<double> depth;
+  std::vector<Colour8> colour;
+  explicit DepthBuffer(const RgbImage& image)
+      : depth(static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height), INFINITY),
+        colour(depth.size()) {}
+};
+
+/// Pixels whose centres (x + 1/2, y + 1/2) lie in the triangle (sx, sy) (inside or on an edge, either turn),
+/// within [x0, x1) x [y0, y1): each gets the triangle's depth there and `colour` when nearer than what it holds.
+void cover_triangle(DepthBuffer& buffer, int image_width, const double (&sx)[3], const double (&sy)[3],
+                    const double (&depth)[3], const Colour8& colour, int x0, int y0, int x1, int y1) {
+  auto edge = [](double ax, double ay, double bx, double by, double px, double py) {
+    return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+  };
+  const double area = edge(sx[0], sy[0], sx[1], sy[1], sx[2], sy[2]);
+  if (!(area != 0) || !std::isfinite(area)) return;
+  const int lo_x = std::max(x0, static_cast<int>(std::floor(std::min({sx[0], sx[1], sx[2]}) - 0.5)));
+  const int hi_x = std::min(x1 - 1, static_cast<int>(std::ceil(std::max({sx[0], sx[1], sx[2]}))));
+  const int lo_y = std::max(y0, static_cast<int>(std::floor(std::min({sy[0], sy[1], sy[2]}) - 0.5)));
+  const int hi_y = std::min(y1 - 1, static_cast<int>(std::ceil(std::max({sy[0], sy[1], sy[2]}))));
+  for (int y = lo_y; y <= hi_y; ++y)
+    for (int x = lo_x; x <= hi_x; ++x) {
+      const double px = x + 0.5, py = y + 0.5;
+      const double w0 = edge(sx[1], sy[1], sx[2], sy[2], px, py), w1 = edge(sx[2], sy[2], sx[0], sy[0], px, py),
+                   w2 = edge(sx[0], sy[0], sx[1], sy[1], px, py);
+      if (area > 0 ? (w0 < 0 || w1 < 0 || w2 < 0) : (w0 > 0 || w1 > 0 || w2 > 0)) continue;
+      const double d = (w0 * depth[0] + w1 * depth[1] + w2 * depth[2]) / area;
+      const std::size_t k = static_cast<std::size_t>(y) * static_cast<std::size_t>(image_width) + x;
+      if (d < buffer.depth[k]) {
+        buffer.depth[k] = d;
+        buffer.colour[k] = colour;
+      }
+    }
+}
+
+/// Pixel (x, y) blended towards `colour` by `alpha`; pixels outside the image are left alone.
+void blend(RgbImage& image, int x, int y, const Colour8& colour, double alpha) {
+  if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
+  std::uint8_t* p = image.at(x, y);
+  for (int c = 0; c < 3; ++c)
+    p[c] = static_cast<std::uint8_t>(std::lround((1 - alpha) * p[c] + alpha * colour[static_cast<std::size_t>(c)]));
+}
+
+/// The paints with `overlay` as given (faces, or highlights and marks) of one view, z-buffered within the view's
+/// panel [x0, x1) x [y0, y1), then laid over `image` with `alpha`.
+void raster_faces(RgbImage& image, const Arrangement3& arr, const std::vector<Paint>& paints, bool overlay,
+                  const SvgView3& view, const Projection& p, double alpha, int x0, int y0, int x1, int y1) {
+  DepthBuffer buffer(image);
+  bool any = false;
+  for (const Paint& paint : paints) {
+    const ArrTriangle3& t = arr.triangles().at(static_cast<std::size_t>(paint.triangle));
+    if ((paint.overlay > 0) != overlay || !seen(arr, t, view.direction)) continue;
+    double sx[3], sy[3], depth[3];
+    for (int k = 0; k < 3; ++k) {
+      const Vec q = to_vec(arr.vertices()[t.vertices[static_cast<std::size_t>(k)]]);
+      sx[k] = p.X(q);
+      sy[k] = p.Y(q);
+      depth[k] = dot(q, p.depth);
+    }
+    cover_triangle(buffer, image.width, sx, sy, depth, shade(base_colour(paint), light_factor(arr, t, p)), x0, y0,
+                   x1, y1);
+    any = true;
+  }
+  if (!any) return;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::size_t k = static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + x;
+      if (buffer.depth[k] < INFINITY) blend(image, x, y, buffer.colour[k], alpha);
+    }
+}
+
+/// A 1 px line from (ax, ay) to (bx, by), dashed `on` px drawn, `off` px not (off = 0: solid).
+void raster_line(RgbImage& image, double ax, double ay, double bx, double by, const Colour8& colour, double on,
+                 double off) {
+  const double length = std::hypot(bx - ax, by - ay);
+  const int steps = std::max(1, static_cast<int>(std::ceil(length)));
+  for (int i = 0; i <= steps; ++i) {
+    const double t = static_cast<double>(i) / steps;
+    if (off > 0 && std::fmod(t * length, on + off) >= on) continue;
+    blend(image, static_cast<int>(std::floor(ax + t * (bx - ax))), static_cast<int>(std::floor(ay + t * (by - ay))),
+          colour, 1);
+  }
+}
+
+/// The pixels whose centres are at a distance in [inner, outer] from (cx, cy), in `colour`.
+void raster_ring(RgbImage& image, double cx, double cy, double inner, double outer, const Colour8& colour) {
+  for (int y = static_cast<int>(std::floor(cy - outer)); y <= static_cast<int>(std::ceil(cy + outer)); ++y)
+    for (int x = static_cast<int>(std::floor(cx - outer)); x <= static_cast<int>(std::ceil(cx + outer)); ++x) {
+      const double r = std::hypot(x + 0.5 - cx, y + 0.5 - cy);
+      if (r >= inner && r <= outer) blend(image, x, y, colour, 1);
+    }
+}
+
+Colour8 colour8(const char* hex) { return shade(parse_colour(hex), 1); }
+
+}  // namespace
+
+RgbImage arrangement_raster3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options) {
+  check_fit(scene, arranged, options);
+  const Layout l = layout_of(arranged, options, false);
+  RgbImage image(options.width, static_cast<int>(std::ceil(l.legend_top - 8 + l.margin)));
+  const std::vector<Paint> paints = paints_of(arranged, options);
+  const std::vector<char> missing =
+      options.cell_fill.empty() ? std::vector<char>{} : svg_missing_samples(arranged.complex, options.cell_fill);
+  const Arrangement3& arr = arranged.arrangement;
+  for (std::size_t v = 0; v < l.views.size(); ++v) {
+    const Projection& p = l.projections[v];
+    const int x0 = std::max(0, static_cast<int>(std::floor(l.left[v])));
+    const int y0 = std::max(0, static_cast<int>(std::floor(l.top[v])));
+    const int x1 = std::min(image.width, static_cast<int>(std::ceil(l.left[v] + l.panel)));
+    const int y1 = std::min(image.height, static_cast<int>(std::ceil(l.top[v] + l.panel)));
+    raster_faces(image, arr, paints, false, l.views[v], p, 1, x0, y0, x1, y1);
+    raster_faces(image, arr, paints, true, l.views[v], p, options.opacity, x0, y0, x1, y1);
+    const auto c = corners_of(arr.domain());
+    for (int k = 0; k < 8; ++k)
+      for (int bit : {1, 2, 4})
+        if (!(k & bit))
+          raster_line(image, p.X(c[k]), p.Y(c[k]), p.X(c[k | bit]), p.Y(c[k | bit]), colour8("#555555"), 4, 3);
+    for (std::size_t k = 0; k < scene.samples.size(); ++k) {
+      const Vec q = to_vec(scene.samples[k].location);
+      raster_ring(image, p.X(q), p.Y(q), 0, 3.6, colour8(svg_palette_colour(scene.samples[k].halfspace)));
+      raster_ring(image, p.X(q), p.Y(q), 3.6, 4.4, colour8("#000000"));
+      if (k < missing.size() && missing[k]) raster_ring(image, p.X(q), p.Y(q), 7, 9, colour8("#e63946"));
+    }
+  }
+  return image;
+}
+
+RgbImage states_raster3(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
+                        const Svg3Options& options, int columns) {
+  check_states(scene, arranged, states, options, columns, "states_raster3");
+  std::vector<RgbImage> panels;
+  for (const Svg3State& state : states) {
+    Svg3Options o = options;
+    o.cell_fill = state.cell_fill;
+    o.highlight_patches = state.highlight_patches;
+    panels.push_back(arrangement_raster3(scene, arranged, o));
+  }
+  const int gap = 8, n = static_cast<int>(panels.size()), cols = std::min(n, columns), rows = (n + cols - 1) / cols;
+  const int w = panels.front().width, h = panels.front().height;  // every panel has one size: same options
+  RgbImage image(gap + cols * (w + gap), gap + rows * (h + gap));
+  const Colour8 frame = colour8("#b4b4b4");
+  for (int k = 0; k < n; ++k) {
+    const int left = gap + (k % cols) * (w + gap), top = gap + (k / cols) * (h + gap);
+    for (int y = 0; y < h; ++y)
+      std::copy_n(panels[static_cast<std::size_t>(k)].at(0, y), 3 * w, image.at(left, top + y));
+    raster_line(image, left - 1, top - 1, left + w, top - 1, frame, 1, 0);
+    raster_line(image, left - 1, top + h, left + w, top + h, frame, 1, 0);
+    raster_line(image, left - 1, top - 1, left - 1, top + h, frame, 1, 0);
+    raster_line(image, left + w, top - 1, left + w, top + h, frame, 1, 0);
+  }
+  return image;
 }
 
 }  // namespace hsx

@@ -6,10 +6,8 @@
 # Usage: bsh_example_bench.sh HSX SOURCE_DIR
 set -u
 hsx="$(realpath "${1:?usage: bsh_example_bench.sh HSX SOURCE_DIR}")"; src="$(realpath "${2:?usage}")"
-data="${HSX_BSH_DATA:-$src/../shared/data/bsh-examples}"
-[ -f "$data/figure15_a/config.json" ] || { echo "no BSH examples at $data: skipped"; exit 77; }
-data="$(realpath "$data")"
 source "$src/tests/cli/common.sh"
+bsh_examples figure15_a/config.json
 
 expect 0 "" -- "$hsx" bench --bsh-example "$data/figure15_a" "$work/absent" --repetitions 1 --min-time 0 \
   --time-limit 30 --json "$work/b.json"

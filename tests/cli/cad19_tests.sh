@@ -10,10 +10,9 @@
 # Usage: cad19_tests.sh HSX SOURCE_DIR
 set -u
 hsx="$(realpath "${1:?usage: cad19_tests.sh HSX SOURCE_DIR}")"; src="$(realpath "${2:?usage}")"
-data="${HSX_BSH_DATA:-$src/../shared/data/bsh-examples}"
-[ -f "$data/figure19_b/config.json" ] || { echo "no BSH examples at $data: skipped"; exit 77; }
-config="$(realpath "$data/figure19_b/config.json")"
 source "$src/tests/cli/common.sh"
+bsh_examples figure19_b/config.json
+config="$data/figure19_b/config.json"
 EXPR="$src/data/scenes3d/figure19_b_cad.csg"
 json() { python3 -c 'import json, sys; d = json.load(open(sys.argv[1])); sys.exit(0 if eval("(" + sys.argv[2].strip() + ")") else 1)' "$1" "$2"; }
 check() { if json "$2" "$3"; then ok; else bad "$1: $3 false on $2: $(head -c 300 "$2")"; fi; }

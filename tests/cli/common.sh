@@ -21,6 +21,15 @@ expect() {
 # has FILE FRAGMENT WHAT: FILE contains FRAGMENT (fixed string).
 has() { if grep -qF -- "$2" "$1"; then ok; else bad "$3: '$2' not in $1: $(head -c 300 "$1")"; fi; }
 
+# bsh_examples FILE: sets $data to the BSH authors' examples folder, absolute (HSX_BSH_DATA, default
+# ../shared/data/bsh-examples beside the source tree $src), or exits 77 (reported as skipped) when FILE, a path
+# inside it, is absent.
+bsh_examples() {
+  data="${HSX_BSH_DATA:-$src/../shared/data/bsh-examples}"
+  [ -f "$data/$1" ] || { echo "no BSH examples at $data: skipped"; exit 77; }
+  data="$(realpath "$data")"
+}
+
 finish() {
   echo "$passed passed, $failed failed"
   [ "$failed" -eq 0 ]

@@ -3,8 +3,8 @@
 # with --obj (exact coordinates), --ply and --off is closed (every directed edge used as often as its reverse),
 # has one face per boundary triangle the result names, per-face patch and halfspace labels that agree with the
 # result's boundary, and an exact divergence-theorem volume equal to the result's exact volume; the summary gives
-# long closed forms as a number of terms; --svg and --states-svg draw the shape and one panel per state; bad
-# requests exit 2 and write nothing.
+# long closed forms as a number of terms; --svg and --states-svg draw the shape and one panel per state; --png and
+# --states-png write valid, reproducible PNGs with the expected colours; bad requests exit 2 and write nothing.
 # Usage: extract3_tests.sh HSX SOURCE_DIR
 set -u
 hsx="$(realpath "${1:?usage: extract3_tests.sh HSX SOURCE_DIR}")"; src="$(realpath "${2:?usage}")"
@@ -132,7 +132,7 @@ PY
   [ $((2 * states_bytes)) -lt "$shape_bytes" ] && ok ||
     bad "$method: states picture of $states_bytes bytes against $shape_bytes for the shape"
 done
-# PNG: not written by hsx; the pictures render with rsvg-convert where it is installed.
+# The SVG pictures render with rsvg-convert where it is installed.
 if command -v rsvg-convert >/dev/null; then
   for f in states_beam shape_best-first primitives; do
     rsvg-convert "$work/$f.svg" -o "$work/$f.png" 2>"$work/err" && [ -s "$work/$f.png" ] && ok ||
@@ -141,6 +141,88 @@ if command -v rsvg-convert >/dev/null; then
 else
   echo "note: rsvg-convert not installed, the pictures were not rendered"
 fi
+
+# --png and --states-png (3D): valid PNGs (signature, IHDR size), the same bytes on every run, and on a box alone
+# in its domain the expected colours: white background, and at the front view's centre the box's front face in its
+# halfspace's colour #1f77b4 times the light factor 0.35 + 0.65 |n . l| (n = (0, 1, 0), l along
+# (-0.4, -1, 0.5): 0.35 + 0.65 / sqrt(1.41)), as io/svg3.hpp's conventions say.
+cat >"$work/box.json" <<'JSON'
+{"format": "hsx-scene/1", "dimension": 3, "domain": {"min": [-2, -2, -2], "max": [2, 2, 2]},
+ "halfspaces": [{"name": "B", "kind": "box", "min": [-1, -1, -1], "max": [1, 1, 1]}],
+ "samples": [{"on": "B", "at": [1, "1/2", "1/2"]}]}
+JSON
+for run in 1 2; do
+  expect 0 "" -- "$hsx" extract "$work/box.json" -q --png "$work/box$run.png" --states-png "$work/box_states$run.png"
+done
+cmp -s "$work/box1.png" "$work/box2.png" && ok || bad "--png: two runs wrote different bytes"
+cmp -s "$work/box_states1.png" "$work/box_states2.png" && ok || bad "--states-png: two runs wrote different bytes"
+expect 0 "" -- "$hsx" extract "$scenes/primitives.json" -q --method best-first --show-removed \
+  --png "$work/prim.png" --states-png "$work/prim_states.png" --json "$work/prim_states.json"
+python3 - "$work" <<'PY' >"$work/png.txt"
+import json, math, struct, sys, zlib
+work = sys.argv[1]
+problems = []
+
+def decode(path):
+    """(width, height, rows of RGB bytes) of an 8-bit RGB PNG, or a problem."""
+    data = open(path, "rb").read()
+    if data[:8] != b"\x89PNG\r\n\x1a\n": return "no PNG signature"
+    pos, idat, ihdr = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if zlib.crc32(kind + body) != struct.unpack(">I", data[pos + 8 + length:pos + 12 + length])[0]:
+            return "bad CRC in " + kind.decode()
+        if kind == b"IHDR": ihdr = struct.unpack(">IIBBBBB", body)
+        if kind == b"IDAT": idat += body
+        pos += 12 + length
+    if ihdr is None or data[12:16] != b"IHDR": return "IHDR is not the first chunk"
+    width, height, depth, colour = ihdr[:4]
+    if (depth, colour) != (8, 2): return "not 8-bit RGB: %s" % (ihdr,)
+    raw, stride, rows, prev = zlib.decompress(idat), 3 * width, [], bytearray(3 * width)
+    for y in range(height):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0
+            b, c = prev[i], (prev[i - 3] if i >= 3 else 0)
+            if f == 1: line[i] = (line[i] + a) & 255
+            elif f == 2: line[i] = (line[i] + b) & 255
+            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif f == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line)
+        prev = line
+    return width, height, rows
+
+def pixel(image, x, y): return tuple(image[2][y][3 * x:3 * x + 3])
+
+box = decode(work + "/box1.png")
+if isinstance(box, str): problems.append("box.png: " + box)
+else:
+    if box[:2] != (1000, 1000): problems.append("box.png: %dx%d, not 1000x1000" % box[:2])
+    if pixel(box, 2, 2) != (255, 255, 255): problems.append("box.png: background %s" % (pixel(box, 2, 2),))
+    factor = 0.35 + 0.65 / math.sqrt(1.41)
+    want = tuple(round(c * factor) for c in (0x1f, 0x77, 0xb4))
+    # The front view's centre: margin 16 + half of the 484 px panel across; 16 + caption 22.4 + (484 - 22.4) / 2 down.
+    got = pixel(box, 258, 269)
+    if any(abs(g - w) > 1 for g, w in zip(got, want)): problems.append("box.png: front face %s, want %s" % (got, want))
+states = decode(work + "/box_states1.png")
+if isinstance(states, str): problems.append("box_states.png: " + states)
+elif states[0] != 8 + 568: problems.append("box_states.png: %d px wide for one panel" % states[0])
+steps = len(json.load(open(work + "/prim_states.json"))["steps"])
+prim = decode(work + "/prim_states.png")
+if isinstance(prim, str): problems.append("prim_states.png: " + prim)
+elif prim[0] != 8 + min(steps, 3) * 568: problems.append("prim_states.png: %d px wide for %d states" % (prim[0], steps))
+print("\n".join(problems))
+PY
+[ -z "$(cat "$work/png.txt")" ] && ok || bad "PNG: $(cat "$work/png.txt")"
+expect 2 "--png: PNG pictures need a 3D scene" -- "$hsx" extract "$src/data/scenes/lens.json" --png "$work/lens.png" \
+  --json "$work/lens_png.json"
+[ -e "$work/lens.png" ] || [ -e "$work/lens_png.json" ] && bad "a refused --png left files" || ok
+expect 2 "--states-png" -- "$hsx" extract "$work/box.json" --method exact --states-png "$work/exact.png"
+[ -e "$work/exact.png" ] && bad "a refused --states-png left its file" || ok
 
 # 2D scenes keep their outputs; --states-svg draws 2D states too.
 expect 0 "" -- "$hsx" extract "$src/data/scenes/lens.json" --states-svg "$work/lens_states.svg"

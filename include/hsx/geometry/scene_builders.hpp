@@ -2,6 +2,7 @@
 #pragma once
 
 #include <hsx/geometry/scene.hpp>
+#include <hsx/geometry/scene3.hpp>
 
 #include <string>
 #include <vector>
@@ -22,5 +23,14 @@ Halfspace2 disk(const std::string& name, const PointQ2& center, const Rational& 
 /// The closed region bounded by the simple polygon `vertices` (either order, >= 3 vertices; validate_and_resolve
 /// checks simplicity).
 Halfspace2 polygon(const std::string& name, std::vector<PointQ2> vertices, bool complement = false);
+
+/// The half-space { x : normal . x <= offset } of 3D named `name` (normal: outward, non-zero, need not be unit),
+/// complemented when `complement`: the 3D twin of halfplane. Nothing is validated here (validate_and_resolve3
+/// does).
+Halfspace3 plane(const std::string& name, const PointQ3& normal, const Rational& offset, bool complement = false);
+
+/// The half-space with outward `normal` whose plane passes through `through`: offset = normal . through.
+Halfspace3 plane_through(const std::string& name, const PointQ3& normal, const PointQ3& through,
+                         bool complement = false);
 
 }  // namespace hsx

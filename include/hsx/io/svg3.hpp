@@ -1,4 +1,4 @@
-// SVG pictures of a 3D arrangement without a GUI: a few orthographic views side by side, the boundary triangles
+// SVG and PNG (raster) pictures of a 3D arrangement without a GUI: a few orthographic views side by side, the boundary triangles
 // shaded by their halfspace's colour and lit by their normal, painted back to front.
 //
 // Conventions (owned here):
@@ -29,7 +29,20 @@
 //   the complex (hsx arrange's text and hsx-complex/1). Under the views, a legend of the halfspaces and, for a
 //   shape, of the marks ("legend").
 // - Output is deterministic: fixed drawing order, numbers with 4 decimals (io/svg.hpp's svg_number).
+// - Raster pictures (arrangement_raster3, states_raster3; `hsx extract --png`): the same views, layout, triangles,
+//   colours, samples and missing-sample rings, without text (no caption, title, label or legend: the SVG has
+//   them; the views keep their places). Each view is drawn with a z-buffer instead of painting back to front:
+//   a pixel is covered by a triangle when its centre is inside or on the projected triangle (edge functions in
+//   doubles), and takes the nearest covering face's colour (depth interpolated across the triangle; on equal
+//   depths the first face in the SVG's drawing order wins), opaque: the fill colour of the SVG's polygon. The
+//   highlighted and marked patches get a second z-buffer of their own and are blended over the result with
+//   `opacity`. Then the domain box's edges (1 px, dashed 4 on 3 off), the samples (discs of radius 4 px with a
+//   black rim) and the missing-sample rings (radius 7 to 9 px, red). Single-threaded and in a fixed order, so
+//   the same input gives the same pixels on every run (the coverage decisions use doubles: a picture, not a
+//   proof).
 #pragma once
+
+#include <hsx/io/png.hpp>
 
 #include <hsx/complex/from_arrangement3.hpp>
 #include <hsx/geometry/scene3.hpp>
@@ -92,6 +105,17 @@ struct Svg3State {
 /// Throws std::invalid_argument as arrangement_svg3 does for each state, when `states` is empty, a state has no
 /// cell_fill, `columns` < 1, or `options` sets cell_fill, highlight_patches, cell_marks or title (the states do).
 std::string states_svg3(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
+                        const Svg3Options& options, int columns);
+
+/// The raster picture of arrangement_svg3 with the same arguments (see the conventions' "Raster pictures"):
+/// options.width px wide, as high as the views (the SVG's height without its title and legend). Throws as
+/// arrangement_svg3 does.
+RgbImage arrangement_raster3(const Scene3& scene, const Arranged3& arranged, const Svg3Options& options = {});
+
+/// The raster picture of states_svg3 with the same arguments: each state drawn as arrangement_raster3 draws it with
+/// `options` and the state's cell_fill and highlight_patches (the titles are not drawn), the panels in a grid of
+/// `columns` per row, 8 px apart, each framed by a 1 px grey line. Throws as states_svg3 does.
+RgbImage states_raster3(const Scene3& scene, const Arranged3& arranged, const std::vector<Svg3State>& states,
                         const Svg3Options& options, int columns);
 
 /// How many "face" polygons view `view` of arrangement_svg3 draws: the triangles not on the box and not seen

@@ -1,5 +1,6 @@
 // A campaign's random 3D scenes: see scene3.hpp.
 #include <hsx/algorithms/campaign/scene3.hpp>
+#include <hsx/geometry/scene_builders.hpp>
 
 #include <hsx/algorithms/bsh/sample_scene.hpp>
 #include <hsx/algorithms/bsh/samples.hpp>
@@ -18,16 +19,6 @@ Arranged3 arrange_for_campaign(const Scene3& scene, const ArrangementLimits& lim
   options.volumes = false;
   options.threads = 1;
   return arrange(scene, limits, options);
-}
-
-Halfspace3 plane(const std::string& name, const PointQ3& normal, const Rational& offset, bool complement = false) {
-  Halfspace3 h;
-  h.name = name;
-  h.kind = HalfspaceKind3::Plane;
-  h.normal = normal;
-  h.offset = offset;
-  h.complement = complement;
-  return h;
 }
 
 /// The axis (0, 1, 2) of an axis-aligned plane normal, or -1.

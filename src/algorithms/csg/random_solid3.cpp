@@ -1,5 +1,6 @@
 // Random bounded 3D solids: see random_solid3.hpp (the procedure is specified there, draw by draw).
 #include <hsx/algorithms/csg/random_solid3.hpp>
+#include <hsx/geometry/scene_builders.hpp>
 
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/kernel/random.hpp>
@@ -98,12 +99,7 @@ class Drawer {
     return h;
   }
   ExprPtr plane(const std::string& name, const PointQ3& normal, const PointQ3& through) {
-    Halfspace3 h;
-    h.name = name;
-    h.kind = HalfspaceKind3::Plane;
-    h.normal = normal;
-    h.offset = normal.x * through.x + normal.y * through.y + normal.z * through.z;
-    return add(std::move(h));
+    return add(plane_through(name, normal, through));
   }
   ExprPtr box(const std::string& name, const PointQ3& lo, const PointQ3& hi) {
     const Rational one(1), zero(0);

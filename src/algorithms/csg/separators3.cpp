@@ -1,5 +1,6 @@
 // 3D separators: see separators3.hpp.
 #include <hsx/algorithms/csg/separators3.hpp>
+#include <hsx/geometry/scene_builders.hpp>
 
 #include <algorithm>
 #include <numeric>
@@ -265,12 +266,7 @@ SeparatedSolid3 add_separators(const Scene3& scene, const Arranged3& arranged, c
       const std::size_t k = ranked.k;
       PlaneTrial trial{candidates[k], ranked.p.terms, ranked.p.cells};
       Scene3 next = s.scene;
-      Halfspace3 h;
-      h.name = name;
-      h.kind = HalfspaceKind3::Plane;
-      h.normal = candidates[k].normal;
-      h.offset = candidates[k].offset;
-      next.halfspaces.push_back(h);
+      next.halfspaces.push_back(plane(name, candidates[k].normal, candidates[k].offset));
       std::optional<Arranged3> a;
       try {
         a = arrange(next, limits);

@@ -640,6 +640,20 @@ SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, std::uin
   return check_scene_since<Scene2, Arranged2>(s, scene, index, cancel, Clock::now());
 }
 
+SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, Arranged2 arranged,
+                        const std::vector<char>& intended, std::uint64_t index, const std::function<bool()>& cancel) {
+  if (!intended.empty() && intended.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("check_scene: the intended solid needs one flag per cell");
+  return check_scene_since<Scene2, Arranged2>(s, scene, index, cancel, Clock::now(), std::move(arranged), intended);
+}
+
+SceneRecord check_scene(const CampaignSettings& s, const Scene3& scene, Arranged3 arranged,
+                        const std::vector<char>& intended, std::uint64_t index, const std::function<bool()>& cancel) {
+  if (!intended.empty() && intended.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("check_scene: the intended solid needs one flag per cell");
+  return check_scene_since<Scene3, Arranged3>(s, scene, index, cancel, Clock::now(), std::move(arranged), intended);
+}
+
 namespace {
 
 /// run_scene for CampaignSettings::dimension 3.

@@ -13,13 +13,6 @@ namespace {
 
 Rational half(Random& rng, long a, long b) { return Rational(rng.in(a, b)) / Rational(2); }
 
-Arranged3 arrange_for_campaign(const Scene3& scene, const ArrangementLimits& limits) {
-  Arrangement3Options options;
-  options.volumes = false;
-  options.threads = 1;
-  return arrange(scene, limits, options);
-}
-
 Halfspace3 plane(const std::string& name, const PointQ3& normal, const Rational& offset, bool complement = false) {
   Halfspace3 h;
   h.name = name;
@@ -136,6 +129,13 @@ std::optional<Degeneracy3> degeneracy3_from_string(const std::string& s) {
   return std::nullopt;
 }
 
+Arranged3 arrange_campaign_scene3(const Scene3& scene, const ArrangementLimits& limits) {
+  Arrangement3Options options;
+  options.volumes = false;
+  options.threads = 1;
+  return arrange(scene, limits, options);
+}
+
 void validate(const Scene3Settings& s) {
   if (s.solid.min_primitives < 1 || s.solid.max_primitives < s.solid.min_primitives)
     throw std::invalid_argument("primitives: need 1 <= A <= B");
@@ -180,7 +180,7 @@ CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 p
   } else {
     out.scene.domain_given = false;
     validate_and_resolve(out.scene);
-    out.arranged = arrange_for_campaign(out.scene, limits);
+    out.arranged = arrange_campaign_scene3(out.scene, limits);
   }
   const auto intended = [&](const Complex& complex) {
     return bounded ? csg::evaluate(*r.expression, complex) : std::vector<char>(complex.cells.size(), 0);
@@ -191,7 +191,7 @@ CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 p
     Scene3 sampled = bsh::scene_with_samples(out.scene, out.arranged, patches, out.scene.description);
     validate_and_resolve(sampled);
     out.scene = std::move(sampled);
-    out.arranged = arrange_for_campaign(out.scene, limits);
+    out.arranged = arrange_campaign_scene3(out.scene, limits);
     out.intended = intended(out.arranged.complex);
   }
   return out;

@@ -268,6 +268,19 @@ Scene2 generate_scene(const CampaignSettings& settings, std::uint64_t index);
 SceneRecord check_scene(const CampaignSettings& settings, const Scene2& scene, std::uint64_t index,
                         const std::function<bool()>& cancel = {});
 
+/// check_scene on a scene already arranged, with an intended shape (minimise.hpp carries a failing scene's intended
+/// shape to its reduced scenes this way): `arranged` is arrange(scene) within settings.limits (for a 3D scene, as
+/// its generator arranges it: arrange_campaign_scene3, scene3.hpp), `intended` one flag per cell of its complex or
+/// empty (check_arranged's), recorded in the record's `intended` as run_scene records it. settings.time_limit counts
+/// from this call. Otherwise as check_scene (the 3D record's `scene3` is set when failed(); settings.extra is not
+/// run on a 3D scene). Throws std::invalid_argument for an `intended` of the wrong size.
+SceneRecord check_scene(const CampaignSettings& settings, const Scene2& scene, Arranged2 arranged,
+                        const std::vector<char>& intended, std::uint64_t index,
+                        const std::function<bool()>& cancel = {});
+SceneRecord check_scene(const CampaignSettings& settings, const Scene3& scene, Arranged3 arranged,
+                        const std::vector<char>& intended, std::uint64_t index,
+                        const std::function<bool()>& cancel = {});
+
 /// Runs the scenes `indices` on `jobs` threads (>= 1) and calls `sink` with each record, on the calling thread,
 /// in the order of `indices`, as soon as it and every record before it are done (at most about 4 x jobs records
 /// wait for their turn). An exception from `sink` stops the run (the threads finish their current scene) and is

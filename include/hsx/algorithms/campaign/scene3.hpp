@@ -81,6 +81,10 @@ struct CampaignScene3 {
   std::vector<std::string> degeneracies;  ///< the patterns applied (to_string), in order
 };
 
+/// `scene` (validated and resolved) arranged as the procedure arranges it: Arrangement3Options volumes = false,
+/// threads = 1, within `limits` (InputError beyond them, or for a sample the arrangement refuses).
+Arranged3 arrange_campaign_scene3(const Scene3& scene, const ArrangementLimits& limits);
+
 /// Checks the settings' ranges; throws std::invalid_argument naming the first bad one.
 void validate(const Scene3Settings& settings);
 

@@ -149,9 +149,13 @@ void validate(const Scene3Settings& s) {
 }
 
 CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 policy, std::uint64_t seed,
-                                      std::uint64_t index, const ArrangementLimits& limits) {
+                                      std::uint64_t index, const ArrangementLimits& limits, int* generated) {
   validate(settings);
-  csg::RandomSolid3 r = csg::random_solid3(settings.solid, seed, index, limits);
+  csg::RandomSolid3 r = csg::random_solid3(settings.solid, seed, index, limits, generated);
+  const auto made = [&](const Scene3& scene) {
+    if (generated) *generated = static_cast<int>(scene.halfspaces.size());
+  };
+  made(r.scene);
   const bool bounded = r.status == csg::SolidStatus::Bounded;
   Random rng(item_seed(item_seed(seed, index), 1));
   CampaignScene3 out;
@@ -175,6 +179,7 @@ CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 p
       out.degeneracies.push_back(to_string(d));
     }
   }
+  made(out.scene);
   if (out.degeneracies.empty()) {
     out.arranged = std::move(r.arranged);
   } else {

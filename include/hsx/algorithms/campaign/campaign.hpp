@@ -137,7 +137,9 @@ std::optional<SceneOutcome> scene_outcome_from_string(const std::string& s);
 struct SceneRecord {
   std::uint64_t index = 0;
   std::uint64_t seed = 0;
-  int halfspaces = 0;                     ///< the scene's halfspace count
+  /// The scene's halfspace count; for a scene refused (or thrown on) by its generator, as far as it was generated
+  /// (2D: before its samples; 3D: random_campaign_scene3's `generated`)
+  int halfspaces = 0;
   long cells = 0;                         ///< its complex's cells (0 when not arranged)
   long patches = 0;                       ///< its complex's patches (0 when not arranged)
   int samples = 0;                        ///< its samples

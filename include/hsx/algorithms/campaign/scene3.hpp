@@ -89,8 +89,11 @@ Arranged3 arrange_campaign_scene3(const Scene3& scene, const ArrangementLimits& 
 void validate(const Scene3Settings& settings);
 
 /// Scene `index` of `seed` by the procedure above. Throws std::invalid_argument for settings out of range and
-/// InputError when an arrangement outgrows `limits`.
+/// InputError when an arrangement outgrows `limits`. `generated`, when not null, is set to the scene's halfspace
+/// count as far as it was made, also when it throws: step 1's scene's (random_solid3's `drawn`, also when its
+/// arrangement is refused), with the patterns' after step 3 (a campaign tallies a refused scene there).
 CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 samples, std::uint64_t seed,
-                                      std::uint64_t index, const ArrangementLimits& limits);
+                                      std::uint64_t index, const ArrangementLimits& limits,
+                                      int* generated = nullptr);
 
 }  // namespace hsx::campaign

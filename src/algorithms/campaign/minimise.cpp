@@ -247,6 +247,16 @@ struct Reducer {
     return true;
   }
 
+  /// Each halfspace h of result.scene that `allowed(h)`, with its samples, last to first, until a pass removes
+  /// nothing.
+  void remove_each_halfspace(const std::function<bool(int)>& allowed) {
+    for (bool changed = true; changed && !result.exhausted;) {
+      changed = false;
+      for (int h = static_cast<int>(result.scene.halfspaces.size()) - 1; h >= 0 && !result.exhausted; --h)
+        if (allowed(h) && attempt_without({h})) changed = true;
+    }
+  }
+
   /// Step 2: samples, last to first, until a pass removes nothing.
   void remove_samples() {
     for (bool changed = true; changed && !result.exhausted;) {
@@ -313,11 +323,7 @@ MinimiseResult minimise_scene(const CampaignSettings& settings, const Scene2& sc
   if (!z.begin(settings, scene, record)) return z.result;
 
   // 1. Halfspaces, with their samples, last to first, until a pass removes nothing.
-  for (bool changed = true; changed && !z.result.exhausted;) {
-    changed = false;
-    for (int h = static_cast<int>(z.result.scene.halfspaces.size()) - 1; h >= 0 && !z.result.exhausted; --h)
-      if (z.attempt_without({h})) changed = true;
-  }
+  z.remove_each_halfspace([](int) { return true; });
   // 2. Samples.
   z.remove_samples();
   // 3. Coordinates: the halfspaces' parameters, the samples' points, the domain.
@@ -472,15 +478,11 @@ MinimiseResult3 minimise_scene(const CampaignSettings& settings, const Scene3& s
     for (auto g = groups.rbegin(); g != groups.rend() && !z.result.exhausted; ++g)
       if (z.result.scene.halfspaces.size() > g->size() && z.attempt_without(*g)) changed = true;
   }
-  for (bool changed = true; changed && !z.result.exhausted;) {
-    changed = false;
-    for (int h = static_cast<int>(z.result.scene.halfspaces.size()) - 1; h >= 0 && !z.result.exhausted; --h) {
-      const std::string group = group_of(z.result.scene.halfspaces[static_cast<std::size_t>(h)]);
-      const auto members = std::count_if(z.result.scene.halfspaces.begin(), z.result.scene.halfspaces.end(),
-                                         [&](const Halfspace3& x) { return group_of(x) == group; });
-      if (members > 1 && z.attempt_without({h})) changed = true;
-    }
-  }
+  z.remove_each_halfspace([&](int h) {
+    const std::string group = group_of(z.result.scene.halfspaces[static_cast<std::size_t>(h)]);
+    return std::count_if(z.result.scene.halfspaces.begin(), z.result.scene.halfspaces.end(),
+                         [&](const Halfspace3& x) { return group_of(x) == group; }) > 1;
+  });
   // 2. Samples.
   z.remove_samples();
   // 3. Segments, one pass.

@@ -146,8 +146,6 @@ void refuse_other_dimension(const CampaignCommandOptions& o, int dimension) {
     if (o.app->count(name) > 0)
       throw InputError(name + ": a " + (dimension == 3 ? "2D" : "3D") + " option (this campaign is --dimension " +
                        std::to_string(dimension) + ")");
-  if (dimension == 3 && (o.app->count("--minimise") > 0 || o.app->count("--minimise-steps") > 0))
-    throw InputError("--minimise: 2D scenes only (a failing 3D scene is kept as generated)");
 }
 
 /// The generator's settings of either dimension from the options.
@@ -199,6 +197,7 @@ nlohmann::json campaign_manifest(const campaign::CampaignSettings& settings, con
 struct Kept {
   campaign::SceneRecord record;
   std::optional<Scene2> minimised;
+  std::optional<Scene3> minimised3;  ///< a 3D campaign's
 };
 
 /// A record as one MPI message: its results.jsonl line, a line holding the scene (hsx-scene/1, one line) that
@@ -210,6 +209,7 @@ std::string encode_record(const Kept& k) {
   if (k.record.scene3) text += write_scene3(*k.record.scene3).dump();
   text += "\n";
   if (k.minimised) text += write_scene2(*k.minimised).dump();
+  if (k.minimised3) text += write_scene3(*k.minimised3).dump();
   return text;
 }
 
@@ -222,7 +222,11 @@ Kept decode_record(const std::string& text) {
     if (nlohmann::json::parse(scene).value("dimension", 2) == 3) k.record.scene3 = read_scene3_text(scene);
     else k.record.scene = read_scene_text(scene);
   }
-  if (second + 1 < text.size()) k.minimised = read_scene_text(std::string_view(text).substr(second + 1));
+  if (second + 1 < text.size()) {
+    const std::string_view minimised = std::string_view(text).substr(second + 1);
+    if (nlohmann::json::parse(minimised).value("dimension", 2) == 3) k.minimised3 = read_scene3_text(minimised);
+    else k.minimised = read_scene_text(minimised);
+  }
   return k;
 }
 
@@ -236,14 +240,20 @@ void run_all(const campaign::CampaignSettings& settings, const std::vector<std::
              const std::function<void(Kept&&)>& sink) {
   const auto keep = [&](campaign::SceneRecord&& r) {
     Kept k;
-    if (minimise && r.failed() && r.scene3)
-      std::cerr << "hsx campaign: scene " << r.index << " kept as generated (3D scenes are not minimised)\n";
+    const auto say = [&](const auto& m, bool kept) {
+      if (kept)
+        std::cerr << "hsx campaign: scene " << r.index << " minimised to " << m.scene.halfspaces.size()
+                  << " halfspaces and " << m.scene.samples.size() << " samples in " << m.steps << " steps\n";
+    };
+    if (minimise && r.failed() && r.scene3) {
+      const campaign::MinimiseResult3 m = campaign::minimise_scene(settings, *r.scene3, r, *minimise);
+      k.minimised3 = minimised_failure(r, m);
+      say(m, k.minimised3.has_value());
+    }
     if (minimise && r.failed() && r.scene) {
       const campaign::MinimiseResult m = campaign::minimise_scene(settings, *r.scene, r, *minimise);
       k.minimised = minimised_failure(r, m);
-      if (k.minimised)
-        std::cerr << "hsx campaign: scene " << r.index << " minimised to " << m.scene.halfspaces.size()
-                  << " halfspaces and " << m.scene.samples.size() << " samples in " << m.steps << " steps\n";
+      say(m, k.minimised.has_value());
     }
     k.record = std::move(r);
     return k;
@@ -345,7 +355,7 @@ int run_campaign(const CampaignCommandOptions& o) {
     minimise->max_steps = o.minimise_steps;
   }
   run_all(settings, todo, o.jobs, mpi ? &*mpi : nullptr, minimise, [&](Kept&& k) {
-    if (folder) folder->append(k.record, k.minimised);
+    if (folder) folder->append(k.record, k.minimised, k.minimised3);
     summary.add(k.record);
     report(k.record);
   });

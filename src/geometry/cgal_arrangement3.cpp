@@ -1339,21 +1339,15 @@ std::vector<int> place_samples(const Scene3& scene, const std::vector<PointQ3>& 
       const std::array<Projected, 3> tp = {project(p[0], axis), project(p[1], axis), project(p[2], axis)};
       const Projected qp = project(q, axis);
       const int o = orient2(tp[0], tp[1], tp[2]);
-      int on_edges = 0;
-      bool out_of = false;
-      for (int e = 0; e < 3; ++e) {
-        const int s = orient2(tp[e], tp[(e + 1) % 3], qp) * o;
-        if (s < 0) out_of = true;
-        if (s == 0) {
-          ++on_edges;
-          ok = ok && patch_interior(edge_of(v[e], v[(e + 1) % 3]));
-        }
-      }
-      if (out_of) continue;
+      std::array<int, 3> side{};
+      for (int e = 0; e < 3; ++e) side[static_cast<std::size_t>(e)] = orient2(tp[e], tp[(e + 1) % 3], qp) * o;
+      // Outside the triangle: its edges say nothing about q, even one whose line passes through q.
+      if (std::any_of(side.begin(), side.end(), [](int s) { return s < 0; })) continue;
+      for (int e = 0; e < 3; ++e)
+        if (side[static_cast<std::size_t>(e)] == 0) ok = ok && patch_interior(edge_of(v[e], v[(e + 1) % 3]));
       if (triangles[static_cast<std::size_t>(t)].on_box)
         throw InputError(label + ": lies on the domain box, where its halfspace has no patch");
       if (found < 0) found = t;
-      (void)on_edges;
     }
     if (found < 0) throw InputError(label + ": not on its halfspace's boundary inside the domain");
     if (!ok) throw InputError(label + ": lies on an edge where boundaries meet; move it into a patch");

@@ -14,6 +14,7 @@
 #include <memory>
 #include <set>
 #include <sstream>
+#include <type_traits>
 
 namespace hsx {
 namespace fs = std::filesystem;
@@ -460,7 +461,8 @@ CampaignFolder::CampaignFolder(const std::string& dir, const nlohmann::json& man
   if (!results_) throw OutputError(results_path.string() + ": cannot open it for writing: " + std::strerror(errno));
 }
 
-void CampaignFolder::append(const SceneRecord& record, const std::optional<Scene2>& minimised) {
+void CampaignFolder::append(const SceneRecord& record, const std::optional<Scene2>& minimised,
+                            const std::optional<Scene3>& minimised3) {
   if (record.failed()) {
     if (!record.scene && !record.scene3)
       throw std::logic_error("CampaignFolder::append: a failed record without its scene");
@@ -482,6 +484,8 @@ void CampaignFolder::append(const SceneRecord& record, const std::optional<Scene
     write_file_atomically((failures / (name + ".json")).string(), text + "\n");
     if (minimised)
       write_file_atomically((failures / (name + ".min.json")).string(), write_scene2(*minimised).dump(2) + "\n");
+    if (minimised3)
+      write_file_atomically((failures / (name + ".min.json")).string(), write_scene3(*minimised3).dump(2) + "\n");
   }
   append_line(record_to_json(record).dump());
 }
@@ -497,14 +501,19 @@ void CampaignFolder::write_summary(const Summary& summary) {
   write_file_atomically((fs::path(dir_) / "summary.svg").string(), summary_svg(summary));
 }
 
-std::optional<Scene2> minimised_failure(const SceneRecord& record, const campaign::MinimiseResult& m) {
-  if (!m.reproduced) return std::nullopt;
+namespace {
+
+/// minimised_failure's note (either dimension).
+template <class Scene>
+std::string minimised_note(const SceneRecord& record, const campaign::Minimised<Scene>& m) {
   const int halfspaces = static_cast<int>(m.scene.halfspaces.size()), samples = static_cast<int>(m.scene.samples.size());
+  constexpr bool three = std::is_same_v<Scene, Scene3>;
+  const int changes = three ? m.lowered_segments : m.simplified_coordinates;
   std::ostringstream head;
   head << "hsx campaign --seed " << record.seed << ", scene " << record.index << " minimised ("
        << halfspaces + m.removed_halfspaces << " -> " << halfspaces << " halfspaces, " << samples + m.removed_samples
-       << " -> " << samples << " samples, " << m.simplified_coordinates << " coordinate"
-       << (m.simplified_coordinates == 1 ? "" : "s") << " simplified, " << m.steps << " step"
+       << " -> " << samples << " samples, " << changes << (three ? " segment count" : " coordinate")
+       << (changes == 1 ? "" : "s") << (three ? " lowered, " : " simplified, ") << m.steps << " step"
        << (m.steps == 1 ? "" : "s") << (m.exhausted ? ", the step budget ran out" : "") << "): ";
   std::string what;
   if (m.record.outcome == SceneOutcome::Error) {
@@ -520,11 +529,33 @@ std::optional<Scene2> minimised_failure(const SceneRecord& record, const campaig
     what = "failed " + names + ": " + (first ? first->witness : std::string());
   }
   if (what.size() > 400) what = what.substr(0, 397) + "...";
-  std::string note = head.str() + what + " (the original: failures/scene-" + std::to_string(record.index) + ".json)";
+  std::string shape;
+  if (!m.record.intended.empty()) {
+    shape = " [the intended shape carried to it: cells {";
+    for (std::size_t k = 0; k < m.record.intended.size(); ++k)
+      shape += (k ? "," : "") + std::to_string(m.record.intended[k]);
+    shape += "} of its complex]";
+  }
+  std::string note =
+      head.str() + what + shape + " (the original: failures/scene-" + std::to_string(record.index) + ".json)";
   for (char& c : note)
     if (c == '\n' || c == '\r') c = ' ';
+  return note;
+}
+
+}  // namespace
+
+std::optional<Scene2> minimised_failure(const SceneRecord& record, const campaign::MinimiseResult& m) {
+  if (!m.reproduced) return std::nullopt;
   Scene2 scene = m.scene;
-  scene.description = note;
+  scene.description = minimised_note(record, m);
+  return scene;
+}
+
+std::optional<Scene3> minimised_failure(const SceneRecord& record, const campaign::MinimiseResult3& m) {
+  if (!m.reproduced) return std::nullopt;
+  Scene3 scene = m.scene;
+  scene.description = minimised_note(record, m);
   return scene;
 }
 

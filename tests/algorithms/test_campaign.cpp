@@ -935,3 +935,26 @@ TEST_CASE("campaign: beam widths chosen by the user (beamK, --beam-widths)", "[c
   CHECK(b3 < b16);
   CHECK(summary_to_json(summary).contains("beam16_optimality"));
 }
+
+TEST_CASE("campaign 3D: the two scenes the 10^4-scene campaign refused are generated (seed 1, scenes 4264, 9278)",
+          "[campaign][campaign3]") {
+  // Their samples (centroids strictly inside a patch's triangle) were refused as lying "on an edge where boundaries
+  // meet": validation looked at the edges of every triangle of the halfspace whose edge's line passes through the
+  // sample, even a triangle not holding it (cgal_arrangement3.cpp, place_samples).
+  Scene3Settings s;
+  s.solid.min_primitives = 1;
+  s.solid.max_primitives = 3;
+  s.solid.segments = 6;
+  const CampaignScene3 a = random_campaign_scene3(s, Samples3::Intended, 1, 4264, {});
+  REQUIRE(a.scene.samples.size() == 6);
+  const Sample3& on_face = a.scene.samples[5];
+  CHECK(a.scene.halfspaces.at(static_cast<std::size_t>(on_face.halfspace)).name == "b1.zmax");
+  CHECK(on_face.location == PointQ3{Rational(2), Rational(1652, 561), Rational(1)});
+  const CampaignScene3 b = random_campaign_scene3(s, Samples3::Intended, 1, 9278, {});
+  REQUIRE(b.scene.samples.size() == 1);
+  CHECK(b.scene.halfspaces.at(static_cast<std::size_t>(b.scene.samples[0].halfspace)).name == "c1");
+  // Each sample is on a patch of its halfspace.
+  for (const CampaignScene3* g : {&a, &b})
+    for (const SampleSite& site : g->arranged.complex.samples)
+      CHECK(g->arranged.complex.patches.at(static_cast<std::size_t>(site.patch)).halfspace == site.halfspace);
+}

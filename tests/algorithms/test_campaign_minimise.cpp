@@ -5,13 +5,19 @@
 //   budget is honoured;
 // - the kept Prop. 5.1 counterexample (data/counterexamples/prop51-campaign-seed1-scene80.json) minimises to a
 //   smaller scene on which Prop. 5.1 still fails;
-// - simpler_values on known rationals;
+// - simpler_values and lower_segments on known values;
+// - carry_by_sign_vectors: a shape carried to fewer halfspaces, refused when a reduction merges inside and outside
+//   cells or makes a sign vector no original cell has;
+// - 3D: the kept manifold counterexample (seed 1, scene 543) and a Prop. 6.1 failure of a 3D intended shape
+//   (seed 1, scene 185: a CSG solid that is not orientation-preserving) minimise to smaller scenes on which the same
+//   check fails, the intended shape carried along; the same bytes when run again;
 // - check_scene on random_scene's scene is run_scene's record (but for the degeneracies);
 // - the summary SVG is well-formed enough (balanced tags) and changes with the rates.
 #include <hsx/algorithms/campaign/campaign.hpp>
 #include <hsx/algorithms/campaign/minimise.hpp>
 #include <hsx/io/campaign_files.hpp>
 #include <hsx/io/scene_json.hpp>
+#include <hsx/geometry/scene_builders.hpp>
 
 #include <catch2/catch.hpp>
 
@@ -49,6 +55,58 @@ TEST_CASE("minimise: simpler_values, simplest first", "[campaign][minimise]") {
   CHECK(simpler_values(q(6)) == std::vector<Rational>{q(0), q(3)});
   CHECK(simpler_values(q(0)).empty());
   CHECK(simpler_values(q(1, 2)) == std::vector<Rational>{q(0), q(1)});
+}
+
+TEST_CASE("minimise: lower_segments, lowest first", "[campaign][minimise]") {
+  CHECK(lower_segments(6) == std::vector<int>{3, 4});
+  CHECK(lower_segments(13) == std::vector<int>{3, 4, 6, 8, 12});
+  CHECK(lower_segments(3).empty());
+}
+
+namespace {
+
+/// The complex of a resolved 2D scene of `halfspaces` in the box [-4, 4]^2.
+Complex complex_of(std::vector<Halfspace2> halfspaces) {
+  Scene2 scene;
+  scene.domain = {{q(-4), q(-4)}, {q(4), q(4)}};
+  scene.domain_given = true;
+  scene.halfspaces = std::move(halfspaces);
+  validate_and_resolve(scene);
+  return arrange(scene).complex;
+}
+
+/// The flags of the cells whose sign vectors are among `inside`.
+std::vector<char> cells_with(const Complex& c, const std::vector<std::vector<char>>& inside) {
+  std::vector<char> out(c.cells.size(), 0);
+  for (std::size_t k = 0; k < c.cells.size(); ++k)
+    out[k] = std::find(inside.begin(), inside.end(), c.cells[k].inside) != inside.end() ? 1 : 0;
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("minimise: an intended shape carried by sign vectors", "[campaign][minimise]") {
+  const Halfspace2 d = disk("D", {q(0), q(0)}, q(2)), l = halfplane("L", {q(1), q(0)}, q(0));
+  const Complex both = complex_of({d, l}), alone = complex_of({d});
+  // The whole disk: well defined on the disk alone (its cell inside, the outer cell outside).
+  const std::vector<char> disk_shape = cells_with(both, {{1, 1}, {1, 0}});
+  const std::optional<std::vector<char>> carried = carry_by_sign_vectors(both, disk_shape, {0}, alone);
+  REQUIRE(carried);
+  CHECK(*carried == cells_with(alone, {{1}}));
+  // Unchanged on the same complex.
+  CHECK(carry_by_sign_vectors(both, disk_shape, {0, 1}, both) == std::optional<std::vector<char>>(disk_shape));
+  // Half the disk: removing L merges its inside and outside halves into one sign vector: not well defined.
+  CHECK_FALSE(carry_by_sign_vectors(both, cells_with(both, {{1, 1}}), {0}, alone));
+  // A moved disk overlapping the other makes a sign vector (inside both) no original cell has.
+  const Complex apart = complex_of({disk("A", {q(-2), q(0)}, q(1)), disk("B", {q(2), q(0)}, q(1))});
+  const Complex overlap = complex_of({disk("A", {q(-2), q(0)}, q(1)), disk("B", {q(-1), q(0)}, q(1))});
+  const std::vector<char> a_shape = cells_with(apart, {{1, 0}});
+  CHECK_FALSE(carry_by_sign_vectors(apart, a_shape, {0, 1}, overlap));
+  CHECK(carry_by_sign_vectors(apart, a_shape, {0}, complex_of({disk("A", {q(-2), q(0)}, q(1))})));
+  // Sizes that do not match.
+  CHECK_THROWS_AS(carry_by_sign_vectors(both, disk_shape, {2}, alone), std::invalid_argument);
+  CHECK_THROWS_AS(carry_by_sign_vectors(both, {1}, {0}, alone), std::invalid_argument);
+  CHECK_THROWS_AS(carry_by_sign_vectors(both, disk_shape, {0, 1}, alone), std::invalid_argument);
 }
 
 TEST_CASE("minimise: check_scene is run_scene without the generator", "[campaign][minimise]") {
@@ -182,4 +240,87 @@ TEST_CASE("summary SVG: balanced, deterministic, and it follows the rates", "[ca
   r.checks = {{"existence", CheckStatus::Held, "ok"}, {"beam1", CheckStatus::Held, "optimal: 1"}};
   b.add(r);
   CHECK(summary_svg(b) != svg);
+}
+
+namespace {
+
+/// The 3D campaign of proofs/campaigns.md (seed 1, 1..3 primitives, 6 segments, intended samples) with `checks`.
+CampaignSettings campaign3(const std::string& checks) {
+  CampaignSettings s;
+  s.dimension = 3;
+  s.seed = 1;
+  s.scene3.solid.min_primitives = 1;
+  s.scene3.solid.max_primitives = 3;
+  s.scene3.solid.segments = 6;
+  s.sample_policy = SamplePolicy::Intended;
+  s.checks = parse_check_list(checks);
+  return s;
+}
+
+/// The record of a 3D scene under `s` with the intended shape `cells` (cells of its complex).
+SceneRecord record3(const CampaignSettings& s, const Scene3& scene, const std::vector<int>& cells,
+                    std::uint64_t index) {
+  Arranged3 arranged = arrange_campaign_scene3(scene, s.limits);
+  std::vector<char> intended;
+  if (!cells.empty()) {
+    intended.assign(arranged.complex.cells.size(), 0);
+    for (int c : cells) intended.at(static_cast<std::size_t>(c)) = 1;
+  }
+  return check_scene(s, scene, std::move(arranged), intended, index);
+}
+
+}  // namespace
+
+TEST_CASE("minimise 3D: the manifold counterexample of seed 1, scene 543", "[campaign][minimise][campaign3]") {
+  const Scene3 scene = read_scene3_file(std::string(HSX_SOURCE_DIR) +
+                                        "/data/counterexamples/manifold3-campaign-seed1-scene543.json");
+  const CampaignSettings s = campaign3("manifold");
+  const SceneRecord record = record3(s, scene, {}, 543);
+  REQUIRE(record.failed());
+  const MinimiseResult3 m = minimise_scene(s, scene, record);
+  CHECK(m.reproduced);
+  CHECK_FALSE(m.exhausted);
+  CHECK(m.scene.halfspaces.size() < scene.halfspaces.size());
+  CHECK(m.lowered_segments > 0);
+  CHECK(m.record.intended.empty());  // manifold does not look at the intended shape
+  // It reads back from its file and fails the same way; the same bytes again.
+  const std::string text = write_scene3(m.scene).dump();
+  const SceneRecord again = record3(s, read_scene3_text(text), {}, 543);
+  REQUIRE(again.checks.size() == 1);
+  CHECK(again.checks[0].status == CheckStatus::Failed);
+  CHECK(again.checks[0].witness.find("pinches at a point") != std::string::npos);
+  CHECK(write_scene3(minimise_scene(s, scene, record).scene).dump() == text);
+  const std::optional<Scene3> kept = minimised_failure(record, m);
+  REQUIRE(kept);
+  CHECK(kept->description.find("scene 543 minimised (3 -> ") != std::string::npos);
+  CHECK(kept->description.find(" segment count") != std::string::npos);
+  // A 2D campaign's settings are refused.
+  CampaignSettings two = s;
+  two.dimension = 2;
+  CHECK_THROWS_AS(minimise_scene(two, scene, record), std::invalid_argument);
+}
+
+TEST_CASE("minimise 3D: a Prop. 6.1 failure keeps its intended shape (seed 1, scene 185)",
+          "[campaign][minimise][campaign3]") {
+  const CampaignSettings s = campaign3("prop61");
+  const SceneRecord record = run_scene(s, 185);
+  REQUIRE(record.failed());
+  REQUIRE(record.scene3);
+  REQUIRE_FALSE(record.intended.empty());
+  REQUIRE(record.checks[0].witness.find("the target is not orientation-preserving") == 0);
+  const MinimiseResult3 m = minimise_scene(s, *record.scene3, record);
+  CHECK(m.reproduced);
+  CHECK(m.scene.halfspaces.size() < record.scene3->halfspaces.size());
+  REQUIRE_FALSE(m.record.intended.empty());  // the carried shape
+  CHECK(m.record.checks.at(0).status == CheckStatus::Failed);
+  // Checked again from its file with the carried shape (the note names its cells): the same failure.
+  const SceneRecord again = record3(s, read_scene3_text(write_scene3(m.scene).dump()), m.record.intended, 185);
+  CHECK(again.checks.at(0).status == CheckStatus::Failed);
+  CHECK(again.checks.at(0).witness == m.record.checks.at(0).witness);
+  // Without its intended shape the reduced scene does not fail: the shape is part of the failure.
+  CHECK_FALSE(record3(s, m.scene, {}, 185).failed());
+  const std::optional<Scene3> kept = minimised_failure(record, m);
+  REQUIRE(kept);
+  CHECK(kept->description.find("[the intended shape carried to it: cells {") != std::string::npos);
+  CHECK(write_scene3(minimise_scene(s, *record.scene3, record).scene).dump() == write_scene3(m.scene).dump());
 }

@@ -6,6 +6,9 @@
 #   existing output folder, exit 2 and leave no output;
 # - a failing scene is minimised into failures/scene-K.min.json (fewer halfspaces, its note, `hsx check` fails it
 #   the same way); the same bytes for --jobs 1 and 2; --no-minimise writes no .min.json and the same records;
+# - a failing 3D scene is minimised too (fewer halfspaces, segments lowered; `hsx check` fails it the same way;
+#   the same bytes when run again);
+# - a scene refused while generating it is tallied under its halfspace count, not under 0 (2D and 3D);
 # - summary.svg is written with summary.json, parses as XML, has a panel per check, and changes with the rates.
 # Usage: campaign_keep_tests.sh HSX. Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
@@ -83,5 +86,27 @@ expect_status 3 "shard 1/2 (scene 80)" "$HSX" campaign "${FAIL[@]}" --shard 1/2 
 expect_status 3 "--merge with a failure" "$HSX" campaign --out gm --merge g0 g1
 same f1 gm "merged shards with a minimised failure and the whole range"
 same f1.txt out.txt "the merged table with a failure"
+
+# ---- a 3D failure minimised (scene 543 of seed 1: a sphere and two cylinders pinching at a vertex) ----
+GEN3=(--dimension 3 --seed 1 --start 543 --count 1 --primitives 1..3 --segments 6 --sample-policy intended --checks manifold)
+expect_status 3 "a failing 3D scene" "$HSX" campaign "${GEN3[@]}" --out t1
+[[ "$(ls t1/failures | tr '\n' ' ')" == "scene-543.json scene-543.min.json " ]] && pass || fail "3D failures/: $(ls t1/failures)"
+jq -r .description t1/failures/scene-543.min.json | grep -q "^hsx campaign --seed 1, scene 543 minimised (3 -> 2 halfspaces, .* segment counts lowered" &&
+  pass || fail "the 3D minimised note: $(jq -r .description t1/failures/scene-543.min.json | head -c 300)"
+expect_status 3 "hsx check on the minimised 3D scene" "$HSX" check t1/failures/scene-543.min.json
+grep -q "manifold.*FAIL .*pinches at a point" out.txt && pass || fail "hsx check on the minimised 3D scene: $(head -c 600 out.txt)"
+expect_status 3 "the 3D scene again, --jobs 2" "$HSX" campaign "${GEN3[@]}" --out t2 --jobs 2
+same t1 t2 "a 3D campaign's minimised failure, run twice"
+
+# ---- a scene refused while generating it is tallied under its halfspace count (2D and 3D), not under 0 ----
+expect_status 0 "refused 2D scenes" "$HSX" campaign --seed 1 --count 3 --halfspaces 4 --sample-policy intended \
+  --max-cells 3 --checks existence --out r2
+[[ "$(jq -c '[.outcome, .halfspaces]' r2/results.jsonl | sort -u)" == '["refused",4]' ]] && pass ||
+  fail "refused 2D records: $(cut -c1-200 r2/results.jsonl)"
+grep -qE '^ +4 +3 +0 +0 +3 +0 ' out.txt && pass || fail "refused 2D scenes' row: $(cat out.txt)"
+expect_status 0 "refused 3D scenes" "$HSX" campaign --dimension 3 --seed 1 --count 3 --max-cells 20 --checks existence --out r3
+[[ "$(jq -c 'select(.outcome != "refused" or .halfspaces < 1)' r3/results.jsonl)" == "" ]] && pass ||
+  fail "refused 3D records: $(cut -c1-200 r3/results.jsonl)"
+grep -qE '^ +0 ' out.txt && fail "a 0-halfspace row: $(cat out.txt)" || pass
 
 testlib_finish

@@ -4,7 +4,7 @@
 #   single-process run, on a campaign with a real failure (scene 80 of seed 1 at 8 halfspaces fails Prop. 5.1);
 # - a campaign cut short (its results.jsonl truncated, the last line torn) and resumed under mpirun equals the
 #   uninterrupted one;
-# - a 3D campaign (--dimension 3) gives the same folder and table under mpirun;
+# - a 3D campaign (--dimension 3) gives the same folder and table under mpirun, a minimised 3D failure included;
 # - a folder rank 0 refuses stops every rank with exit 2 and leaves the folder as it was.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
@@ -42,6 +42,10 @@ grep -q "2 MPI processes" "$TMP/two.err" && pass || fail "mpirun: the timing lin
 ARGS3=(campaign --dimension 3 --seed 4 --count 6 --primitives 1..2 --segments 6 --degeneracies 1..2 --max-cells 40
        --sample-policy intended --checks existence,uniqueness,manifold,prop61,beam2)
 both 3 0 "${ARGS3[@]}"
+# A failing 3D scene (seed 1, scene 543) minimised on the rank that ran it: the same .min.json under mpirun.
+both 3f 3 campaign --dimension 3 --seed 1 --start 542 --count 2 --primitives 1..3 --segments 6 --sample-policy intended \
+  --checks manifold
+[[ -f "$TMP/two3f/failures/scene-543.min.json" ]] && pass || fail "mpirun: no minimised 3D scene ($(ls "$TMP/two3f/failures" 2>&1))"
 
 # Cut short, then resumed under mpirun.
 cp -r "$TMP/one" "$TMP/cut"

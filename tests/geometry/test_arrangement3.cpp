@@ -256,6 +256,15 @@ TEST_CASE("arrangement3: samples on patches, refused on edges where boundaries m
   REQUIRE_THROWS_AS(Arrangement3::build(scene), InputError);
   scene.samples[0].location = scene.samples[0].given = {Rational(1, 2), Rational(1, 2), 1};  // A's face diagonal
   REQUIRE_NOTHROW(Arrangement3::build(scene));
+  // On P outside A, on the line of an edge where P crosses A (x = 1): inside a patch of P. A triangle of P whose
+  // edge's line passes through the sample but which does not hold it says nothing (it refused such samples once:
+  // campaign 3D seed 1, scene 4264).
+  scene.samples[0].halfspace = 1;
+  scene.samples[0].location = scene.samples[0].given = {1, Rational(3, 2), 0};
+  const Arrangement3 on_p = Arrangement3::build(scene);
+  CHECK(on_p.triangles()[static_cast<std::size_t>(on_p.sample_triangles()[0])].halfspaces == std::vector<int>{1});
+  scene.samples[0].location = scene.samples[0].given = {1, Rational(1, 2), 0};  // on that edge: refused
+  REQUIRE_THROWS_AS(Arrangement3::build(scene), InputError);
 }
 
 TEST_CASE("arrangement3: a surface that intersects itself is refused, naming its triangles") {

@@ -92,9 +92,13 @@ std::string failure_note(const campaign::SceneRecord& record);
 /// The minimised scene of `record` (a failed record) as failures/scene-<index>.min.json keeps it: result.scene with
 /// its description the one-line note "hsx campaign --seed S, scene K minimised (H -> h halfspaces, N -> n samples,
 /// C coordinates simplified, T steps[, the step budget ran out]): failed CHECKS: WITNESS" (the minimised scene's
-/// first target witness, cut at 400 characters; "error: MESSAGE" for an error), ending with where the original
-/// is. std::nullopt when the scene did not fail again under the restricted checks (result.reproduced false).
+/// first target witness, cut at 400 characters; "error: MESSAGE" for an error), then, when the minimised record
+/// has an intended shape (SamplePolicy::Intended, carried by minimise_scene), " [the intended shape carried to
+/// it: cells {A,B,...} of its complex]", ending with where the original is. std::nullopt when the scene did not
+/// fail again under the restricted checks (result.reproduced false).
 std::optional<Scene2> minimised_failure(const campaign::SceneRecord& record, const campaign::MinimiseResult& result);
+/// The same for a 3D scene: "S segment counts lowered" in place of "C coordinates simplified".
+std::optional<Scene3> minimised_failure(const campaign::SceneRecord& record, const campaign::MinimiseResult3& result);
 
 /// hsx campaign --merge: the shard folders `shards` (finished campaigns --shard i/k of one campaign: campaign.json
 /// equal but for plan.shard, every shard 0/k .. (k-1)/k given once, each with all its scenes) merged into `out`, a
@@ -125,10 +129,11 @@ class CampaignFolder {
   /// Whether the torn last line of a resumed results.jsonl was cut off.
   bool cut_torn_line() const { return cut_torn_line_; }
 
-  /// Keeps a record: its scene as failures/scene-<index>.json first when record.failed() (record.scene must be
-  /// set then), and `minimised` (minimised_failure's, description included) as failures/scene-<index>.min.json,
-  /// then its line appended to results.jsonl and flushed. Throws OutputError.
-  void append(const campaign::SceneRecord& record, const std::optional<Scene2>& minimised = std::nullopt);
+  /// Keeps a record: its scene as failures/scene-<index>.json first when record.failed() (record.scene or
+  /// record.scene3 must be set then), and `minimised` or `minimised3` (minimised_failure's, description included)
+  /// as failures/scene-<index>.min.json, then its line appended to results.jsonl and flushed. Throws OutputError.
+  void append(const campaign::SceneRecord& record, const std::optional<Scene2>& minimised = std::nullopt,
+              const std::optional<Scene3>& minimised3 = std::nullopt);
   /// Writes summary.json and summary.svg (each atomically). Throws OutputError.
   void write_summary(const campaign::Summary& summary);
 

@@ -622,10 +622,13 @@ SceneRecord check_scene_since(const CampaignSettings& s, const Scene& scene, std
 }
 
 /// A record of a scene the generator could not make: refused by the arrangement limits, or an error.
-SceneRecord not_generated(const CampaignSettings& s, std::uint64_t index, SceneOutcome outcome, std::string note) {
+/// `halfspaces`: the scene's halfspace count as far as the generator made it (the summary tallies it there).
+SceneRecord not_generated(const CampaignSettings& s, std::uint64_t index, SceneOutcome outcome, std::string note,
+                          int halfspaces) {
   SceneRecord r;
   r.index = index;
   r.seed = s.seed;
+  r.halfspaces = halfspaces;
   r.outcome = outcome;
   r.note = std::move(note);
   all_checks(r, recorded_checks(s), CheckStatus::Skipped,
@@ -640,19 +643,47 @@ SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, std::uin
   return check_scene_since<Scene2, Arranged2>(s, scene, index, cancel, Clock::now());
 }
 
+SceneRecord check_scene(const CampaignSettings& s, const Scene2& scene, Arranged2 arranged,
+                        const std::vector<char>& intended, std::uint64_t index, const std::function<bool()>& cancel) {
+  if (!intended.empty() && intended.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("check_scene: the intended solid needs one flag per cell");
+  return check_scene_since<Scene2, Arranged2>(s, scene, index, cancel, Clock::now(), std::move(arranged), intended);
+}
+
+SceneRecord check_scene(const CampaignSettings& s, const Scene3& scene, Arranged3 arranged,
+                        const std::vector<char>& intended, std::uint64_t index, const std::function<bool()>& cancel) {
+  if (!intended.empty() && intended.size() != arranged.complex.cells.size())
+    throw std::invalid_argument("check_scene: the intended solid needs one flag per cell");
+  return check_scene_since<Scene3, Arranged3>(s, scene, index, cancel, Clock::now(), std::move(arranged), intended);
+}
+
 namespace {
+
+/// The halfspace count of 2D scene `index` before its samples: random_scene without samples (no arrangement; the
+/// same halfspaces under either sample policy), or 0 when even that throws.
+int halfspaces_drawn(const CampaignSettings& s, std::uint64_t index) {
+  RandomSceneSettings bare = s.scene;
+  bare.max_samples = 0;
+  try {
+    return static_cast<int>(random_scene(bare, s.seed, index).scene.halfspaces.size());
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
 
 /// run_scene for CampaignSettings::dimension 3.
 SceneRecord run_scene3(const CampaignSettings& s, std::uint64_t index, const std::function<bool()>& cancel) {
   const Clock::time_point start = Clock::now();
   const bool intended = s.sample_policy == SamplePolicy::Intended;
   CampaignScene3 g;
+  int generated = 0;
   try {
-    g = random_campaign_scene3(s.scene3, intended ? Samples3::Intended : Samples3::Uniform, s.seed, index, s.limits);
+    g = random_campaign_scene3(s.scene3, intended ? Samples3::Intended : Samples3::Uniform, s.seed, index, s.limits,
+                               &generated);
   } catch (const InputError& e) {
-    return not_generated(s, index, SceneOutcome::Refused, std::string("generating it: ") + e.what());
+    return not_generated(s, index, SceneOutcome::Refused, std::string("generating it: ") + e.what(), generated);
   } catch (const std::exception& e) {
-    return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what());
+    return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what(), generated);
   }
   const std::vector<char> none;
   SceneRecord r = check_scene_since<Scene3, Arranged3>(s, g.scene, index, cancel, start, std::move(g.arranged),
@@ -681,9 +712,11 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
                          s.sample_policy == SamplePolicy::Intended
                              ? std::string("arranging it to choose its intended shape: ") + e.what()
                              : std::string("choosing its samples (under the default arrangement limits, which the "
-                                           "campaign's do not change): ") + e.what());
+                                           "campaign's do not change): ") + e.what(),
+                         halfspaces_drawn(s, index));
   } catch (const std::exception& e) {
-    return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what());
+    return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what(),
+                         halfspaces_drawn(s, index));
   }
   SceneRecord r = check_scene_since<Scene2, Arranged2>(s, g.generated.scene, index, cancel, start,
                                                        std::move(g.arranged), g.intended);

@@ -14,13 +14,6 @@ namespace {
 
 Rational half(Random& rng, long a, long b) { return Rational(rng.in(a, b)) / Rational(2); }
 
-Arranged3 arrange_for_campaign(const Scene3& scene, const ArrangementLimits& limits) {
-  Arrangement3Options options;
-  options.volumes = false;
-  options.threads = 1;
-  return arrange(scene, limits, options);
-}
-
 /// The axis (0, 1, 2) of an axis-aligned plane normal, or -1.
 int axis_of(const PointQ3& n) {
   const bool x = n.x != 0, y = n.y != 0, z = n.z != 0;
@@ -127,6 +120,13 @@ std::optional<Degeneracy3> degeneracy3_from_string(const std::string& s) {
   return std::nullopt;
 }
 
+Arranged3 arrange_campaign_scene3(const Scene3& scene, const ArrangementLimits& limits) {
+  Arrangement3Options options;
+  options.volumes = false;
+  options.threads = 1;
+  return arrange(scene, limits, options);
+}
+
 void validate(const Scene3Settings& s) {
   if (s.solid.min_primitives < 1 || s.solid.max_primitives < s.solid.min_primitives)
     throw std::invalid_argument("primitives: need 1 <= A <= B");
@@ -140,9 +140,13 @@ void validate(const Scene3Settings& s) {
 }
 
 CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 policy, std::uint64_t seed,
-                                      std::uint64_t index, const ArrangementLimits& limits) {
+                                      std::uint64_t index, const ArrangementLimits& limits, int* generated) {
   validate(settings);
-  csg::RandomSolid3 r = csg::random_solid3(settings.solid, seed, index, limits);
+  csg::RandomSolid3 r = csg::random_solid3(settings.solid, seed, index, limits, generated);
+  const auto made = [&](const Scene3& scene) {
+    if (generated) *generated = static_cast<int>(scene.halfspaces.size());
+  };
+  made(r.scene);
   const bool bounded = r.status == csg::SolidStatus::Bounded;
   Random rng(item_seed(item_seed(seed, index), 1));
   CampaignScene3 out;
@@ -166,12 +170,13 @@ CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 p
       out.degeneracies.push_back(to_string(d));
     }
   }
+  made(out.scene);
   if (out.degeneracies.empty()) {
     out.arranged = std::move(r.arranged);
   } else {
     out.scene.domain_given = false;
     validate_and_resolve(out.scene);
-    out.arranged = arrange_for_campaign(out.scene, limits);
+    out.arranged = arrange_campaign_scene3(out.scene, limits);
   }
   const auto intended = [&](const Complex& complex) {
     return bounded ? csg::evaluate(*r.expression, complex) : std::vector<char>(complex.cells.size(), 0);
@@ -182,7 +187,7 @@ CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 p
     Scene3 sampled = bsh::scene_with_samples(out.scene, out.arranged, patches, out.scene.description);
     validate_and_resolve(sampled);
     out.scene = std::move(sampled);
-    out.arranged = arrange_for_campaign(out.scene, limits);
+    out.arranged = arrange_campaign_scene3(out.scene, limits);
     out.intended = intended(out.arranged.complex);
   }
   return out;

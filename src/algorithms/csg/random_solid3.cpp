@@ -122,7 +122,8 @@ class Drawer {
 }  // namespace
 
 RandomSolid3 random_solid3(const RandomSolid3Settings& settings, std::uint64_t seed, std::uint64_t index,
-                           const ArrangementLimits& limits) {
+                           const ArrangementLimits& limits, int* drawn) {
+  if (drawn) *drawn = 0;
   if (settings.min_primitives < 1 || settings.max_primitives < settings.min_primitives)
     throw std::invalid_argument("RandomSolid3Settings: need 1 <= min_primitives <= max_primitives");
   if (settings.segments < 6 || settings.segments > 64)
@@ -143,6 +144,7 @@ RandomSolid3 random_solid3(const RandomSolid3Settings& settings, std::uint64_t s
     }
     r.scene.description = "random 3D CSG solid " + std::to_string(index) + " of seed " + std::to_string(seed) +
                           (settings.hollow ? " (hollow)" : "");
+    if (drawn) *drawn = static_cast<int>(r.scene.halfspaces.size());
     validate_and_resolve(r.scene);
     Arrangement3Options options;
     options.volumes = false;

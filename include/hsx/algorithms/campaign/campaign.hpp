@@ -137,7 +137,9 @@ std::optional<SceneOutcome> scene_outcome_from_string(const std::string& s);
 struct SceneRecord {
   std::uint64_t index = 0;
   std::uint64_t seed = 0;
-  int halfspaces = 0;                     ///< the scene's halfspace count
+  /// The scene's halfspace count; for a scene refused (or thrown on) by its generator, as far as it was generated
+  /// (2D: before its samples; 3D: random_campaign_scene3's `generated`)
+  int halfspaces = 0;
   long cells = 0;                         ///< its complex's cells (0 when not arranged)
   long patches = 0;                       ///< its complex's patches (0 when not arranged)
   int samples = 0;                        ///< its samples
@@ -266,6 +268,19 @@ Scene2 generate_scene(const CampaignSettings& settings, std::uint64_t index);
 /// scene; throws what an extra check's function throws. Used to minimise a failing scene
 /// (algorithms/campaign/minimise.hpp).
 SceneRecord check_scene(const CampaignSettings& settings, const Scene2& scene, std::uint64_t index,
+                        const std::function<bool()>& cancel = {});
+
+/// check_scene on a scene already arranged, with an intended shape (minimise.hpp carries a failing scene's intended
+/// shape to its reduced scenes this way): `arranged` is arrange(scene) within settings.limits (for a 3D scene, as
+/// its generator arranges it: arrange_campaign_scene3, scene3.hpp), `intended` one flag per cell of its complex or
+/// empty (check_arranged's), recorded in the record's `intended` as run_scene records it. settings.time_limit counts
+/// from this call. Otherwise as check_scene (the 3D record's `scene3` is set when failed(); settings.extra is not
+/// run on a 3D scene). Throws std::invalid_argument for an `intended` of the wrong size.
+SceneRecord check_scene(const CampaignSettings& settings, const Scene2& scene, Arranged2 arranged,
+                        const std::vector<char>& intended, std::uint64_t index,
+                        const std::function<bool()>& cancel = {});
+SceneRecord check_scene(const CampaignSettings& settings, const Scene3& scene, Arranged3 arranged,
+                        const std::vector<char>& intended, std::uint64_t index,
                         const std::function<bool()>& cancel = {});
 
 /// Runs the scenes `indices` on `jobs` threads (>= 1) and calls `sink` with each record, on the calling thread,

@@ -81,12 +81,19 @@ struct CampaignScene3 {
   std::vector<std::string> degeneracies;  ///< the patterns applied (to_string), in order
 };
 
+/// `scene` (validated and resolved) arranged as the procedure arranges it: Arrangement3Options volumes = false,
+/// threads = 1, within `limits` (InputError beyond them, or for a sample the arrangement refuses).
+Arranged3 arrange_campaign_scene3(const Scene3& scene, const ArrangementLimits& limits);
+
 /// Checks the settings' ranges; throws std::invalid_argument naming the first bad one.
 void validate(const Scene3Settings& settings);
 
 /// Scene `index` of `seed` by the procedure above. Throws std::invalid_argument for settings out of range and
-/// InputError when an arrangement outgrows `limits`.
+/// InputError when an arrangement outgrows `limits`. `generated`, when not null, is set to the scene's halfspace
+/// count as far as it was made, also when it throws: step 1's scene's (random_solid3's `drawn`, also when its
+/// arrangement is refused), with the patterns' after step 3 (a campaign tallies a refused scene there).
 CampaignScene3 random_campaign_scene3(const Scene3Settings& settings, Samples3 samples, std::uint64_t seed,
-                                      std::uint64_t index, const ArrangementLimits& limits);
+                                      std::uint64_t index, const ArrangementLimits& limits,
+                                      int* generated = nullptr);
 
 }  // namespace hsx::campaign

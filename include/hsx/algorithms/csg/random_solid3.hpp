@@ -54,8 +54,9 @@ struct RandomSolid3 {
 };
 
 /// Solid `index` of `seed` by the procedure above. Throws std::invalid_argument for settings out of range;
-/// InputError when the arrangement outgrows `limits`.
+/// InputError when the arrangement outgrows `limits`. `drawn`, when not null, is set to the halfspace count of the
+/// last scene drawn, also when the arrangement of that scene throws (0 when it throws before drawing).
 RandomSolid3 random_solid3(const RandomSolid3Settings& settings, std::uint64_t seed, std::uint64_t index,
-                           const ArrangementLimits& limits = {});
+                           const ArrangementLimits& limits = {}, int* drawn = nullptr);
 
 }  // namespace hsx::csg

@@ -12,6 +12,7 @@
 #include <CGAL/Cartesian.h>
 
 #include <algorithm>
+#include <array>
 #include <deque>
 #include <map>
 #include <set>
@@ -100,6 +101,16 @@ Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi) {
   }
 }
 
+/// Whether the curve of `h` runs exactly between h's two vertices (see DistinctCurves on why this is checked).
+bool curve_matches_ends(CgalArrangement::Halfedge_const_handle h) {
+  auto same = [](const CgalPoint& p, const CgalPoint& q) {
+    return CGAL::compare(p.x(), q.x()) == CGAL::EQUAL && CGAL::compare(p.y(), q.y()) == CGAL::EQUAL;
+  };
+  const CgalPoint &a = h->source()->point(), &b = h->target()->point();
+  const CgalPoint &l = h->curve().left(), &r = h->curve().right();
+  return (same(a, l) && same(b, r)) || (same(a, r) && same(b, l));
+}
+
 /// y of a non-vertical x-monotone curve at x0 (x0 within its closed x-range).
 OneRoot y_at(const XCurve& cv, const Rational& x0) {
   if (cv.is_linear()) {
@@ -121,6 +132,12 @@ OneRoot y_at(const XCurve& cv, const Rational& x0) {
 /// merged here rather than left to the sweep, whose cost grows with the number of curves overlapping at once
 /// (cubically for n copies of one circle). A curve's data is its index g; tags[g] lists what it bounds:
 /// halfspace indices and kBoxCurve.
+/// Collinear segments that overlap (a polygon edge along part of a half-plane's chord or of a box side, two polygons
+/// sharing part of an edge) are cut at every end point on their common line into pieces, each handed over once with
+/// the union of the tags covering it: CGAL then never sees an overlap. This is a correctness fix, not only a speed
+/// one: Debian's CGAL 5.5 sweep (Arr_circle_segment_traits_2 with consolidated data) can leave an edge whose curve
+/// is a longer overlapping segment than the edge itself when several collinear segments overlap among circles
+/// (tests/data/regressions/overlap-curve-mismatch.json; Arrangement2::build now also checks every edge's curve).
 /// `cells_at_least` is a lower bound on the bounded faces, known before the sweep: inserted first, each distinct
 /// half-plane chord (ends on the box, meets every other chord or circle in finitely many points) and each
 /// distinct circle splits at least one face, and later curves never merge faces.
@@ -136,8 +153,8 @@ class CurveCollector {
     const bool swapped = b.x < a.x || (b.x == a.x && b.y < a.y);  // the key is the lexicographically ordered pair
     const PointQ2& lo = swapped ? b : a;
     const PointQ2& hi = swapped ? a : b;
-    add({Rational(0), lo.x, lo.y, hi.x, hi.y}, tag,
-        [&] { return BaseCurve(Kernel::Segment_2(to_kernel(lo), to_kernel(hi))); });
+    if (add({Rational(0), lo.x, lo.y, hi.x, hi.y}, tag, [&] { return make_segment(lo, hi); }))
+      segments_.push_back({lo, hi, last_});
   }
   void circle(const PointQ2& center, const Rational& radius, int tag) {
     const Rational squared = radius * radius;
@@ -151,12 +168,24 @@ class CurveCollector {
       const std::vector<int>& tags = out_.tags[static_cast<std::size_t>(g)];
       if (std::find(tags.begin(), tags.end(), kBoxCurve) == tags.end()) ++out_.cells_at_least;
     }
+    cut_overlaps();
     return std::move(out_);
   }
 
  private:
+  /// A distinct segment: its lexicographically ordered ends and its curve index.
+  struct Segment {
+    PointQ2 lo, hi;
+    int curve;
+  };
+
+  static BaseCurve make_segment(const PointQ2& lo, const PointQ2& hi) {
+    return BaseCurve(Kernel::Segment_2(to_kernel(lo), to_kernel(hi)));
+  }
+
+  /// Adds `tag` to the curve with `key` (made by `make` when new); true when the curve is new.
   template <typename Make>
-  void add(std::vector<Rational> key, int tag, Make make) {
+  bool add(std::vector<Rational> key, int tag, Make make) {
     const auto [it, fresh] = index_.emplace(std::move(key), static_cast<int>(out_.curves.size()));
     if (fresh) {
       out_.curves.emplace_back(make(), it->second);
@@ -165,9 +194,105 @@ class CurveCollector {
     last_ = it->second;
     std::vector<int>& tags = out_.tags[static_cast<std::size_t>(it->second)];
     if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+    return fresh;
   }
+
+  /// Replaces every set of overlapping collinear segments by the pieces between their end points (see
+  /// DistinctCurves). Pieces keep every end point as a vertex, as CGAL's own overlap handling would.
+  void cut_overlaps() {
+    // Group by supporting line a x + b y = c, scaled so that its first non-zero coefficient of (a, b) is 1.
+    std::map<std::array<Rational, 3>, std::vector<int>> lines;
+    for (int k = 0; k < static_cast<int>(segments_.size()); ++k) {
+      const Segment& s = segments_[static_cast<std::size_t>(k)];
+      Rational a = s.hi.y - s.lo.y, b = s.lo.x - s.hi.x;
+      const Rational scale = a != 0 ? a : b;
+      a /= scale;
+      b /= scale;
+      lines[{a, b, a * s.lo.x + b * s.lo.y}].push_back(k);
+    }
+    // Each cut line's pieces take the place of its first segment, so that the curves keep their order.
+    std::vector<char> replaced(out_.curves.size(), 0);
+    std::map<int, DistinctCurves> pieces;  // first replaced curve -> the pieces of its line
+    for (const auto& [line, members] : lines)
+      if (members.size() > 1 && overlapping(members)) {
+        int first = at(members[0]).curve;
+        for (int k : members) first = std::min(first, at(k).curve);
+        cut_line(members, replaced, pieces[first]);
+      }
+    if (pieces.empty()) return;
+    DistinctCurves kept;
+    kept.cells_at_least = out_.cells_at_least;
+    auto keep = [&](const BaseCurve& curve, std::vector<int> tags) {
+      kept.curves.emplace_back(curve, static_cast<int>(kept.curves.size()));
+      kept.tags.push_back(std::move(tags));
+    };
+    for (std::size_t g = 0; g < out_.curves.size(); ++g) {
+      if (!replaced[g]) keep(out_.curves[g], std::move(out_.tags[g]));
+      const auto line = pieces.find(static_cast<int>(g));
+      if (line == pieces.end()) continue;
+      for (std::size_t p = 0; p < line->second.curves.size(); ++p)
+        keep(line->second.curves[p], std::move(line->second.tags[p]));
+    }
+    out_ = std::move(kept);
+  }
+
+  /// Whether two of the collinear segments `members` share more than an end point. Collinear segments ordered by
+  /// their lower ends overlap exactly when one starts before the furthest end seen so far.
+  bool overlapping(std::vector<int> members) const {
+    std::sort(members.begin(), members.end(), [&](int i, int j) { return less(at(i).lo, at(j).lo); });
+    const PointQ2* reach = &at(members[0]).hi;
+    for (std::size_t k = 1; k < members.size(); ++k) {
+      if (less(at(members[k]).lo, *reach)) return true;
+      if (less(*reach, at(members[k]).hi)) reach = &at(members[k]).hi;
+    }
+    return false;
+  }
+
+  /// Cuts the collinear segments `members` at all their end points; each piece covered by some segment goes to
+  /// `pieces` with the union of their tags, and the segments are marked in `replaced`.
+  void cut_line(const std::vector<int>& members, std::vector<char>& replaced, DistinctCurves& pieces) const {
+    std::vector<PointQ2> points;
+    for (int k : members) {
+      points.push_back(at(k).lo);
+      points.push_back(at(k).hi);
+      replaced[static_cast<std::size_t>(at(k).curve)] = 1;
+    }
+    std::sort(points.begin(), points.end(), less);
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    // Sweep along the line: which tags cover the piece [points[p], points[p + 1]], with their multiplicities.
+    std::vector<std::pair<PointQ2, int>> starts, ends;  // (point, member)
+    for (int k : members) {
+      starts.emplace_back(at(k).lo, k);
+      ends.emplace_back(at(k).hi, k);
+    }
+    auto by_point = [](const std::pair<PointQ2, int>& u, const std::pair<PointQ2, int>& v) {
+      return less(u.first, v.first);
+    };
+    std::sort(starts.begin(), starts.end(), by_point);
+    std::sort(ends.begin(), ends.end(), by_point);
+    std::map<int, int> covering;  // tag -> number of active segments carrying it
+    std::size_t next_start = 0, next_end = 0;
+    for (std::size_t p = 0; p + 1 < points.size(); ++p) {
+      for (; next_end < ends.size() && !less(points[p], ends[next_end].first); ++next_end)
+        for (int tag : tags_of(ends[next_end].second))
+          if (--covering[tag] == 0) covering.erase(tag);
+      for (; next_start < starts.size() && !less(points[p], starts[next_start].first); ++next_start)
+        for (int tag : tags_of(starts[next_start].second)) ++covering[tag];
+      if (covering.empty()) continue;
+      std::vector<int> tags;
+      for (const auto& [tag, count] : covering) tags.push_back(tag);
+      pieces.curves.emplace_back(make_segment(points[p], points[p + 1]), 0);
+      pieces.tags.push_back(std::move(tags));
+    }
+  }
+
+  static bool less(const PointQ2& a, const PointQ2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+  const Segment& at(int k) const { return segments_[static_cast<std::size_t>(k)]; }
+  const std::vector<int>& tags_of(int k) const { return out_.tags[static_cast<std::size_t>(at(k).curve)]; }
+
   std::map<std::vector<Rational>, int> index_;
   std::set<int> splitting_;
+  std::vector<Segment> segments_;
   int last_ = -1;
   DistinctCurves out_;
 };
@@ -295,6 +420,8 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     edge.target = vertex_id(h->target());
     edge.left_face = face_id(h->face());
     edge.right_face = face_id(h->twin()->face());
+    if (!curve_matches_ends(h))
+      throw std::logic_error("CGAL left an arrangement edge whose curve does not end at its vertices");
     for (auto it = h->curve().data().begin(); it != h->curve().data().end(); ++it)
       for (int tag : curves.tags[static_cast<std::size_t>(*it)]) {
         if (tag == kBoxCurve)

@@ -502,3 +502,84 @@ TEST_CASE("arrangement2: coincident copies of a boundary are one curve carrying 
   }
   CHECK(arcs == 2);
 }
+
+namespace {
+
+Halfspace2 rectangle(const std::string& name, const Rational& x0, const Rational& y0, const Rational& x1,
+                     const Rational& y1, bool complement) {
+  Halfspace2 h;
+  h.name = name;
+  h.kind = HalfspaceKind2::Polygon;
+  h.vertices = {pt(x0, y0), pt(x1, y0), pt(x1, y1), pt(x0, y1)};
+  h.complement = complement;
+  return h;
+}
+
+Halfspace2 disk(const std::string& name, const Rational& x, const Rational& y, const Rational& r) {
+  Halfspace2 h;
+  h.name = name;
+  h.kind = HalfspaceKind2::Disk;
+  h.center = pt(x, y);
+  h.radius = r;
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("arrangement2: overlapping collinear segments among circles (data/crashes/scene/overlap-curve-mismatch.json)",
+          "[arrangement2][regression]") {
+  // Three rectangles and a half-plane share the line y = 4, which two circles cross. CGAL 5.5's sweep, given the
+  // overlapping segments, left the edge [1/2, 1] x {4} with the curve [-1, 1] x {4}, and the arrangement failed
+  // ("face is not closed above its base edge"); the overlaps are now cut before the sweep.
+  const Rational h(1, 2);
+  Scene2 scene;
+  scene.domain = box(-9, -7, 8, 9);
+  scene.domain_given = true;
+  scene.halfspaces.push_back(rectangle("P61", -1, 1, 3 * h, 4, true));
+  scene.halfspaces.push_back(rectangle("P150", -1, 1, h, 4, false));
+  scene.halfspaces.push_back(disk("D181", 0, 2, 5 * h));
+  scene.halfspaces.push_back(disk("D182", -5 * h, 5 * h, 3));
+  scene.halfspaces.push_back(rectangle("P188", -3 * h, 5 * h, 1, 4, true));
+  Halfspace2 line;
+  line.name = "L198";
+  line.normal = pt(0, -1);
+  line.offset = -4;
+  scene.halfspaces.push_back(line);
+  validate_and_resolve(scene);
+  const Arrangement2 arr = Arrangement2::build(scene);
+  CHECK_NOTHROW(check_structure(scene, arr));
+  CHECK_NOTHROW(check_faces(scene, arr));
+  CHECK_NOTHROW(check_areas(scene, arr));
+}
+
+TEST_CASE("arrangement2: a polygon edge along part of a half-plane's line splits it into pieces with their halfspaces",
+          "[arrangement2]") {
+  // The square [0, 2]^2 has its bottom edge on the line y = 0 of half-plane H (y >= 0); a second square
+  // [1, 3] x [-2, 0] has its top edge on it too, overlapping the first on [1, 2]. On y = 0 the pieces are
+  // [-4, 0] H, [0, 1] H+A, [1, 2] H+A+B, [2, 3] H+B, [3, 4] H.
+  Scene2 scene;
+  scene.domain = box(-4, -4, 4, 4);
+  scene.domain_given = true;
+  Halfspace2 line;
+  line.name = "H";
+  line.normal = pt(0, -1);
+  line.offset = 0;
+  scene.halfspaces.push_back(line);
+  scene.halfspaces.push_back(rectangle("A", 0, 0, 2, 2, false));
+  scene.halfspaces.push_back(rectangle("B", 1, -2, 3, 0, false));
+  validate_and_resolve(scene);
+  const Arrangement2 arr = Arrangement2::build(scene);
+  CHECK_NOTHROW(check_structure(scene, arr));
+  CHECK_NOTHROW(check_faces(scene, arr));
+  CHECK_NOTHROW(check_areas(scene, arr));
+  std::map<std::pair<Rational, Rational>, std::vector<int>> on_line;  // (x0, x1) -> halfspaces, for edges on y = 0
+  for (const ArrEdge2& e : arr.edges()) {
+    const OneRootPoint &a = arr.vertices()[e.source].point, &b = arr.vertices()[e.target].point;
+    if (!a.y.is_rational() || !b.y.is_rational() || a.y.a0 != 0 || b.y.a0 != 0) continue;
+    on_line[std::minmax(a.x.a0, b.x.a0)] = e.halfspaces;
+  }
+  const std::map<std::pair<Rational, Rational>, std::vector<int>> expected{
+      {{-4, 0}, {0}}, {{0, 1}, {0, 1}}, {{1, 2}, {0, 1, 2}}, {{2, 3}, {0, 2}}, {{3, 4}, {0}}};
+  CHECK(on_line == expected);
+  CHECK(arr.faces().size() == 4);  // below y = 0 outside B, B, A, above y = 0 outside A
+}

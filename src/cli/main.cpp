@@ -10,6 +10,7 @@
 int main(int argc, char** argv) {
   hsx::remove_temporary_outputs_on_signals();
   hsx::install_gmp_allocation_handlers();
+  hsx::install_out_of_memory_reserve(std::size_t{16} << 20);  // room to unwind and report "out of memory"
   CLI::App app{"hsx: exact arrangements, BSH shapes and halfspace CSG, with certified answers"};
   app.set_version_flag("--version", std::string("hsx ") + HSX_VERSION);
   app.require_subcommand(1);

@@ -8,7 +8,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <memory>
 #include <new>
+#include <vector>
 
 namespace {
 
@@ -45,4 +47,45 @@ TEST_CASE("a failed GMP allocation throws std::bad_alloc once the handlers are i
 TEST_CASE("without the handlers, GMP aborts the process (what the handlers prevent)", "[kernel][memory]") {
   const int status = child_asks_gmp_for_a_gibibyte(false);
   CHECK(WIFSIGNALED(status));
+}
+
+namespace {
+
+/// In a child process with a 256 MiB address-space cap (and, when `reserve`, a 32 MiB out-of-memory reserve):
+/// allocates 1 MiB blocks until std::bad_alloc, keeps them, then asks for 4 MiB more, as unwinding code might.
+/// Exit status 0: that allocation succeeded; 1: it failed; 2: memory never ran out; 3: nothing fitted at all.
+int child_allocates_after_running_out(bool reserve) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const rlimit cap{rlim_t(1) << 28, rlim_t(1) << 28};
+    setrlimit(RLIMIT_AS, &cap);
+    if (reserve) hsx::install_out_of_memory_reserve(std::size_t{32} << 20);
+    std::vector<std::unique_ptr<char[]>> blocks;
+    blocks.reserve(1025);
+    try {
+      for (int k = 0; k < 1024; ++k) blocks.emplace_back(new char[std::size_t{1} << 20]);
+      _exit(2);
+    } catch (const std::bad_alloc&) {
+      try {
+        blocks.emplace_back(new char[std::size_t{4} << 20]);  // kept, so the allocation cannot be elided
+        _exit(blocks.size() > 1 ? 0 : 3);
+      } catch (const std::bad_alloc&) {
+        _exit(1);
+      }
+    }
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return status;
+}
+
+}  // namespace
+
+TEST_CASE("the out-of-memory reserve leaves room to allocate after the first failure", "[kernel][memory]") {
+  const int with = child_allocates_after_running_out(true);
+  REQUIRE(WIFEXITED(with));
+  CHECK(WEXITSTATUS(with) == 0);
+  const int without = child_allocates_after_running_out(false);  // the control: the test can fail
+  REQUIRE(WIFEXITED(without));
+  CHECK(WEXITSTATUS(without) == 1);
 }

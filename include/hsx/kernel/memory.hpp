@@ -9,7 +9,14 @@
 //   exception does unwind through GMP; what it leaves behind must not be used. hsx's program therefore ends
 //   the run on std::bad_alloc (exit 2, "out of memory", its partial outputs removed), and a long-lived host that
 //   installs the handlers should treat std::bad_alloc from hsx the same way: drop everything of that call.
+// - Unwinding after std::bad_alloc may itself allocate (a destructor that walks a large document with a stack of
+//   its own, an error message being built). When memory is exhausted those allocations fail too, and an exception
+//   thrown during unwinding ends the process in std::terminate. install_out_of_memory_reserve() keeps a block
+//   aside that the first failed allocation (operator new or GMP) gives back before throwing, so that the unwinding
+//   which follows has room; later failures throw as usual.
 #pragma once
+
+#include <cstddef>
 
 namespace hsx {
 
@@ -17,5 +24,11 @@ namespace hsx {
 /// idempotent; call it at the start of a program, before any number exists. The handlers allocate with
 /// std::malloc/realloc/free, as GMP's defaults do.
 void install_gmp_allocation_handlers();
+
+/// Sets aside `bytes` of memory, released by the first allocation that fails after this call (through operator new
+/// or, once install_gmp_allocation_handlers() ran, GMP), just before that allocation throws std::bad_alloc: the
+/// stack unwinding that follows can then allocate. Installs a std::new_handler (replacing any other). Call it once,
+/// at the start of a program that ends its run on std::bad_alloc; later calls replace the reserve.
+void install_out_of_memory_reserve(std::size_t bytes);
 
 }  // namespace hsx

@@ -5,6 +5,7 @@
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -292,7 +293,6 @@ bool infeasible(const Network& net) {
 // order of cuts is the lexicographic one up to rounding). The doubles only guide: whatever they are, the answer
 // is checked exactly.
 
-using DoubleGraph = hsx::FlowGraph<double>;
 
 /// Samples weigh more than the measure of every support together (a finite cut's measure is at most that).
 double lambda_of(const Problem& problem) {
@@ -316,38 +316,60 @@ struct DoubleFlow {
   std::vector<double> capacity, flow, residual;  ///< residual = capacity - flow as Boykov-Kolmogorov left it
 };
 
+/// One edge of the double network: its capacity, residual and reverse edge (Boykov-Kolmogorov's property maps).
+using DoubleEdgeDescriptor = boost::detail::csr_edge_descriptor<std::size_t, std::size_t>;
+struct DoubleEdge {
+  double capacity = 0, residual = 0;
+  DoubleEdgeDescriptor reverse;
+};
+/// A compressed sparse row graph: its edges' properties lie in one array (an adjacency list allocates one per
+/// edge), and each vertex's out-edges keep the order they were listed in, so Boykov-Kolmogorov walks them as it
+/// would an adjacency list built in that order.
+using DoubleGraph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, DoubleEdge>;
+
 DoubleFlow double_flow(const Problem& problem, const Network& net) {
   const double lambda = lambda_of(problem);
   const auto n = static_cast<std::size_t>(net.cells + 2);
-  DoubleGraph g(n);
-  auto capacity = boost::get(boost::edge_capacity, g);
-  auto residual = boost::get(boost::edge_residual_capacity, g);
-  auto reverse = boost::get(boost::edge_reverse, g);
+  // Edge 2i is arc i (capacity as rounded), edge 2i + 1 its reverse (capacity 0); position[k] is edge k's place in
+  // the sorted edge list: by source, and in the order above within a source (a stable counting sort).
+  const std::size_t m = 2 * net.arcs.size();
+  const auto source_of = [&](std::size_t k) {
+    const Arc& a = net.arcs[k / 2];
+    return static_cast<std::size_t>(k % 2 ? a.to : a.from);
+  };
+  std::vector<std::size_t> start(n + 1, 0), position(m);
+  for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  for (std::size_t k = 0; k < m; ++k) position[k] = start[source_of(k)]++;
+  std::vector<std::pair<std::size_t, std::size_t>> edges(m);
+  std::vector<DoubleEdge> properties(m);
   DoubleFlow out;
   out.capacity.reserve(net.arcs.size());
-  std::vector<Traits::edge_descriptor> forward, backward;
-  forward.reserve(net.arcs.size());
-  backward.reserve(net.arcs.size());
-  for (const Arc& a : net.arcs) {
-    auto e = boost::add_edge(a.from, a.to, g).first;
-    auto r = boost::add_edge(a.to, a.from, g).first;
-    capacity[e] = double_capacity(problem, net, a, lambda);
-    capacity[r] = 0;
-    reverse[e] = r;
-    reverse[r] = e;
-    out.capacity.push_back(capacity[e]);
-    forward.push_back(e);
-    backward.push_back(r);
+  for (std::size_t i = 0; i < net.arcs.size(); ++i) {
+    const Arc& a = net.arcs[i];
+    const std::size_t from = static_cast<std::size_t>(a.from), to = static_cast<std::size_t>(a.to);
+    const std::size_t e = position[2 * i], r = position[2 * i + 1];
+    edges[e] = {from, to};
+    edges[r] = {to, from};
+    properties[e].capacity = double_capacity(problem, net, a, lambda);
+    properties[e].reverse = DoubleEdgeDescriptor(to, r);
+    properties[r].reverse = DoubleEdgeDescriptor(from, e);
+    out.capacity.push_back(properties[e].capacity);
   }
+  DoubleGraph g(boost::edges_are_sorted, edges.begin(), edges.end(), properties.begin(), n);
+  auto residual = boost::get(&DoubleEdge::residual, g);
   std::vector<boost::default_color_type> color(n);
-  boost::boykov_kolmogorov_max_flow(g, capacity, residual, reverse,
+  boost::boykov_kolmogorov_max_flow(g, boost::get(&DoubleEdge::capacity, g), residual,
+                                    boost::get(&DoubleEdge::reverse, g),
                                     boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
                                     boost::get(boost::vertex_index, g), net.s, net.t);
   out.flow.reserve(net.arcs.size());
   out.residual.reserve(net.arcs.size());
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    out.flow.push_back(residual[backward[i]]);  // the reverse edge's residual = the arc's flow
-    out.residual.push_back(residual[forward[i]]);
+    const Arc& a = net.arcs[i];
+    // The reverse edge's residual = the arc's flow.
+    out.flow.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.to), position[2 * i + 1])]);
+    out.residual.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.from), position[2 * i])]);
   }
   return out;
 }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -89,6 +90,29 @@ Capacity operator-(const Capacity& a, const Capacity& b) {
 }
 Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
 
+/// The exact signs this thread has decided for combinations of one problem's supports (the last problem asked
+/// about): a best-first search meets the same unseparated combinations, mostly exact zeros (the costliest to
+/// decide, at the precision cap), in many of its graph cuts. The answer depends only on the combination.
+struct SignMemo {
+  std::shared_ptr<const Problem::SupportAtoms> atoms;  ///< held, so its address is not reused while remembered
+  std::map<std::vector<std::pair<int, long>>, std::optional<int>> signs;
+};
+
+/// The exact Measure's sign of `d` (atoms only), remembered per problem and thread.
+std::optional<int> exact_sign_of(const Capacity& d) {
+  constexpr std::size_t kMemoLimit = 1 << 12;
+  thread_local SignMemo memo;
+  const std::shared_ptr<const Problem::SupportAtoms>& atoms = d.problem->support_atoms();
+  if (memo.atoms != atoms || memo.signs.size() >= kMemoLimit) {
+    memo.atoms = atoms;
+    memo.signs.clear();
+  }
+  if (const auto known = memo.signs.find(d.atoms); known != memo.signs.end()) return known->second;
+  const std::optional<int> s = d.measure().sign();
+  memo.signs.emplace(d.atoms, s);
+  return s;
+}
+
 /// Sign of sum k_g * |g|: the kernel's certified double enclosure of the combination first (exact for any long
 /// k_g), then the exact Measure; nullopt when even that does not separate at the precision cap.
 std::optional<int> sign_of(const Capacity& d) {
@@ -98,7 +122,7 @@ std::optional<int> sign_of(const Capacity& d) {
     sum.add(k, DoubleBounds{lo, hi});
   }
   if (const int s = sum.bounds().certain_sign()) return s;
-  return d.measure().sign();
+  return exact_sign_of(d);
 }
 
 /// Certified double enclosure of a - b (atoms only), walked without building the difference; sets `equal` when

@@ -90,26 +90,44 @@ Capacity operator-(const Capacity& a, const Capacity& b) {
 }
 Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
 
-/// The exact signs this thread has decided for combinations of one problem's supports (the last problem asked
-/// about): a best-first search meets the same unseparated combinations, mostly exact zeros (the costliest to
-/// decide, at the precision cap), in many of its graph cuts. The answer depends only on the combination.
+/// A value made from a problem, kept per thread for the last problem this thread asked about (keyed by its
+/// support atoms, held so that their address is not reused while the value is kept): graph_cut is called many
+/// times per problem by a search.
+template <class T>
+class ProblemMemo {
+ public:
+  /// The value for `problem`, made by T(problem) when this thread last asked about another problem.
+  T& of(const Problem& problem) {
+    if (atoms_ != problem.support_atoms()) {
+      value_ = T(problem);
+      atoms_ = problem.support_atoms();
+    }
+    return value_;
+  }
+
+ private:
+  std::shared_ptr<const Problem::SupportAtoms> atoms_;
+  T value_;
+};
+
+/// The exact signs decided for combinations of one problem's supports: a best-first search meets the same
+/// unseparated combinations, mostly exact zeros (the costliest to decide, at the precision cap), in many of its
+/// graph cuts. A sign depends only on the combination.
 struct SignMemo {
-  std::shared_ptr<const Problem::SupportAtoms> atoms;  ///< held, so its address is not reused while remembered
+  SignMemo() = default;
+  explicit SignMemo(const Problem&) {}
   std::map<std::vector<std::pair<int, long>>, std::optional<int>> signs;
 };
 
 /// The exact Measure's sign of `d` (atoms only), remembered per problem and thread.
 std::optional<int> exact_sign_of(const Capacity& d) {
   constexpr std::size_t kMemoLimit = 1 << 12;
-  thread_local SignMemo memo;
-  const std::shared_ptr<const Problem::SupportAtoms>& atoms = d.problem->support_atoms();
-  if (memo.atoms != atoms || memo.signs.size() >= kMemoLimit) {
-    memo.atoms = atoms;
-    memo.signs.clear();
-  }
-  if (const auto known = memo.signs.find(d.atoms); known != memo.signs.end()) return known->second;
+  thread_local ProblemMemo<SignMemo> memo;
+  auto& signs = memo.of(*d.problem).signs;
+  if (signs.size() >= kMemoLimit) signs.clear();
+  if (const auto known = signs.find(d.atoms); known != signs.end()) return known->second;
   const std::optional<int> s = d.measure().sign();
-  memo.signs.emplace(d.atoms, s);
+  signs.emplace(d.atoms, s);
   return s;
 }
 
@@ -209,6 +227,49 @@ struct Network {
   std::vector<int> atoms;
 };
 
+/// The binary arcs of a problem's network before any constraint: every support g between cells a and b is an
+/// entry of a -> b and of b -> a (allowed when g may lie on b with that cell inside), grouped by (from, to), with
+/// the supports ascending and the certified enclosure of their measures' sum.
+struct BinaryArcs {
+  struct Entry {
+    int from, to, support;
+    bool allowed;
+  };
+  struct Group {
+    int from = 0, to = 0;
+    int begin = 0, end = 0;  ///< its entries
+    DoubleBounds measure;
+  };
+  std::vector<Entry> entries;  ///< by (from, to, support)
+  std::vector<Group> arcs;
+
+  BinaryArcs() = default;
+  explicit BinaryArcs(const Problem& problem) {
+    entries.reserve(2 * static_cast<std::size_t>(problem.support_count()));
+    for (int g = 0; g < problem.support_count(); ++g) {
+      const SupportTerm& st = problem.supports()[g];
+      entries.push_back({st.cell_a, st.cell_b, g, st.allow_a_inside});
+      entries.push_back({st.cell_b, st.cell_a, g, st.allow_b_inside});
+    }
+    std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+      return std::tie(x.from, x.to, x.support) < std::tie(y.from, y.to, y.support);
+    });
+    const IntervalBatch batch;
+    for (std::size_t i = 0; i < entries.size();) {
+      Group group;
+      group.from = entries[i].from;
+      group.to = entries[i].to;
+      group.begin = static_cast<int>(i);
+      for (; i < entries.size() && entries[i].from == group.from && entries[i].to == group.to; ++i) {
+        const auto& [lo, hi] = problem.support_enclosures()[entries[i].support];
+        group.measure = batch.add(group.measure, DoubleBounds{lo, hi});
+      }
+      group.end = static_cast<int>(i);
+      arcs.push_back(group);
+    }
+  }
+};
+
 Network build_network(const Problem& problem, const CutConstraints& constraints) {
   const Complex& c = problem.complex();
   const int n = problem.cell_count();
@@ -237,47 +298,31 @@ Network build_network(const Problem& problem, const CutConstraints& constraints)
     a.samples = infinite ? 0 : samples;
     net.arcs.push_back(a);
   };
+  net.arcs.reserve(2 * static_cast<std::size_t>(n) + 2 * static_cast<std::size_t>(problem.support_count()));
   for (int k = 0; k < n; ++k) {
     add_unary(net.s, k, source_infinite[k], source_samples[k]);
     add_unary(k, net.t, sink_infinite[k], sink_samples[k]);
   }
   // Binary arcs: every support g between a and b adds |g| to a -> b and to b -> a, or makes the arc infinite when
   // it does not allow that orientation or is removed.
-  struct Entry {
-    int from, to, support;
-    bool allowed;
-  };
-  std::vector<Entry> entries;
-  entries.reserve(2 * static_cast<std::size_t>(problem.support_count()));
-  for (int g = 0; g < problem.support_count(); ++g) {
-    const SupportTerm& st = problem.supports()[g];
-    const bool removed = !constraints.removed.empty() && constraints.removed[g];
-    entries.push_back({st.cell_a, st.cell_b, g, !removed && st.allow_a_inside});
-    entries.push_back({st.cell_b, st.cell_a, g, !removed && st.allow_b_inside});
-  }
-  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-    return std::tie(x.from, x.to, x.support) < std::tie(y.from, y.to, y.support);
-  });
-  net.atoms.reserve(entries.size());
-  const IntervalBatch batch;
-  for (std::size_t i = 0; i < entries.size();) {
-    std::size_t j = i;
+  thread_local ProblemMemo<BinaryArcs> memo;
+  const BinaryArcs& binary = memo.of(problem);
+  net.atoms.reserve(binary.entries.size());
+  for (const BinaryArcs::Group& group : binary.arcs) {
     Arc a;
-    a.from = entries[i].from;
-    a.to = entries[i].to;
+    a.from = group.from;
+    a.to = group.to;
     a.atoms_begin = static_cast<int>(net.atoms.size());
-    for (; j < entries.size() && entries[j].from == a.from && entries[j].to == a.to; ++j) {
-      if (!entries[j].allowed) a.infinite = true;
-      net.atoms.push_back(entries[j].support);
+    a.infinite = std::any_of(binary.entries.begin() + group.begin, binary.entries.begin() + group.end,
+                             [&](const BinaryArcs::Entry& e) {
+                               return !e.allowed || (!constraints.removed.empty() && constraints.removed[e.support]);
+                             });
+    if (!a.infinite) {
+      for (int k = group.begin; k < group.end; ++k) net.atoms.push_back(binary.entries[k].support);
+      a.measure = group.measure;
     }
-    if (a.infinite) net.atoms.resize(a.atoms_begin);
     a.atoms_end = static_cast<int>(net.atoms.size());
-    for (int k = a.atoms_begin; k < a.atoms_end; ++k) {
-      const auto& [lo, hi] = problem.support_enclosures()[net.atoms[k]];
-      a.measure = batch.add(a.measure, DoubleBounds{lo, hi});
-    }
     net.arcs.push_back(a);
-    i = j;
   }
   return net;
 }

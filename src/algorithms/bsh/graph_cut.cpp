@@ -5,11 +5,13 @@
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
+#include <boost/graph/compressed_sparse_row_graph.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -88,6 +90,47 @@ Capacity operator-(const Capacity& a, const Capacity& b) {
 }
 Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
 
+/// A value made from a problem, kept per thread for the last problem this thread asked about (keyed by its
+/// support atoms, held so that their address is not reused while the value is kept): graph_cut is called many
+/// times per problem by a search.
+template <class T>
+class ProblemMemo {
+ public:
+  /// The value for `problem`, made by T(problem) when this thread last asked about another problem.
+  T& of(const Problem& problem) {
+    if (atoms_ != problem.support_atoms()) {
+      value_ = T(problem);
+      atoms_ = problem.support_atoms();
+    }
+    return value_;
+  }
+
+ private:
+  std::shared_ptr<const Problem::SupportAtoms> atoms_;
+  T value_;
+};
+
+/// The exact signs decided for combinations of one problem's supports: a best-first search meets the same
+/// unseparated combinations, mostly exact zeros (the costliest to decide, at the precision cap), in many of its
+/// graph cuts. A sign depends only on the combination.
+struct SignMemo {
+  SignMemo() = default;
+  explicit SignMemo(const Problem&) {}
+  std::map<std::vector<std::pair<int, long>>, std::optional<int>> signs;
+};
+
+/// The exact Measure's sign of `d` (atoms only), remembered per problem and thread.
+std::optional<int> exact_sign_of(const Capacity& d) {
+  constexpr std::size_t kMemoLimit = 1 << 12;
+  thread_local ProblemMemo<SignMemo> memo;
+  auto& signs = memo.of(*d.problem).signs;
+  if (signs.size() >= kMemoLimit) signs.clear();
+  if (const auto known = signs.find(d.atoms); known != signs.end()) return known->second;
+  const std::optional<int> s = d.measure().sign();
+  signs.emplace(d.atoms, s);
+  return s;
+}
+
 /// Sign of sum k_g * |g|: the kernel's certified double enclosure of the combination first (exact for any long
 /// k_g), then the exact Measure; nullopt when even that does not separate at the precision cap.
 std::optional<int> sign_of(const Capacity& d) {
@@ -97,7 +140,7 @@ std::optional<int> sign_of(const Capacity& d) {
     sum.add(k, DoubleBounds{lo, hi});
   }
   if (const int s = sum.bounds().certain_sign()) return s;
-  return d.measure().sign();
+  return exact_sign_of(d);
 }
 
 /// Certified double enclosure of a - b (atoms only), walked without building the difference; sets `equal` when
@@ -184,6 +227,49 @@ struct Network {
   std::vector<int> atoms;
 };
 
+/// The binary arcs of a problem's network before any constraint: every support g between cells a and b is an
+/// entry of a -> b and of b -> a (allowed when g may lie on b with that cell inside), grouped by (from, to), with
+/// the supports ascending and the certified enclosure of their measures' sum.
+struct BinaryArcs {
+  struct Entry {
+    int from, to, support;
+    bool allowed;
+  };
+  struct Group {
+    int from = 0, to = 0;
+    int begin = 0, end = 0;  ///< its entries
+    DoubleBounds measure;
+  };
+  std::vector<Entry> entries;  ///< by (from, to, support)
+  std::vector<Group> arcs;
+
+  BinaryArcs() = default;
+  explicit BinaryArcs(const Problem& problem) {
+    entries.reserve(2 * static_cast<std::size_t>(problem.support_count()));
+    for (int g = 0; g < problem.support_count(); ++g) {
+      const SupportTerm& st = problem.supports()[g];
+      entries.push_back({st.cell_a, st.cell_b, g, st.allow_a_inside});
+      entries.push_back({st.cell_b, st.cell_a, g, st.allow_b_inside});
+    }
+    std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
+      return std::tie(x.from, x.to, x.support) < std::tie(y.from, y.to, y.support);
+    });
+    const IntervalBatch batch;
+    for (std::size_t i = 0; i < entries.size();) {
+      Group group;
+      group.from = entries[i].from;
+      group.to = entries[i].to;
+      group.begin = static_cast<int>(i);
+      for (; i < entries.size() && entries[i].from == group.from && entries[i].to == group.to; ++i) {
+        const auto& [lo, hi] = problem.support_enclosures()[entries[i].support];
+        group.measure = batch.add(group.measure, DoubleBounds{lo, hi});
+      }
+      group.end = static_cast<int>(i);
+      arcs.push_back(group);
+    }
+  }
+};
+
 Network build_network(const Problem& problem, const CutConstraints& constraints) {
   const Complex& c = problem.complex();
   const int n = problem.cell_count();
@@ -212,47 +298,31 @@ Network build_network(const Problem& problem, const CutConstraints& constraints)
     a.samples = infinite ? 0 : samples;
     net.arcs.push_back(a);
   };
+  net.arcs.reserve(2 * static_cast<std::size_t>(n) + 2 * static_cast<std::size_t>(problem.support_count()));
   for (int k = 0; k < n; ++k) {
     add_unary(net.s, k, source_infinite[k], source_samples[k]);
     add_unary(k, net.t, sink_infinite[k], sink_samples[k]);
   }
   // Binary arcs: every support g between a and b adds |g| to a -> b and to b -> a, or makes the arc infinite when
   // it does not allow that orientation or is removed.
-  struct Entry {
-    int from, to, support;
-    bool allowed;
-  };
-  std::vector<Entry> entries;
-  entries.reserve(2 * static_cast<std::size_t>(problem.support_count()));
-  for (int g = 0; g < problem.support_count(); ++g) {
-    const SupportTerm& st = problem.supports()[g];
-    const bool removed = !constraints.removed.empty() && constraints.removed[g];
-    entries.push_back({st.cell_a, st.cell_b, g, !removed && st.allow_a_inside});
-    entries.push_back({st.cell_b, st.cell_a, g, !removed && st.allow_b_inside});
-  }
-  std::sort(entries.begin(), entries.end(), [](const Entry& x, const Entry& y) {
-    return std::tie(x.from, x.to, x.support) < std::tie(y.from, y.to, y.support);
-  });
-  net.atoms.reserve(entries.size());
-  const IntervalBatch batch;
-  for (std::size_t i = 0; i < entries.size();) {
-    std::size_t j = i;
+  thread_local ProblemMemo<BinaryArcs> memo;
+  const BinaryArcs& binary = memo.of(problem);
+  net.atoms.reserve(binary.entries.size());
+  for (const BinaryArcs::Group& group : binary.arcs) {
     Arc a;
-    a.from = entries[i].from;
-    a.to = entries[i].to;
+    a.from = group.from;
+    a.to = group.to;
     a.atoms_begin = static_cast<int>(net.atoms.size());
-    for (; j < entries.size() && entries[j].from == a.from && entries[j].to == a.to; ++j) {
-      if (!entries[j].allowed) a.infinite = true;
-      net.atoms.push_back(entries[j].support);
+    a.infinite = std::any_of(binary.entries.begin() + group.begin, binary.entries.begin() + group.end,
+                             [&](const BinaryArcs::Entry& e) {
+                               return !e.allowed || (!constraints.removed.empty() && constraints.removed[e.support]);
+                             });
+    if (!a.infinite) {
+      for (int k = group.begin; k < group.end; ++k) net.atoms.push_back(binary.entries[k].support);
+      a.measure = group.measure;
     }
-    if (a.infinite) net.atoms.resize(a.atoms_begin);
     a.atoms_end = static_cast<int>(net.atoms.size());
-    for (int k = a.atoms_begin; k < a.atoms_end; ++k) {
-      const auto& [lo, hi] = problem.support_enclosures()[net.atoms[k]];
-      a.measure = batch.add(a.measure, DoubleBounds{lo, hi});
-    }
     net.arcs.push_back(a);
-    i = j;
   }
   return net;
 }
@@ -292,7 +362,6 @@ bool infeasible(const Network& net) {
 // order of cuts is the lexicographic one up to rounding). The doubles only guide: whatever they are, the answer
 // is checked exactly.
 
-using DoubleGraph = hsx::FlowGraph<double>;
 
 /// Samples weigh more than the measure of every support together (a finite cut's measure is at most that).
 double lambda_of(const Problem& problem) {
@@ -316,38 +385,60 @@ struct DoubleFlow {
   std::vector<double> capacity, flow, residual;  ///< residual = capacity - flow as Boykov-Kolmogorov left it
 };
 
+/// One edge of the double network: its capacity, residual and reverse edge (Boykov-Kolmogorov's property maps).
+using DoubleEdgeDescriptor = boost::detail::csr_edge_descriptor<std::size_t, std::size_t>;
+struct DoubleEdge {
+  double capacity = 0, residual = 0;
+  DoubleEdgeDescriptor reverse;
+};
+/// A compressed sparse row graph: its edges' properties lie in one array (an adjacency list allocates one per
+/// edge), and each vertex's out-edges keep the order they were listed in, so Boykov-Kolmogorov walks them as it
+/// would an adjacency list built in that order.
+using DoubleGraph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, DoubleEdge>;
+
 DoubleFlow double_flow(const Problem& problem, const Network& net) {
   const double lambda = lambda_of(problem);
   const auto n = static_cast<std::size_t>(net.cells + 2);
-  DoubleGraph g(n);
-  auto capacity = boost::get(boost::edge_capacity, g);
-  auto residual = boost::get(boost::edge_residual_capacity, g);
-  auto reverse = boost::get(boost::edge_reverse, g);
+  // Edge 2i is arc i (capacity as rounded), edge 2i + 1 its reverse (capacity 0); position[k] is edge k's place in
+  // the sorted edge list: by source, and in the order above within a source (a stable counting sort).
+  const std::size_t m = 2 * net.arcs.size();
+  const auto source_of = [&](std::size_t k) {
+    const Arc& a = net.arcs[k / 2];
+    return static_cast<std::size_t>(k % 2 ? a.to : a.from);
+  };
+  std::vector<std::size_t> start(n + 1, 0), position(m);
+  for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  for (std::size_t k = 0; k < m; ++k) position[k] = start[source_of(k)]++;
+  std::vector<std::pair<std::size_t, std::size_t>> edges(m);
+  std::vector<DoubleEdge> properties(m);
   DoubleFlow out;
   out.capacity.reserve(net.arcs.size());
-  std::vector<Traits::edge_descriptor> forward, backward;
-  forward.reserve(net.arcs.size());
-  backward.reserve(net.arcs.size());
-  for (const Arc& a : net.arcs) {
-    auto e = boost::add_edge(a.from, a.to, g).first;
-    auto r = boost::add_edge(a.to, a.from, g).first;
-    capacity[e] = double_capacity(problem, net, a, lambda);
-    capacity[r] = 0;
-    reverse[e] = r;
-    reverse[r] = e;
-    out.capacity.push_back(capacity[e]);
-    forward.push_back(e);
-    backward.push_back(r);
+  for (std::size_t i = 0; i < net.arcs.size(); ++i) {
+    const Arc& a = net.arcs[i];
+    const std::size_t from = static_cast<std::size_t>(a.from), to = static_cast<std::size_t>(a.to);
+    const std::size_t e = position[2 * i], r = position[2 * i + 1];
+    edges[e] = {from, to};
+    edges[r] = {to, from};
+    properties[e].capacity = double_capacity(problem, net, a, lambda);
+    properties[e].reverse = DoubleEdgeDescriptor(to, r);
+    properties[r].reverse = DoubleEdgeDescriptor(from, e);
+    out.capacity.push_back(properties[e].capacity);
   }
+  DoubleGraph g(boost::edges_are_sorted, edges.begin(), edges.end(), properties.begin(), n);
+  auto residual = boost::get(&DoubleEdge::residual, g);
   std::vector<boost::default_color_type> color(n);
-  boost::boykov_kolmogorov_max_flow(g, capacity, residual, reverse,
+  boost::boykov_kolmogorov_max_flow(g, boost::get(&DoubleEdge::capacity, g), residual,
+                                    boost::get(&DoubleEdge::reverse, g),
                                     boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
                                     boost::get(boost::vertex_index, g), net.s, net.t);
   out.flow.reserve(net.arcs.size());
   out.residual.reserve(net.arcs.size());
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    out.flow.push_back(residual[backward[i]]);  // the reverse edge's residual = the arc's flow
-    out.residual.push_back(residual[forward[i]]);
+    const Arc& a = net.arcs[i];
+    // The reverse edge's residual = the arc's flow.
+    out.flow.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.to), position[2 * i + 1])]);
+    out.residual.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.from), position[2 * i])]);
   }
   return out;
 }

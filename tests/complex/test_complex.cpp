@@ -164,7 +164,7 @@ void check_structure(const Scene2& scene, const Arranged2& a) {
       covered_edges.insert(e);
     }
     RC_ASSERT(pa.junctions.size() == 0u || pa.junctions.size() == 2u);
-    RC_ASSERT(pa.measure.sign() == std::optional<int>(1));
+    RC_ASSERT(pa.measure.get().sign() == std::optional<int>(1));
   }
   // Every interior edge is in some patch.
   for (int e = 0; e < static_cast<int>(arr.edges().size()); ++e)

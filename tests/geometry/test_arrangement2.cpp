@@ -367,7 +367,7 @@ TEST_CASE("arrangement2: two crossing disks", "[arrangement2]") {
   CHECK(f.inside == std::vector<char>{1, 1});
   CHECK(!f.outer);
   // 8pi/3 - 2sqrt(3) = 4.913478870...
-  const Interval a = f.area.enclose(128);
+  const Interval a = arr.face_areas()->get(static_cast<std::size_t>(lens.index)).enclose(128);
   CHECK(a.lo_double() > 4.9134787944);
   CHECK(a.hi_double() < 4.9134787945);
   const PointLocation2 out = arr.locate(pt(5, 3));

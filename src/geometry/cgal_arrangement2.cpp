@@ -92,10 +92,9 @@ Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi) {
     mpfr_get_q(q.get_mpq_t(), x);
     return q;
   };
-  for (mpfr_prec_t bits = 64;; bits *= 2) {
-    const Interval a = lo.enclose(bits), b = hi.enclose(bits);
-    const Rational above_lo = lo.is_rational() ? lo.a0 : to_q(a.hi());
-    const Rational below_hi = hi.is_rational() ? hi.a0 : to_q(b.lo());
+  for (mpfr_prec_t bits = 64;; bits *= 2) {  // rational ends are never enclosed (no MPFR for them)
+    const Rational above_lo = lo.is_rational() ? lo.a0 : to_q(lo.enclose(bits).hi());
+    const Rational below_hi = hi.is_rational() ? hi.a0 : to_q(hi.enclose(bits).lo());
     if (above_lo < below_hi) return simplest_rational_in(above_lo, below_hi);
     if (bits > (1 << 22)) throw std::logic_error("rational_strictly_between: values do not separate");
   }

@@ -2,14 +2,15 @@
 // lengths: sums of square roots and arc terms) than in the arrangement itself, and most of them are never asked
 // for (a BSH shape's area needs only its own cells). A MeasureCache holds one family of measures and computes
 // each the first time it is read; a LazyMeasure is either a known value or one entry of a shared cache.
-// Thread safety: a cache may be read by several threads at once (each entry is computed exactly once, under
-// std::call_once); the value is the same Measure an eager computation gives, so outputs do not depend on when
+// Thread safety: a cache may be read by several threads at once (each entry is computed exactly once, under the
+// cache's mutex; a computed entry is read without locking); the value is the same Measure an eager computation gives, so outputs do not depend on when
 // or by whom it is computed.
 #pragma once
 
 #include <hsx/kernel/measure.hpp>
 
 #include <cstddef>
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -20,7 +21,7 @@ namespace hsx {
 /// through std::shared_ptr (LazyMeasure does).
 class MeasureCache {
  public:
-  /// `size`: number of entries; `compute`: entry k's value for k < size, called at most once per k (it must
+  /// `size`: number of entries; `compute`: entry k's value for k < size, called once per k unless it throws (it must
   /// own, or share ownership of, everything it reads: the cache may outlive its creator).
   MeasureCache(std::size_t size, std::function<Measure(std::size_t)> compute);
   MeasureCache(const MeasureCache&) = delete;
@@ -34,8 +35,11 @@ class MeasureCache {
  private:
   std::size_t size_;
   std::function<Measure(std::size_t)> compute_;
-  std::unique_ptr<std::once_flag[]> once_;
-  std::unique_ptr<Measure[]> values_;  // values_[k] written once, under once_[k]
+  // Not std::call_once: libstdc++ runs it through pthread_once, and an exception from compute (std::bad_alloc
+  // under a memory limit) then terminated the process instead of reaching the caller.
+  mutable std::mutex mutex_;
+  std::unique_ptr<std::atomic<bool>[]> ready_;  // ready_[k]: values_[k] is computed (set once, under mutex_)
+  std::unique_ptr<Measure[]> values_;
 };
 
 /// A measure that is either known (set from a Measure) or entry `index` of a shared MeasureCache, computed on

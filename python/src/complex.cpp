@@ -135,7 +135,7 @@ void bind_views(py::module_& m) {
                                return l;
                              },
                              "Names of the halfspaces the cell is inside")
-      .def_property_readonly("measure", [](const CellView& v) { return v.complex().cells[v.index].measure; },
+      .def_property_readonly("measure", [](const CellView& v) { return v.complex().cells[v.index].measure.get(); },
                              "Area (2D) or volume (3D)")
       .def("__repr__", [](const CellView& v) { return "<hsx.Cell " + std::to_string(v.index) + ">"; });
   py::class_<PatchView>(m, "Patch", "A maximal piece of one halfspace's boundary between two cells")
@@ -158,7 +158,7 @@ void bind_views(py::module_& m) {
                              "(inside_cell, outside_cell)")
       .def_property_readonly("samples", [](const PatchView& v) { return v.complex().patches[v.index].samples; },
                              "Indices of the samples on it")
-      .def_property_readonly("measure", [](const PatchView& v) { return v.complex().patches[v.index].measure; },
+      .def_property_readonly("measure", [](const PatchView& v) { return v.complex().patches[v.index].measure.get(); },
                              "Length (2D) or area (3D)")
       .def_property_readonly("support", [](const PatchView& v) { return v.complex().patches[v.index].support; },
                              "Its group of coincident patches (Complex.supports)")

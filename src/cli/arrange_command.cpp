@@ -108,8 +108,8 @@ std::string summary_text(const LoadedInput& in) {
     const Patch& patch = c.patches[p];
     out << std::left << std::setw(7) << p << std::setw(11) << c.halfspace_names[patch.halfspace]
         << std::setw(21) << (std::to_string(patch.inside_cell) + "/" + std::to_string(patch.outside_cell))
-        << std::setw(9) << patch.samples.size() << patch.measure.decimal_string(30);
-    if (auto exact = patch.measure.exact_string()) out << "  = " << *exact;
+        << std::setw(9) << patch.samples.size() << patch.measure.get().decimal_string(30);
+    if (auto exact = patch.measure.get().exact_string()) out << "  = " << *exact;
     if (c.supports[patch.support].size() > 1) out << "  (coincident with another boundary)";
     out << "\n";
   }

@@ -1101,8 +1101,8 @@ void run_arrange_bench(const BenchOptions& o, OutputFiles& files) {
   }
   report.footer = {
       "hsx arrange: hsx::arrange (geometry/arrangement2.hpp and complex/from_arrangement2.hpp: CGAL's insertion "
-      "with a size guard, then vertices, edges with exact lengths, faces with exact areas and interior points, "
-      "sides, samples located, the complex); bare CGAL: bare_cgal_arrangement_faces, the same curves inserted into "
+      "with a size guard, then vertices, edges, faces with their interior points, sides, samples located, the "
+      "complex; exact lengths and areas are computed on first read, not here); bare CGAL: bare_cgal_arrangement_faces, the same curves inserted into "
       "the same CGAL arrangement and nothing else; same cells: both count the same bounded faces",
       "random scenes: seed 1, up to 3 samples per halfspace (halfsp: halfspaces)"};
   publish(report, o, files);

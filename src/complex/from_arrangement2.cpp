@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 
 namespace hsx {
 namespace {
@@ -62,6 +63,19 @@ std::vector<Chain> chains_of(const Arrangement2& arr) {
   return chains;
 }
 
+/// The chains' lengths (sums of their edges' lengths), each computed on first read.
+std::shared_ptr<const MeasureCache> chain_lengths(const Arrangement2& arr, const std::vector<Chain>& chains) {
+  std::vector<std::vector<int>> chain_edges;
+  chain_edges.reserve(chains.size());
+  for (const Chain& chain : chains) chain_edges.push_back(chain.edges);
+  return std::make_shared<const MeasureCache>(
+      chains.size(), [edge_lengths = arr.edge_lengths(), chain_edges = std::move(chain_edges)](std::size_t k) {
+        Measure length;
+        for (int e : chain_edges[k]) length += edge_lengths->get(static_cast<std::size_t>(e));
+        return length;
+      });
+}
+
 }  // namespace
 
 Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
@@ -73,7 +87,7 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
     cell.outer = f.outer;
     cell.witness = {f.interior.x, f.interior.y};
     cell.inside = f.inside;
-    cell.measure = f.area;
+    cell.measure = LazyMeasure(arr.face_areas(), c.cells.size());
     c.cells.push_back(std::move(cell));
   }
   const auto& edges = arr.edges();
@@ -81,14 +95,11 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
   std::vector<int> chain_of_edge(edges.size(), -1);
   std::vector<std::vector<int>> patches_of_chain;
   const std::vector<Chain> chains = chains_of(arr);
+  const auto lengths = chain_lengths(arr, chains);
   for (int k = 0; k < static_cast<int>(chains.size()); ++k) {
     const Chain& chain = chains[k];
     const ArrEdge2& e0 = edges[chain.edges.front()];
-    Measure length;
-    for (int e : chain.edges) {
-      length += edges[e].length;
-      chain_of_edge[e] = k;
-    }
+    for (int e : chain.edges) chain_of_edge[e] = k;
     std::vector<int> junctions;
     for (int v : chain.ends) {
       auto [it, fresh] = junction_of_vertex.emplace(v, static_cast<int>(c.junctions.size()));
@@ -104,7 +115,7 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
       const bool left_inside = c.cells.at(e0.left_face).inside[h];
       p.inside_cell = left_inside ? e0.left_face : e0.right_face;
       p.outside_cell = left_inside ? e0.right_face : e0.left_face;
-      p.measure = length;
+      p.measure = LazyMeasure(lengths, static_cast<std::size_t>(k));
       p.support = support;
       p.junctions = junctions;
       p.pieces = chain.edges;

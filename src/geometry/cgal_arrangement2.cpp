@@ -92,10 +92,9 @@ Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi) {
     mpfr_get_q(q.get_mpq_t(), x);
     return q;
   };
-  for (mpfr_prec_t bits = 64;; bits *= 2) {
-    const Interval a = lo.enclose(bits), b = hi.enclose(bits);
-    const Rational above_lo = lo.is_rational() ? lo.a0 : to_q(a.hi());
-    const Rational below_hi = hi.is_rational() ? hi.a0 : to_q(b.lo());
+  for (mpfr_prec_t bits = 64;; bits *= 2) {  // rational ends are never enclosed (no MPFR for them)
+    const Rational above_lo = lo.is_rational() ? lo.a0 : to_q(lo.enclose(bits).hi());
+    const Rational below_hi = hi.is_rational() ? hi.a0 : to_q(hi.enclose(bits).lo());
     if (above_lo < below_hi) return simplest_rational_in(above_lo, below_hi);
     if (bits > (1 << 22)) throw std::logic_error("rational_strictly_between: values do not separate");
   }
@@ -379,6 +378,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   out.halfspace_count_ = static_cast<int>(scene.halfspaces.size());
   auto impl = std::make_shared<Impl>();
   CgalArrangement& arr = impl->arr;
+  auto pieces = std::make_shared<Pieces>();
 
   // --- 1. Curves: the box, then every halfspace boundary, each distinct curve once (see DistinctCurves). --------
   const DistinctCurves curves = distinct_curves(scene);
@@ -387,14 +387,14 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   guard.detach();
 
   // --- 2. Vertices. ----------------------------------------------------------------------------------------------
-  out.vertices_.reserve(arr.number_of_vertices());
-  out.edges_.reserve(arr.number_of_edges());
+  pieces->vertices.reserve(arr.number_of_vertices());
+  pieces->edges.reserve(arr.number_of_edges());
   impl->vertex_index.reserve(arr.number_of_vertices());
   impl->face_index.reserve(arr.number_of_faces());
   impl->edge_index.reserve(2 * arr.number_of_edges());
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
-    impl->vertex_index[key(VertexHandle(v))] = static_cast<int>(out.vertices_.size());
-    out.vertices_.push_back({to_point(v->point()), static_cast<int>(v->degree())});
+    impl->vertex_index[key(VertexHandle(v))] = static_cast<int>(pieces->vertices.size());
+    pieces->vertices.push_back({to_point(v->point()), static_cast<int>(v->degree())});
   }
   // --- 3. Faces: bounded ones only; the unbounded face is outside the domain. -------------------------------------
   std::vector<FaceHandle> faces;
@@ -412,7 +412,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   // --- 4. Edges, oriented as CGAL's representative halfedge. ------------------------------------------------------
   for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
     Halfedge h = e;
-    const int id = static_cast<int>(out.edges_.size());
+    const int id = static_cast<int>(pieces->edges.size());
     impl->edge_index[key(h)] = id;
     impl->edge_index[key(h->twin())] = id;
     ArrEdge2 edge;
@@ -448,17 +448,16 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       const bool same_as_curve = halfedge_directed_right == cv.is_directed_right();
       edge.ccw = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == same_as_curve;
     }
-    edge.length = edge_length(edge, out.vertices_[edge.source].point, out.vertices_[edge.target].point);
-    out.edges_.push_back(std::move(edge));
+    pieces->edges.push_back(std::move(edge));
   }
   auto edge_of = [&](Halfedge h) { return impl->edge_index.at(key(h)); };
-  auto forward = [&](Halfedge h) { return vertex_id(h->source()) == out.edges_[edge_of(h)].source; };
+  auto forward = [&](Halfedge h) { return vertex_id(h->source()) == pieces->edges[edge_of(h)].source; };
 
-  // --- 5. Per face: boundary walks, outer flag, area (Green's theorem), an exact interior point. -----------------
-  out.faces_.resize(faces.size());
+  // --- 5. Per face: boundary walks, outer flag, an exact interior point (areas: on request, see below). ----------
+  pieces->faces.resize(faces.size());
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
     FaceHandle f = faces[fi];
-    ArrFace2& face = out.faces_[fi];
+    ArrFace2& face = pieces->faces[fi];
     std::vector<Halfedge> walk_halfedges;
     auto walk = [&](CgalArrangement::Ccb_halfedge_const_circulator start) {
       std::vector<std::pair<int, bool>> cycle;
@@ -474,8 +473,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end(); ++hole) walk(*hole);
 
     for (Halfedge h : walk_halfedges)
-      if (out.edges_[edge_of(h)].on_box) face.outer = true;
-    face.area = enclosed_area(face.boundary, out.edges_, out.vertices_);
+      if (pieces->edges[edge_of(h)].on_box) face.outer = true;
 
     // Interior point: shoot vertically from a point of a non-vertical boundary edge into the face; the open
     // vertical segment up to the next boundary crossing lies in the face.
@@ -516,9 +514,9 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
 
   // --- 6. Sides: evaluate one face directly, then flip halfspace bits across edges (breadth first). ---------------
   const std::size_t n_half = scene.halfspaces.size();
-  if (!out.faces_.empty()) {
-    std::vector<char> seen(out.faces_.size(), 0);
-    ArrFace2& root = out.faces_[0];
+  if (!pieces->faces.empty()) {
+    std::vector<char> seen(pieces->faces.size(), 0);
+    ArrFace2& root = pieces->faces[0];
     root.inside.assign(n_half, 0);
     for (std::size_t i = 0; i < n_half; ++i) {
       const int side = scene.halfspaces[i].side(root.interior);
@@ -530,14 +528,14 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     while (!queue.empty()) {
       const int fi = queue.front();
       queue.pop_front();
-      for (const auto& cycle : out.faces_[fi].boundary)
+      for (const auto& cycle : pieces->faces[fi].boundary)
         for (const auto& [ei, fwd] : cycle) {
-          const ArrEdge2& e = out.edges_[ei];
+          const ArrEdge2& e = pieces->edges[ei];
           const int other = fwd ? e.right_face : e.left_face;
           if (other < 0 || seen[other]) continue;
           seen[other] = 1;
-          out.faces_[other].inside = out.faces_[fi].inside;
-          for (int i : e.halfspaces) out.faces_[other].inside[i] ^= 1;
+          pieces->faces[other].inside = pieces->faces[fi].inside;
+          for (int i : e.halfspaces) pieces->faces[other].inside[i] ^= 1;
           queue.push_back(other);
         }
     }
@@ -554,13 +552,13 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     const CgalPoint p(to_coord(sample.location.x), to_coord(sample.location.y));
     const auto located = impl->locator->locate(p);
     auto carries = [&](int ei) {
-      const ArrEdge2& e = out.edges_[ei];
+      const ArrEdge2& e = pieces->edges[ei];
       return !e.on_box && std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), sample.halfspace);
     };
     int edge = -1;
     if (const Halfedge* h = boost::get<Halfedge>(&located)) {
       edge = edge_of(*h);
-      if (out.edges_[edge].on_box)
+      if (pieces->edges[edge].on_box)
         throw InputError(who + ": lies on the domain boundary " + sample.location.exact_string() +
                          "; move it inside the domain");
       if (!carries(edge)) throw std::logic_error(who + ": located on an edge of another boundary");
@@ -570,7 +568,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       auto c = (*v)->incident_halfedges();
       for (std::size_t k = 0; k < (*v)->degree(); ++k, ++c) incident.push_back(edge_of(Halfedge(c)));
       const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
-                              out.edges_[incident[0]].halfspaces == out.edges_[incident[1]].halfspaces;
+                              pieces->edges[incident[0]].halfspaces == pieces->edges[incident[1]].halfspaces;
       if (!inside_run)
         throw InputError(who + ": lies on an arrangement vertex " + sample.location.exact_string() +
                          " where boundaries meet; a sample must lie inside a patch");
@@ -581,6 +579,14 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     out.sample_edges_.push_back(edge);
   }
   out.impl_ = std::move(impl);
+  out.edge_lengths_ = std::make_shared<const MeasureCache>(pieces->edges.size(), [pieces](std::size_t e) {
+    const ArrEdge2& edge = pieces->edges[e];
+    return edge_length(edge, pieces->vertices[edge.source].point, pieces->vertices[edge.target].point);
+  });
+  out.face_areas_ = std::make_shared<const MeasureCache>(pieces->faces.size(), [pieces](std::size_t f) {
+    return enclosed_area(pieces->faces[f].boundary, pieces->edges, pieces->vertices);
+  });
+  out.pieces_ = std::move(pieces);
   return out;
 }
 
@@ -592,9 +598,9 @@ long bare_cgal_arrangement_faces(const Scene2& scene) {
 }
 
 int Arrangement2::connected_components() const {
-  DisjointSets sets(vertices_.size());
-  for (const auto& e : edges_) sets.union_set(e.source, e.target);
-  return components_of(sets, vertices_.size()).count;
+  DisjointSets sets(vertices().size());
+  for (const auto& e : edges()) sets.union_set(e.source, e.target);
+  return components_of(sets, vertices().size()).count;
 }
 
 PointLocation2 Arrangement2::locate(const PointQ2& p) const {

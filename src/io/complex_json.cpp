@@ -507,7 +507,7 @@ void read_arc(const JsonField& e, const OneRootPoint& p, const OneRootPoint& q, 
   if (!on_circle(q, edge.center, edge.radius)) e.at("target").fail("the vertex does not lie on the arc's circle");
 }
 
-/// geometry.edges[k], with its exact length.
+/// geometry.edges[k] (its length: planar_measures.hpp's edge_length).
 ArrEdge2 read_edge(const JsonField& e, std::size_t k, const Names& names, std::size_t cell_count,
                    const std::vector<ArrVertex2>& vertices) {
   ArrEdge2 edge;
@@ -526,14 +526,17 @@ ArrEdge2 read_edge(const JsonField& e, std::size_t k, const Names& names, std::s
   } else {
     read_arc(e, p, q, edge);
   }
-  edge.length = edge_length(edge, p, q);
   return edge;
 }
 
 void read_edges(const JsonField& je, const Names& names, std::size_t cell_count, ComplexDocument& doc) {
   const std::size_t ne = je.size();
   doc.edges.resize(ne);
-  for (std::size_t k = 0; k < ne; ++k) doc.edges[k] = read_edge(je.at(k), k, names, cell_count, doc.vertices);
+  doc.edge_lengths.resize(ne);
+  for (std::size_t k = 0; k < ne; ++k) {
+    const ArrEdge2& edge = doc.edges[k] = read_edge(je.at(k), k, names, cell_count, doc.vertices);
+    doc.edge_lengths[k] = edge_length(edge, doc.vertices[edge.source].point, doc.vertices[edge.target].point);
+  }
 }
 
 /// Each vertex's degree (edge ends there), checked against its optional "degree" field.
@@ -585,6 +588,7 @@ void read_faces(const JsonField& jf, std::size_t cell_count, ComplexDocument& do
             " cells (faces and cells correspond one to one)");
   }
   doc.faces.resize(nf);
+  doc.face_areas.resize(nf);
   for (std::size_t k = 0; k < nf; ++k) {
     const JsonField f = jf.at(k);
     f.check_keys({"id", "boundary"}, "a face");
@@ -597,7 +601,7 @@ void read_faces(const JsonField& jf, std::size_t cell_count, ComplexDocument& do
     auto& boundary = doc.faces[k].boundary;
     for (std::size_t w = 0; w < walks.size(); ++w)
       boundary.push_back(read_walk(walks.at(w), static_cast<int>(k), doc.edges));
-    doc.faces[k].area = enclosed_area(boundary, doc.edges, doc.vertices);
+    doc.face_areas[k] = enclosed_area(boundary, doc.edges, doc.vertices);
   }
 }
 
@@ -713,7 +717,7 @@ void read_cells(const JsonField& cells, const Names& names, ComplexDocument& doc
       cell.measure = Measure(volumes[k]);
       if (auto m = f.get("measure")) check_measure(*m, cell.measure, "volume", budget);
     } else if (doc.has_geometry) {
-      cell.measure = doc.faces[k].area;
+      cell.measure = doc.face_areas[k];
       if (auto m = f.get("measure")) check_measure(*m, cell.measure, "area", budget);
       ArrFace2& face = doc.faces[k];
       face.outer = cell.outer;
@@ -781,7 +785,7 @@ Measure patch_length(const JsonField& f, const Patch& patch, const ComplexDocume
         where.fail("edge " + std::to_string(patch.pieces[k]) + " does not share a vertex with the previous piece");
       }
     }
-    length += e.length;
+    length += doc.edge_lengths[static_cast<std::size_t>(patch.pieces[k])];
   }
   return length;
 }

@@ -112,13 +112,13 @@ nlohmann::json bsh_graphcut_to_json(const Complex& complex, std::int64_t weight_
   nlohmann::json patches = nlohmann::json::array();
   for (std::size_t p = 0; p < complex.patches.size(); ++p) {
     const Patch& patch = complex.patches[p];
-    const double measure = patch.measure.to_double();
+    const double measure = patch.measure.get().to_double();
     const double scaled = std::round(measure * static_cast<double>(weight_scale));
     if (!(scaled <= kLargestExactWeight))
-      throw InputError("patch " + std::to_string(p) + ": its weight, measure " + patch.measure.decimal_string(12) +
+      throw InputError("patch " + std::to_string(p) + ": its weight, measure " + patch.measure.get().decimal_string(12) +
                        " times the scale " + std::to_string(weight_scale) +
                        ", exceeds 2^53 (not exact as a double): use a smaller weight scale");
-    const auto exact = patch.measure.exact_string();
+    const auto exact = patch.measure.get().exact_string();
     patches.push_back({{"adj_cell_0", patch.outside_cell},
                        {"adj_cell_1", patch.inside_cell},
                        {"weight", std::max<std::int64_t>(1, static_cast<std::int64_t>(scaled))},

@@ -79,7 +79,7 @@ BruteForceResult oracle(const Problem& problem, bool connectivity) {
 }
 
 bool curved(const Complex& c) {
-  return std::any_of(c.patches.begin(), c.patches.end(), [](const Patch& p) { return p.measure.has_special_terms(); });
+  return std::any_of(c.patches.begin(), c.patches.end(), [](const Patch& p) { return p.measure.get().has_special_terms(); });
 }
 
 bool contains(const std::vector<Labelling>& list, const Labelling& l) {

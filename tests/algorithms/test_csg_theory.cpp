@@ -856,7 +856,8 @@ bool greedy_diagnosis(const Complex& c, const bsh::Labelling& target, bsh::Metho
               return std::find(jv.begin(), jv.end(), j) != jv.end();
             });
             if (!adjacent) continue;
-            const double d = dist[u] + (c.patches[ps[u]].measure.to_double() + c.patches[ps[v]].measure.to_double()) / 2;
+            const double d = dist[u] + (c.patches[ps[u]].measure.get().to_double() +
+                                        c.patches[ps[v]].measure.get().to_double()) / 2;
             if (d < dist[v]) dist[v] = d;
           }
         }

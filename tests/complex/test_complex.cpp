@@ -164,7 +164,7 @@ void check_structure(const Scene2& scene, const Arranged2& a) {
       covered_edges.insert(e);
     }
     RC_ASSERT(pa.junctions.size() == 0u || pa.junctions.size() == 2u);
-    RC_ASSERT(pa.measure.sign() == std::optional<int>(1));
+    RC_ASSERT(pa.measure.get().sign() == std::optional<int>(1));
   }
   // Every interior edge is in some patch.
   for (int e = 0; e < static_cast<int>(arr.edges().size()); ++e)
@@ -345,9 +345,9 @@ TEST_CASE("complex: a polygon edge cut by two circles has exact patch lengths", 
       sum += p.measure;
       if (close(p.measure, expected_piece, 1e-30)) {
         found_piece = true;
-        INFO("piece between the circles: " << p.measure.exact_string().value_or("?"));
+        INFO("piece between the circles: " << p.measure.get().exact_string().value_or("?"));
         CHECK(compare(p.measure, expected_piece) == Order::Equal);
-        CHECK(!p.measure.has_special_terms());
+        CHECK(!p.measure.get().has_special_terms());
       }
     }
   CHECK(found_piece);
@@ -373,7 +373,7 @@ TEST_CASE("complex: two crossing disks", "[complex]") {
   const double pi = std::acos(-1.0);
   int long_arcs = 0, short_arcs = 0;
   for (const Patch& p : c.patches) {
-    const double len = p.measure.to_double();
+    const double len = p.measure.get().to_double();
     if (std::fabs(len - 8 * pi / 3) < 1e-12) ++long_arcs;
     if (std::fabs(len - 4 * pi / 3) < 1e-12) ++short_arcs;
   }

@@ -91,8 +91,9 @@ void check_structure(const Scene2& scene, const Arrangement2& arr) {
     // Exactly the box edges border the outside of the domain.
     RC_ASSERT((e.left_face < 0 || e.right_face < 0) == e.on_box);
     RC_ASSERT(e.left_face != e.right_face);
-    RC_ASSERT(e.length.sign() == std::optional<int>(1));
   }
+  for (std::size_t e = 0; e < arr.edges().size(); ++e)
+    RC_ASSERT(arr.edge_lengths()->get(e).sign() == std::optional<int>(1));
   for (int v = 0; v < V; ++v) {
     RC_ASSERT(arr.vertices()[v].degree == degree[v]);
     RC_ASSERT(degree[v] >= 2);
@@ -196,17 +197,17 @@ void check_location(const Scene2& scene, const Arrangement2& arr) {
 void check_areas(const Scene2& scene, const Arrangement2& arr) {
   const Box2& d = scene.domain;
   Measure total;
-  for (const ArrFace2& f : arr.faces()) {
-    RC_ASSERT(f.area.sign() == std::optional<int>(1));
-    total += f.area;
+  for (std::size_t f = 0; f < arr.faces().size(); ++f) {
+    RC_ASSERT(arr.face_areas()->get(f).sign() == std::optional<int>(1));
+    total += arr.face_areas()->get(f);
   }
   RC_ASSERT(compare(total, Measure(Rational((d.max.x - d.min.x) * (d.max.y - d.min.y)))) == Order::Equal);
   for (std::size_t i = 0; i < scene.halfspaces.size(); ++i) {
     const Halfspace2& h = scene.halfspaces[i];
     if (h.kind == HalfspaceKind2::Halfplane) continue;
     Measure in;  // area of the cells inside the polygon or disk itself (complement undone)
-    for (const ArrFace2& f : arr.faces())
-      if (static_cast<bool>(f.inside[i]) != h.complement) in += f.area;
+    for (std::size_t f = 0; f < arr.faces().size(); ++f)
+      if (static_cast<bool>(arr.faces()[f].inside[i]) != h.complement) in += arr.face_areas()->get(f);
     if (h.kind == HalfspaceKind2::Polygon) {
       RC_ASSERT(compare(in, Measure(abs(signed_area(h.vertices)))) == Order::Equal);
     } else {
@@ -290,7 +291,7 @@ TEST_CASE("arrangement2: three concurrent lines meet at one vertex of degree 6",
   CHECK(interior_vertices == 1);
   // The six sectors have areas adding up to 25.
   Measure total;
-  for (const ArrFace2& f : arr.faces()) total += f.area;
+  for (std::size_t f = 0; f < arr.faces().size(); ++f) total += arr.face_areas()->get(f);
   CHECK(compare(total, Measure(Rational(25))) == Order::Equal);
 }
 
@@ -347,7 +348,7 @@ TEST_CASE("arrangement2: a disk tangent to a line", "[arrangement2]") {
   // The disk's face has area pi exactly (two quarter arcs and a half arc around one circle).
   const PointLocation2 c = arr.locate(pt(0, 0));
   REQUIRE(c.kind == PointLocation2::Face);
-  CHECK(encloses_same(arr.faces()[c.index].area, disk_area(s.halfspaces[0])));
+  CHECK(encloses_same(arr.face_areas()->get(static_cast<std::size_t>(c.index)), disk_area(s.halfspaces[0])));
 }
 
 TEST_CASE("arrangement2: two crossing disks", "[arrangement2]") {
@@ -366,7 +367,7 @@ TEST_CASE("arrangement2: two crossing disks", "[arrangement2]") {
   CHECK(f.inside == std::vector<char>{1, 1});
   CHECK(!f.outer);
   // 8pi/3 - 2sqrt(3) = 4.913478870...
-  const Interval a = f.area.enclose(128);
+  const Interval a = arr.face_areas()->get(static_cast<std::size_t>(lens.index)).enclose(128);
   CHECK(a.lo_double() > 4.9134787944);
   CHECK(a.hi_double() < 4.9134787945);
   const PointLocation2 out = arr.locate(pt(5, 3));

@@ -82,10 +82,10 @@ TEST_CASE("a 3D complex document with geometry: volumes and areas recomputed exa
   REQUIRE(doc.domain3);
   CHECK(doc.domain3->max.x == 2);
   REQUIRE(doc.complex.cells.size() == 2);
-  CHECK(doc.complex.cells[0].measure.rational_value() == Rational(1));
-  CHECK(doc.complex.cells[1].measure.rational_value() == Rational(1));
+  CHECK(doc.complex.cells[0].measure.get().rational_value() == Rational(1));
+  CHECK(doc.complex.cells[1].measure.get().rational_value() == Rational(1));
   REQUIRE(doc.complex.patches.size() == 1);
-  CHECK(doc.complex.patches[0].measure.rational_value() == Rational(1));
+  CHECK(doc.complex.patches[0].measure.get().rational_value() == Rational(1));
   CHECK(doc.triangles3.size() == 22);
   CHECK(doc.vertices3.size() == 12);
 }
@@ -140,7 +140,7 @@ TEST_CASE("a 3D complex document without geometry takes its measures as given", 
   doc["cells"][1]["measure"] = "5/2";
   const ComplexDocument read = complex_document_from_json(doc);
   CHECK_FALSE(read.has_geometry);
-  CHECK(read.complex.cells[1].measure.rational_value() == Rational(5, 2));
+  CHECK(read.complex.cells[1].measure.get().rational_value() == Rational(5, 2));
   doc["cells"][1]["measure"] = "0";
   CHECK_THAT(error_of(doc), Catch::Contains("a cell's volume must be positive"));
 }

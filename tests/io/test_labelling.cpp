@@ -110,7 +110,7 @@ TEST_CASE("labelling: the BSH graph-cut export keeps the authors' conventions", 
       CHECK(e.at("num_samples") == c.patches[p].samples.size());
       CHECK(e.at("adj_patches").get<std::vector<int>>() == neighbours[p]);
       REQUIRE(e.at("weight").is_number_integer());
-      const double expected = std::max(1.0, std::round(c.patches[p].measure.to_double() * 1000));
+      const double expected = std::max(1.0, std::round(c.patches[p].measure.get().to_double() * 1000));
       CHECK(e.at("weight").get<double>() == expected);
     }
     std::size_t outer = 0;

@@ -29,7 +29,7 @@
 //   per fan of one patch's triangles around the corner, from spoke to spoke, or a whole disc).
 #pragma once
 
-#include <hsx/kernel/measure.hpp>
+#include <hsx/kernel/lazy_measure.hpp>
 #include <hsx/kernel/rational.hpp>
 
 #include <string>
@@ -41,13 +41,13 @@ struct Cell {
   bool outer = false;
   std::vector<Rational> witness;  ///< exact interior point, `dimension` coordinates
   std::vector<char> inside;       ///< per halfspace: 1 inside, 0 outside
-  Measure measure;                ///< area (2D) or volume (3D)
+  LazyMeasure measure;            ///< area (2D) or volume (3D); computed on first read (2D arrangements)
 };
 
 struct Patch {
   int halfspace = -1;
   int inside_cell = -1, outside_cell = -1;
-  Measure measure;                ///< length (2D) or area (3D)
+  LazyMeasure measure;            ///< length (2D) or area (3D); computed on first read (2D arrangements)
   std::vector<int> samples;       ///< indices into Complex::samples, ascending
   int support = -1;               ///< index into Complex::supports
   std::vector<int> junctions;     ///< junctions this patch ends at (2D: its two end vertices; none when closed)

@@ -16,7 +16,7 @@
 #pragma once
 
 #include <hsx/geometry/scene.hpp>
-#include <hsx/kernel/measure.hpp>
+#include <hsx/kernel/lazy_measure.hpp>
 
 #include <memory>
 #include <vector>
@@ -42,14 +42,12 @@ struct ArrEdge2 {
   /// segment only: the supporting line a*x + b*y + c = 0 with rational coefficients (all zero when unknown,
   /// e.g. read from a document)
   Rational line_a, line_b, line_c;
-  Measure length;
 };
 
 struct ArrFace2 {
   bool outer = false;
   PointQ2 interior;               ///< an exact rational point strictly inside the face
   std::vector<char> inside;       ///< per halfspace: 1 inside, 0 outside
-  Measure area;
   /// Boundary walks, each a cycle of (edge, forward) with the face on the left; the first is the outer
   /// boundary, the rest are holes.
   std::vector<std::vector<std::pair<int, bool>>> boundary;
@@ -80,7 +78,8 @@ long bare_cgal_arrangement_faces(const Scene2& scene);
 class Arrangement2 {
  public:
   /// Builds the arrangement of every halfspace boundary of `scene` (validated, see validate_and_resolve) with
-  /// the domain box, classifies faces, measures edges and faces, and places samples.
+  /// the domain box, classifies faces and places samples. Edge lengths and face areas are computed on first
+  /// request (edge_lengths(), face_areas()).
   /// Throws InputError when a sample lies on a vertex where two boundaries meet, and when the arrangement
   /// outgrows `limits` (checked while CGAL builds it, so refusing costs about what the limit allows). A refusal
   /// from inside CGAL's sweep leaks the sweep's buffers (CGAL frees them only when a sweep completes): about
@@ -90,9 +89,14 @@ class Arrangement2 {
 
   const Box2& domain() const { return domain_; }
   int halfspace_count() const { return halfspace_count_; }
-  const std::vector<ArrVertex2>& vertices() const { return vertices_; }
-  const std::vector<ArrEdge2>& edges() const { return edges_; }
-  const std::vector<ArrFace2>& faces() const { return faces_; }
+  const std::vector<ArrVertex2>& vertices() const { return pieces_->vertices; }
+  const std::vector<ArrEdge2>& edges() const { return pieces_->edges; }
+  const std::vector<ArrFace2>& faces() const { return pieces_->faces; }
+  /// Exact edge lengths, entry e for edges()[e] (geometry/planar_measures.hpp: edge_length), each computed on its
+  /// first read and kept; thread-safe. The cache keeps the geometry it needs alive: it may outlive this object.
+  const std::shared_ptr<const MeasureCache>& edge_lengths() const { return edge_lengths_; }
+  /// Exact face areas, entry f for faces()[f] (planar_measures.hpp: enclosed_area), as edge_lengths().
+  const std::shared_ptr<const MeasureCache>& face_areas() const { return face_areas_; }
   /// For each scene sample, the edge that holds it (an edge carrying the sample's halfspace). A sample on a
   /// degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is given one of the two
   /// edges.
@@ -107,11 +111,17 @@ class Arrangement2 {
  private:
   struct Impl;
   std::shared_ptr<const Impl> impl_;
+  /// The plain data, shared with the measure caches (which must not hold the arrangement itself).
+  struct Pieces {
+    std::vector<ArrVertex2> vertices;
+    std::vector<ArrEdge2> edges;
+    std::vector<ArrFace2> faces;
+  };
   Box2 domain_;
   int halfspace_count_ = 0;
-  std::vector<ArrVertex2> vertices_;
-  std::vector<ArrEdge2> edges_;
-  std::vector<ArrFace2> faces_;
+  std::shared_ptr<const Pieces> pieces_ = std::make_shared<const Pieces>();
+  std::shared_ptr<const MeasureCache> edge_lengths_ = std::make_shared<const MeasureCache>(0, nullptr);
+  std::shared_ptr<const MeasureCache> face_areas_ = std::make_shared<const MeasureCache>(0, nullptr);
   std::vector<int> sample_edges_;
 };
 

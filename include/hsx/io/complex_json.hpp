@@ -90,11 +90,13 @@ struct ComplexDocument {
   std::optional<Box2> domain;   ///< 2D documents
   std::optional<Box3> domain3;  ///< 3D documents
   bool has_geometry = false;
-  /// The "geometry" section as arrangement data (edge lengths and face areas recomputed exactly; face `inside`,
-  /// `outer` and `interior` taken from the cells). Empty without geometry.
+  /// The "geometry" section as arrangement data (face `inside`, `outer` and `interior` taken from the cells).
+  /// Empty without geometry.
   std::vector<ArrVertex2> vertices;
   std::vector<ArrEdge2> edges;
   std::vector<ArrFace2> faces;
+  /// Exact length of each of `edges` and area of each of `faces`, recomputed from the geometry (empty without).
+  std::vector<Measure> edge_lengths, face_areas;
   /// The 3D "geometry" section: vertices and triangles (front_cell/back_cell, halfspaces, front_inside, on_box,
   /// area2 recomputed). Empty without geometry or in 2D.
   std::vector<PointQ3> vertices3;

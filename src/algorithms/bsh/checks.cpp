@@ -449,7 +449,7 @@ CheckResult check_certificates(const Complex& complex, const ExtractResult* opti
   // With curved boundaries a certificate may fail only because equal-looking measures did not separate;
   // with straight ones every comparison is exact, so an uncertified cut is a failure.
   const bool curved = std::any_of(complex.patches.begin(), complex.patches.end(),
-                                  [](const Patch& p) { return p.measure.has_special_terms(); });
+                                  [](const Patch& p) { return p.measure.get().has_special_terms(); });
   if (bad) {
     r.status = curved ? CheckResult::Skipped : CheckResult::Fail;
     if (curved) r.witness += " (curved boundaries: unseparated comparisons)";

@@ -36,8 +36,8 @@ int central_patch(const Complex& c, const std::vector<int>& component, const Com
     }
   // Dijkstra from every patch (components are small); edge a-b costs (|a| + |b|) / 2 in 2D, 1 in 3D.
   const auto cost = [&](int a, int b) {
-    return c.dimension == 3 ? Measure(Rational(1))
-                            : (c.patches[component[a]].measure + c.patches[component[b]].measure) * Rational(1, 2);
+    if (c.dimension == 3) return Measure(Rational(1));
+    return (c.patches[component[a]].measure.get() + c.patches[component[b]].measure.get()) * Rational(1, 2);
   };
   int best = -1;
   Measure best_radius;

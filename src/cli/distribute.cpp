@@ -8,13 +8,17 @@
 #ifdef HSX_WITH_MPI
 #include <mpi.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <condition_variable>
 #include <deque>
 #include <exception>
 #include <map>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
+#include <utility>
 #endif
 
 namespace hsx::cli {
@@ -48,7 +52,57 @@ void MpiRun::distribute(const std::vector<std::uint64_t>& indices, const LineWor
 
 namespace {
 
-constexpr int kLineTag = 1;
+constexpr int kLineTag = 1;  // a line: its position in the list (8 bytes, host order) and its text
+constexpr int kAskTag = 2;   // an empty message: "the next chunk, please"
+constexpr int kGiveTag = 3;  // the answer: two uint64 positions [begin, end); empty when nothing is left
+
+/// Positions [begin, end) of the list.
+struct Chunk {
+  std::uint64_t begin = 0, end = 0;
+};
+
+/// Hands out the list's positions in order, in chunks that shrink as the list runs out (guided scheduling): large
+/// enough early that asking costs little, small at the end so that no rank waits long for another's last chunk.
+/// Which rank gets which chunk depends on timing; the output does not, since rank 0 writes lines by position.
+class Dispenser {
+ public:
+  Dispenser(std::uint64_t n, std::uint64_t ranks) : n_(n), ranks_(ranks) {}
+  Chunk next() {
+    const std::uint64_t left = n_ - next_;
+    const std::uint64_t size = std::min<std::uint64_t>(left, std::clamp<std::uint64_t>(left / (8 * ranks_), 1, 64));
+    const Chunk c{next_, next_ + size};
+    next_ += size;
+    return c;
+  }
+
+ private:
+  std::uint64_t n_, ranks_, next_ = 0;
+};
+
+Chunk receive_chunk() {
+  std::uint64_t bounds[2] = {0, 0};
+  MPI_Recv(bounds, 2, MPI_UINT64_T, 0, kGiveTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return {bounds[0], bounds[1]};
+}
+
+void send_line(std::uint64_t position, const std::string& line) {
+  std::string message(sizeof position, '\0');
+  std::memcpy(message.data(), &position, sizeof position);
+  message += line;
+  MPI_Send(message.data(), static_cast<int>(message.size()), MPI_CHAR, 0, kLineTag, MPI_COMM_WORLD);
+}
+
+/// The line announced by `status` (a kLineTag message), with its position.
+std::pair<std::uint64_t, std::string> receive_line(const MPI_Status& status) {
+  int count = 0;
+  MPI_Get_count(&status, MPI_CHAR, &count);
+  std::string message(static_cast<std::size_t>(count), '\0');
+  MPI_Recv(message.data(), count, MPI_CHAR, status.MPI_SOURCE, kLineTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  std::uint64_t position = 0;
+  if (message.size() < sizeof position) throw std::runtime_error("a line message without its position");
+  std::memcpy(&position, message.data(), sizeof position);
+  return {position, message.substr(sizeof position)};
+}
 
 [[noreturn]] void abort_run(const std::string& what, int rank) {
   std::cerr << "hsx: rank " << rank << ": " << what << "; stopping every rank\n" << std::flush;
@@ -90,68 +144,85 @@ bool MpiRun::broadcast(bool value) const {
 
 void MpiRun::distribute(const std::vector<std::uint64_t>& indices, const LineWork& work,
                         const std::function<void(std::string&&)>& sink) const {
-  const std::size_t n = indices.size(), ranks = static_cast<std::size_t>(size_);
-  std::vector<std::uint64_t> mine;
-  for (std::size_t k = static_cast<std::size_t>(rank_); k < n; k += ranks) mine.push_back(indices[k]);
+  const std::size_t n = indices.size();
+  const auto share = [&](Chunk c) {
+    return std::vector<std::uint64_t>(indices.begin() + static_cast<std::ptrdiff_t>(c.begin),
+                                      indices.begin() + static_cast<std::ptrdiff_t>(c.end));
+  };
   if (rank_ != 0) {
     try {
-      work(mine, [](std::string&& line) {
-        MPI_Send(line.data(), static_cast<int>(line.size()), MPI_CHAR, 0, kLineTag, MPI_COMM_WORLD);
-      });
+      // One request is always outstanding while a chunk is worked on, so the next one is there when it ends.
+      MPI_Send(nullptr, 0, MPI_CHAR, 0, kAskTag, MPI_COMM_WORLD);
+      for (Chunk c = receive_chunk(); c.begin < c.end;) {
+        MPI_Send(nullptr, 0, MPI_CHAR, 0, kAskTag, MPI_COMM_WORLD);
+        std::uint64_t position = c.begin;
+        work(share(c), [&](std::string&& line) { send_line(position++, line); });
+        c = receive_chunk();
+      }
     } catch (const std::exception& e) {
       abort_run(e.what(), rank_);
     }
     return;
   }
-  // Rank 0: its own share on a worker thread (which makes no MPI call), the other ranks' lines here.
+  // Rank 0: chunks for itself on a worker thread (which makes no MPI call); here, the other ranks' requests
+  // answered and their lines received.
+  Dispenser dispenser(n, static_cast<std::size_t>(size_));
   std::mutex mutex;
   std::condition_variable wake;
-  std::deque<std::string> local;
+  std::deque<std::pair<std::uint64_t, std::string>> local;  // rank 0's lines with their positions
   std::exception_ptr failure;
   std::thread worker([&] {
     try {
-      work(mine, [&](std::string&& line) {
-        std::lock_guard<std::mutex> lock(mutex);
-        local.push_back(std::move(line));
-        wake.notify_one();
-      });
+      for (;;) {
+        const Chunk c = [&] {
+          std::lock_guard<std::mutex> lock(mutex);
+          return dispenser.next();
+        }();
+        if (c.begin == c.end) return;
+        std::uint64_t position = c.begin;
+        work(share(c), [&](std::string&& line) {
+          std::lock_guard<std::mutex> lock(mutex);
+          local.emplace_back(position++, std::move(line));
+          wake.notify_one();
+        });
+      }
     } catch (...) {
       std::lock_guard<std::mutex> lock(mutex);
       failure = std::current_exception();
       wake.notify_one();
     }
   });
-  std::vector<std::size_t> received(ranks, 0);  // lines had from each rank: the next one is at rank + received * P
-  std::map<std::size_t, std::string> waiting;    // lines by position, until every earlier one is there
-  std::size_t next = 0;
+  std::map<std::uint64_t, std::string> waiting;  // lines by position, until every earlier one is there
+  std::uint64_t next = 0;
+  int done_ranks = 0;  // ranks told that nothing is left (each asks once more after its last chunk)
   try {
-    while (next < n) {
+    while (next < n || done_ranks < size_ - 1) {
       bool progress = false;
       {
         std::unique_lock<std::mutex> lock(mutex);
         if (failure) std::rethrow_exception(failure);
-        while (!local.empty()) {
-          waiting.emplace(received[0]++ * ranks, std::move(local.front()));
-          local.pop_front();
-          progress = true;
-        }
+        for (; !local.empty(); local.pop_front()) waiting.insert(std::move(local.front()));
       }
       int flag = 0;
       MPI_Status status;
-      MPI_Iprobe(MPI_ANY_SOURCE, kLineTag, MPI_COMM_WORLD, &flag, &status);
-      if (flag) {
-        int count = 0;
-        MPI_Get_count(&status, MPI_CHAR, &count);
-        std::string line(static_cast<std::size_t>(count), '\0');
-        MPI_Recv(line.data(), count, MPI_CHAR, status.MPI_SOURCE, kLineTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        const auto from = static_cast<std::size_t>(status.MPI_SOURCE);
-        waiting.emplace(from + received[from]++ * ranks, std::move(line));
+      MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
+      if (flag && status.MPI_TAG == kAskTag) {
+        MPI_Recv(nullptr, 0, MPI_CHAR, status.MPI_SOURCE, kAskTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        const Chunk c = [&] {
+          std::lock_guard<std::mutex> lock(mutex);
+          return dispenser.next();
+        }();
+        if (c.begin == c.end) ++done_ranks;
+        const std::uint64_t bounds[2] = {c.begin, c.end};
+        MPI_Send(bounds, 2, MPI_UINT64_T, status.MPI_SOURCE, kGiveTag, MPI_COMM_WORLD);
+        progress = true;
+      } else if (flag) {
+        waiting.insert(receive_line(status));
         progress = true;
       }
-      while (!waiting.empty() && waiting.begin()->first == next) {
+      for (; !waiting.empty() && waiting.begin()->first == next; ++next) {
         sink(std::move(waiting.begin()->second));
         waiting.erase(waiting.begin());
-        ++next;
       }
       if (!progress) {
         std::unique_lock<std::mutex> lock(mutex);

@@ -2,9 +2,12 @@
 // so that P processes give the same output bytes as one. Compiled with MPI when CMake finds it (HSX_WITH_MPI);
 // without it, a run started by mpirun is refused with a clear message instead of running P copies side by side.
 //
-// The protocol: every rank gets the same list of indices (broadcast from rank 0), takes those at positions
-// rank, rank + P, rank + 2P, ... and turns each into one line of text, in order; ranks other than 0 send their lines
-// to rank 0, which hands every line to its sink in the order of the list. Only rank 0 reads or writes files.
+// The protocol: every rank gets the same list of indices (broadcast from rank 0). Rank 0 hands out positions of the
+// list in chunks, in order, to whichever rank asks (itself included, on a worker thread), large chunks first and
+// single positions at the end, so a rank that drew slow scenes does not hold the others back; every rank turns each
+// index of its chunk into one line of text and sends it to rank 0 with its position, and rank 0 hands every line to
+// its sink in the order of the list. Which rank ran which index depends on timing, the output does not. Only rank 0
+// reads or writes files.
 #pragma once
 
 #include <cstdint>
@@ -42,8 +45,9 @@ class MpiRun {
   /// Rank 0's flag, on every rank (e.g. "the folder was accepted": every rank stops when rank 0 refuses).
   bool broadcast(bool value) const;
 
-  /// Runs `work` on this rank's share of `indices` (the same list on every rank); on rank 0, `sink` receives every
-  /// rank's lines in the order of `indices`, as they arrive. An exception from `work` or `sink` aborts the whole
+  /// Runs `work` on the chunks of `indices` (the same list on every rank) that this rank is given, one call per
+  /// chunk; on rank 0, `sink` receives every rank's lines in the order of `indices`, as soon as all earlier ones are
+  /// there. An exception from `work` or `sink` aborts the whole
   /// run (MPI_Abort) after printing it, since the other ranks cannot be told to stop otherwise.
   void distribute(const std::vector<std::uint64_t>& indices, const LineWork& work,
                   const std::function<void(std::string&&)>& sink) const;

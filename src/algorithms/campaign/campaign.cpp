@@ -733,8 +733,10 @@ void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_
     for (std::uint64_t i : indices) sink(run_scene(settings, i, cancel));
     return;
   }
-  // Positions [written, written + window) may be worked on; position p waits in slots[p % window].
-  const std::size_t window = 4 * static_cast<std::size_t>(jobs);
+  // Positions [written, written + window) may be worked on; position p waits in slots[p % window]. The window is
+  // wide so that one slow scene (seconds, against milliseconds for most) does not stop the other threads until it
+  // ends: they go on up to 512 scenes each past it, holding their records (a few kilobytes each) meanwhile.
+  const std::size_t window = 512 * static_cast<std::size_t>(jobs);
   std::mutex m;
   std::condition_variable cv;
   std::vector<std::optional<SceneRecord>> slots(window);

@@ -284,7 +284,7 @@ SceneRecord check_scene(const CampaignSettings& settings, const Scene3& scene, A
                         const std::function<bool()>& cancel = {});
 
 /// Runs the scenes `indices` on `jobs` threads (>= 1) and calls `sink` with each record, on the calling thread,
-/// in the order of `indices`, as soon as it and every record before it are done (at most about 4 x jobs records
+/// in the order of `indices`, as soon as it and every record before it are done (at most 512 x jobs records
 /// wait for their turn). An exception from `sink` stops the run (the threads finish their current scene) and is
 /// rethrown. Throws InputError for invalid settings or jobs < 1.
 /// - `cancel`: run_scene's, for every scene (empty: none). Cancelling does not stop run_scenes by itself: the sink

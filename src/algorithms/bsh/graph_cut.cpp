@@ -1,5 +1,6 @@
 #include <hsx/algorithms/bsh/graph_cut.hpp>
 
+#include "algorithms/bsh/problem_memo.hpp"
 #include "algorithms/flow_graph.hpp"
 #include "geometry/components.hpp"
 
@@ -90,45 +91,10 @@ Capacity operator-(const Capacity& a, const Capacity& b) {
 }
 Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
 
-/// A value made from a problem, kept per thread for the last problem this thread asked about (keyed by its
-/// support atoms, held so that their address is not reused while the value is kept): graph_cut is called many
-/// times per problem by a search.
-template <class T>
-class ProblemMemo {
- public:
-  /// The value for `problem`, made by T(problem) when this thread last asked about another problem.
-  T& of(const Problem& problem) {
-    if (atoms_ != problem.support_atoms()) {
-      value_ = T(problem);
-      atoms_ = problem.support_atoms();
-    }
-    return value_;
-  }
-
- private:
-  std::shared_ptr<const Problem::SupportAtoms> atoms_;
-  T value_;
-};
-
-/// The exact signs decided for combinations of one problem's supports: a best-first search meets the same
-/// unseparated combinations, mostly exact zeros (the costliest to decide, at the precision cap), in many of its
-/// graph cuts. A sign depends only on the combination.
-struct SignMemo {
-  SignMemo() = default;
-  explicit SignMemo(const Problem&) {}
-  std::map<std::vector<std::pair<int, long>>, std::optional<int>> signs;
-};
-
 /// The exact Measure's sign of `d` (atoms only), remembered per problem and thread.
 std::optional<int> exact_sign_of(const Capacity& d) {
-  constexpr std::size_t kMemoLimit = 1 << 12;
   thread_local ProblemMemo<SignMemo> memo;
-  auto& signs = memo.of(*d.problem).signs;
-  if (signs.size() >= kMemoLimit) signs.clear();
-  if (const auto known = signs.find(d.atoms); known != signs.end()) return known->second;
-  const std::optional<int> s = d.measure().sign();
-  signs.emplace(d.atoms, s);
-  return s;
+  return memo.of(*d.problem).sign(d.atoms, CompareOptions{}, [&] { return d.measure().sign(); });
 }
 
 /// Sign of sum k_g * |g|: the kernel's certified double enclosure of the combination first (exact for any long

@@ -362,6 +362,27 @@ struct DoubleEdge {
 /// would an adjacency list built in that order.
 using DoubleGraph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, DoubleEdge>;
 
+/// Boost's Boykov-Kolmogorov first pushes min(c(s -> v), c(v -> t)) along every path s -> v -> t without
+/// raising the reverse edges' residuals (boykov_kolmogorov_max_flow.hpp, augment_direct_paths: "incoming/outgoing
+/// edges to/from source/sink don't count for max-flow"), so the reverse residuals read as flows miss that amount on
+/// both arcs and the flow looks unconserved at v (every cut of a scene with a sample whose inside cell is outer
+/// then failed the fast certification and took the exact max flow). Adds it back: the run is the same, the flow
+/// now conserved. Each cell has at most one arc from s and one to t (build_network).
+void add_direct_paths(const Network& net, DoubleFlow& flow) {
+  std::vector<int> from_source(net.cells, -1), to_sink(net.cells, -1);
+  for (std::size_t i = 0; i < net.arcs.size(); ++i) {
+    const Arc& a = net.arcs[i];
+    if (a.from == net.s && a.to < net.cells) from_source[a.to] = static_cast<int>(i);
+    if (a.to == net.t && a.from < net.cells) to_sink[a.from] = static_cast<int>(i);
+  }
+  for (int v = 0; v < net.cells; ++v) {
+    if (from_source[v] < 0 || to_sink[v] < 0) continue;
+    const double pushed = std::min(flow.capacity[from_source[v]], flow.capacity[to_sink[v]]);
+    flow.flow[from_source[v]] += pushed;
+    flow.flow[to_sink[v]] += pushed;
+  }
+}
+
 DoubleFlow double_flow(const Problem& problem, const Network& net) {
   const double lambda = lambda_of(problem);
   const auto n = static_cast<std::size_t>(net.cells + 2);
@@ -406,6 +427,7 @@ DoubleFlow double_flow(const Problem& problem, const Network& net) {
     out.flow.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.to), position[2 * i + 1])]);
     out.residual.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.from), position[2 * i])]);
   }
+  add_direct_paths(net, out);
   return out;
 }
 

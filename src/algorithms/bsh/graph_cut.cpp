@@ -383,36 +383,74 @@ void add_direct_paths(const Network& net, DoubleFlow& flow) {
   }
 }
 
+/// The graph of a double network: the edges of an arc list, built once and kept per thread while the arcs' ends
+/// stay the same (the cuts of one search differ in capacities only: removed supports make arcs infinite, and forced
+/// labels add unary arcs only in tie enumeration). Edge 2i is arc i, edge 2i + 1 its reverse (capacity 0);
+/// position[k] is edge k's place in the sorted edge list: by source, and in the order above within a source (a
+/// stable counting sort).
+class DoubleNetwork {
+ public:
+  /// The graph for `net`'s arcs, with every capacity 0 but the reverse edges' links set.
+  DoubleGraph& graph_for(const Network& net) {
+    const auto n = static_cast<std::size_t>(net.cells + 2);
+    const bool same = n == vertices_ && net.arcs.size() == ends_.size() &&
+                      std::equal(net.arcs.begin(), net.arcs.end(), ends_.begin(), [](const Arc& a, const auto& e) {
+                        return a.from == e.first && a.to == e.second;
+                      });
+    if (!same) build(net, n);
+    return graph_;
+  }
+  /// Edge k's descriptor (k = 2i for arc i, 2i + 1 for its reverse).
+  DoubleEdgeDescriptor edge(std::size_t k) const {
+    const auto& [from, to] = ends_[k / 2];
+    return DoubleEdgeDescriptor(static_cast<std::size_t>(k % 2 ? to : from), position_[k]);
+  }
+
+ private:
+  void build(const Network& net, std::size_t n) {
+    vertices_ = n;
+    ends_.clear();
+    for (const Arc& a : net.arcs) ends_.emplace_back(a.from, a.to);
+    const std::size_t m = 2 * ends_.size();
+    const auto source_of = [&](std::size_t k) {
+      return static_cast<std::size_t>(k % 2 ? ends_[k / 2].second : ends_[k / 2].first);
+    };
+    std::vector<std::size_t> start(n + 1, 0);
+    position_.assign(m, 0);
+    for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
+    for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    for (std::size_t k = 0; k < m; ++k) position_[k] = start[source_of(k)]++;
+    std::vector<std::pair<std::size_t, std::size_t>> edges(m);
+    std::vector<DoubleEdge> properties(m);
+    for (std::size_t i = 0; i < ends_.size(); ++i) {
+      const auto from = static_cast<std::size_t>(ends_[i].first), to = static_cast<std::size_t>(ends_[i].second);
+      const std::size_t e = position_[2 * i], r = position_[2 * i + 1];
+      edges[e] = {from, to};
+      edges[r] = {to, from};
+      properties[e].reverse = DoubleEdgeDescriptor(to, r);
+      properties[r].reverse = DoubleEdgeDescriptor(from, e);
+    }
+    graph_ = DoubleGraph(boost::edges_are_sorted, edges.begin(), edges.end(), properties.begin(), n);
+  }
+
+  std::size_t vertices_ = 0;
+  std::vector<std::pair<int, int>> ends_;
+  std::vector<std::size_t> position_;
+  DoubleGraph graph_;
+};
+
 DoubleFlow double_flow(const Problem& problem, const Network& net) {
   const double lambda = lambda_of(problem);
   const auto n = static_cast<std::size_t>(net.cells + 2);
-  // Edge 2i is arc i (capacity as rounded), edge 2i + 1 its reverse (capacity 0); position[k] is edge k's place in
-  // the sorted edge list: by source, and in the order above within a source (a stable counting sort).
-  const std::size_t m = 2 * net.arcs.size();
-  const auto source_of = [&](std::size_t k) {
-    const Arc& a = net.arcs[k / 2];
-    return static_cast<std::size_t>(k % 2 ? a.to : a.from);
-  };
-  std::vector<std::size_t> start(n + 1, 0), position(m);
-  for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
-  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  for (std::size_t k = 0; k < m; ++k) position[k] = start[source_of(k)]++;
-  std::vector<std::pair<std::size_t, std::size_t>> edges(m);
-  std::vector<DoubleEdge> properties(m);
+  thread_local DoubleNetwork network;
+  DoubleGraph& g = network.graph_for(net);
   DoubleFlow out;
   out.capacity.reserve(net.arcs.size());
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    const Arc& a = net.arcs[i];
-    const std::size_t from = static_cast<std::size_t>(a.from), to = static_cast<std::size_t>(a.to);
-    const std::size_t e = position[2 * i], r = position[2 * i + 1];
-    edges[e] = {from, to};
-    edges[r] = {to, from};
-    properties[e].capacity = double_capacity(problem, net, a, lambda);
-    properties[e].reverse = DoubleEdgeDescriptor(to, r);
-    properties[r].reverse = DoubleEdgeDescriptor(from, e);
-    out.capacity.push_back(properties[e].capacity);
+    const double capacity = double_capacity(problem, net, net.arcs[i], lambda);
+    g[network.edge(2 * i)].capacity = capacity;
+    out.capacity.push_back(capacity);
   }
-  DoubleGraph g(boost::edges_are_sorted, edges.begin(), edges.end(), properties.begin(), n);
   auto residual = boost::get(&DoubleEdge::residual, g);
   std::vector<boost::default_color_type> color(n);
   boost::boykov_kolmogorov_max_flow(g, boost::get(&DoubleEdge::capacity, g), residual,
@@ -422,10 +460,9 @@ DoubleFlow double_flow(const Problem& problem, const Network& net) {
   out.flow.reserve(net.arcs.size());
   out.residual.reserve(net.arcs.size());
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    const Arc& a = net.arcs[i];
     // The reverse edge's residual = the arc's flow.
-    out.flow.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.to), position[2 * i + 1])]);
-    out.residual.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.from), position[2 * i])]);
+    out.flow.push_back(residual[network.edge(2 * i + 1)]);
+    out.residual.push_back(residual[network.edge(2 * i)]);
   }
   add_direct_paths(net, out);
   return out;

@@ -520,15 +520,26 @@ class BasicFlow {
   const Network& net_;
   DoubleFlow d_;
   int ground_, nodes_;
-  std::vector<ArcState> state_;
-  std::vector<std::vector<int>> forest_;  // per node: its free (forest) arcs
-  std::vector<int> parent_arc_, order_, position_, size_;
-  std::vector<Enclosed> subtree_, flow_;  // per node: net saturated outflow of its subtree; per arc: the flow
-  std::vector<char> forward_, backward_;  // per arc: positive residual forward (capacity - f), backward (f)
-  std::vector<long> coefficient_;         // per support: scratch for exact sums
-  std::vector<int> stamp_, via_;          // scratch for cycle search
+  // Per thread, reused by the next cut (every one is reset by the step that fills it; one BasicFlow at a time
+  // per thread): a search makes thousands of cuts, and these allocations were a good part of each.
+  static thread_local std::vector<ArcState> state_;
+  static thread_local std::vector<std::vector<int>> forest_;  // per node: its free (forest) arcs
+  static thread_local std::vector<int> parent_arc_, order_, position_, size_;
+  static thread_local std::vector<Enclosed> subtree_, flow_;  // per node: net saturated outflow of its subtree;
+                                                              // per arc: the flow
+  static thread_local std::vector<char> forward_, backward_;  // per arc: positive residual forward (capacity - f),
+                                                              // backward (f)
+  static thread_local std::vector<int> stamp_, via_;          // scratch for cycle search
+  std::vector<long> coefficient_;  // per support: scratch for exact sums
   int stamp_now_ = 0;
 };
+
+thread_local std::vector<ArcState> BasicFlow::state_;
+thread_local std::vector<std::vector<int>> BasicFlow::forest_;
+thread_local std::vector<int> BasicFlow::parent_arc_, BasicFlow::order_, BasicFlow::position_, BasicFlow::size_;
+thread_local std::vector<Enclosed> BasicFlow::subtree_, BasicFlow::flow_;
+thread_local std::vector<char> BasicFlow::forward_, BasicFlow::backward_;
+thread_local std::vector<int> BasicFlow::stamp_, BasicFlow::via_;
 
 void BasicFlow::classify() {
   double largest = 0;
@@ -548,7 +559,8 @@ void BasicFlow::classify() {
 }
 
 void BasicFlow::build_forest() {
-  forest_.assign(nodes_, {});
+  forest_.resize(nodes_);
+  for (auto& arcs : forest_) arcs.clear();  // keeps their storage for the next cut
   stamp_.assign(nodes_, 0);
   via_.assign(nodes_, -1);
   DisjointSets sets(static_cast<std::size_t>(nodes_));

@@ -3,6 +3,7 @@
 #include <hsx/geometry/arrangement2.hpp>
 #include "geometry/components.hpp"
 #include "geometry/planar_measures.hpp"
+#include "kernel/interval_nt.hpp"
 
 #include <CGAL/Arr_circle_segment_traits_2.h>
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
@@ -11,7 +12,6 @@
 #include <CGAL/Arr_walk_along_line_point_location.h>
 #include <CGAL/Arrangement_2.h>
 #include <CGAL/Cartesian.h>
-#include <CGAL/Interval_nt.h>
 
 #include <algorithm>
 #include <array>
@@ -360,7 +360,7 @@ class SizeGuard : public CGAL::Arr_observer<CgalArrangement> {
   long cells_ = 0;  // bounded faces so far
 };
 
-using Enclosure = CGAL::Interval_nt<true>;  // protected: every operation sets and restores the rounding mode
+using Enclosure = IntervalNT;
 
 /// -1 or +1 when the enclosures separate a below or above b, 0 when they overlap (undecided).
 int order(const Enclosure& a, const Enclosure& b) {
@@ -394,10 +394,15 @@ class InteriorPoints {
   /// `vertices` and `edges` are filled alongside add_vertex and add_edge (same order).
   InteriorPoints(const std::vector<ArrVertex2>& vertices, const std::vector<ArrEdge2>& edges)
       : vertices_(vertices), edges_(edges) {}
-  void add_vertex(const CgalPoint& p) { x_.push_back(Enclosure(CGAL::to_interval(p.x()))); }
+  void add_vertex(const CgalPoint& p) {
+    const CoordNT& x = p.x();
+    Enclosure e = to_interval_nt(x.a0());
+    if (x.is_extended()) e += to_interval_nt(x.a1()) * CGAL::sqrt(to_interval_nt(x.root()));
+    x_.push_back(e);
+  }
   void add_edge(const XCurve& cv) {
     const ArrEdge2& e = edges_[curves_.size()];
-    auto enclose = [](const Rational& q) { return Enclosure(CGAL::to_interval(q)); };
+    auto enclose = [](const Rational& q) { return to_interval_nt(q); };
     if (e.shape == EdgeShape2::Arc) {
       const bool upper = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
       const Enclosure radius = enclose(e.radius);
@@ -419,7 +424,7 @@ class InteriorPoints {
       if (compare_x(v, left) > 0 && compare_x(v, next) < 0) next = v;
     }
     const Rational x0 = rational_strictly_between(x_of(left), x_of(next));
-    const Enclosure x0_approx(CGAL::to_interval(x0));
+    const Enclosure x0_approx = to_interval_nt(x0);
     const OneRoot x0_exact(x0);
     auto compare_to_x0 = [&](int v) {
       const int c = order(x_[static_cast<std::size_t>(v)], x0_approx);

@@ -6,18 +6,19 @@
 namespace hsx {
 
 MeasureCache::MeasureCache(std::size_t size, std::function<Measure(std::size_t)> compute)
-    : size_(size), compute_(std::move(compute)), ready_(new std::atomic<bool>[size]()), values_(new Measure[size]) {}
+    : size_(size), compute_(std::move(compute)), ready_(new std::atomic<bool>[size]()),
+      values_(new std::unique_ptr<Measure>[size]()) {}
 
 const Measure& MeasureCache::get(std::size_t k) const {
   if (k >= size_)
     throw std::out_of_range("MeasureCache::get: entry " + std::to_string(k) + " of " + std::to_string(size_));
-  if (ready_[k].load(std::memory_order_acquire)) return values_[k];
+  if (ready_[k].load(std::memory_order_acquire)) return *values_[k];
   const std::lock_guard<std::mutex> lock(mutex_);
   if (!ready_[k].load(std::memory_order_relaxed)) {
-    values_[k] = compute_(k);  // may throw: the entry stays to be computed
+    values_[k] = std::make_unique<Measure>(compute_(k));  // may throw: the entry stays to be computed
     ready_[k].store(true, std::memory_order_release);
   }
-  return values_[k];
+  return *values_[k];
 }
 
 LazyMeasure::LazyMeasure(std::shared_ptr<const MeasureCache> cache, std::size_t index)

@@ -39,7 +39,7 @@ class MeasureCache {
   // under a memory limit) then terminated the process instead of reaching the caller.
   mutable std::mutex mutex_;
   std::unique_ptr<std::atomic<bool>[]> ready_;  // ready_[k]: values_[k] is computed (set once, under mutex_)
-  std::unique_ptr<Measure[]> values_;
+  std::unique_ptr<std::unique_ptr<Measure>[]> values_;  // allocated when computed: most entries are never read
 };
 
 /// A measure that is either known (set from a Measure) or entry `index` of a shared MeasureCache, computed on

@@ -21,6 +21,8 @@ const Measure& MeasureCache::get(std::size_t k) const {
   return *values_[k];
 }
 
+LazyMeasure::LazyMeasure(Measure value) : value_(std::make_shared<const Measure>(std::move(value))) {}
+
 LazyMeasure::LazyMeasure(std::shared_ptr<const MeasureCache> cache, std::size_t index)
     : cache_(std::move(cache)), index_(index) {
   if (!cache_ || index_ >= cache_->size()) throw std::out_of_range("LazyMeasure: no such cache entry");
@@ -29,8 +31,13 @@ LazyMeasure::LazyMeasure(std::shared_ptr<const MeasureCache> cache, std::size_t 
 LazyMeasure& LazyMeasure::operator=(Measure value) {
   cache_.reset();
   index_ = 0;
-  value_ = std::move(value);
+  value_ = std::make_shared<const Measure>(std::move(value));
   return *this;
+}
+
+const Measure& LazyMeasure::zero() {
+  static const Measure zero;
+  return zero;
 }
 
 }  // namespace hsx

@@ -1,7 +1,6 @@
 #include <hsx/complex/from_arrangement2.hpp>
 
 #include <algorithm>
-#include <map>
 #include <memory>
 
 namespace hsx {
@@ -82,6 +81,7 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
   Complex c;
   c.dimension = 2;
   for (const auto& h : scene.halfspaces) c.halfspace_names.push_back(h.name);
+  c.cells.reserve(arr.faces().size());
   for (const ArrFace2& f : arr.faces()) {
     Cell cell;
     cell.outer = f.outer;
@@ -91,20 +91,28 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
     c.cells.push_back(std::move(cell));
   }
   const auto& edges = arr.edges();
-  std::map<int, int> junction_of_vertex;
+  std::vector<int> junction_of_vertex(arr.vertices().size(), -1);
   std::vector<int> chain_of_edge(edges.size(), -1);
   std::vector<std::vector<int>> patches_of_chain;
   const std::vector<Chain> chains = chains_of(arr);
   const auto lengths = chain_lengths(arr, chains);
+  std::size_t patch_count = 0;
+  for (const Chain& chain : chains) patch_count += edges[chain.edges.front()].halfspaces.size();
+  c.patches.reserve(patch_count);
+  c.supports.reserve(chains.size());
+  patches_of_chain.reserve(chains.size());
   for (int k = 0; k < static_cast<int>(chains.size()); ++k) {
     const Chain& chain = chains[k];
     const ArrEdge2& e0 = edges[chain.edges.front()];
     for (int e : chain.edges) chain_of_edge[e] = k;
     std::vector<int> junctions;
     for (int v : chain.ends) {
-      auto [it, fresh] = junction_of_vertex.emplace(v, static_cast<int>(c.junctions.size()));
-      if (fresh) c.junctions.push_back(Junction{{}, v});
-      junctions.push_back(it->second);
+      int& junction = junction_of_vertex[static_cast<std::size_t>(v)];
+      if (junction < 0) {
+        junction = static_cast<int>(c.junctions.size());
+        c.junctions.push_back(Junction{{}, v});
+      }
+      junctions.push_back(junction);
     }
     const int support = static_cast<int>(c.supports.size());
     c.supports.emplace_back();

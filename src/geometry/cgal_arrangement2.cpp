@@ -3,9 +3,11 @@
 #include <hsx/geometry/arrangement2.hpp>
 #include "geometry/components.hpp"
 #include "geometry/planar_measures.hpp"
+#include "kernel/interval_nt.hpp"
 
 #include <CGAL/Arr_circle_segment_traits_2.h>
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
+#include <CGAL/Arr_extended_dcel.h>
 #include <CGAL/Arr_observer.h>
 #include <CGAL/Arr_walk_along_line_point_location.h>
 #include <CGAL/Arrangement_2.h>
@@ -17,7 +19,6 @@
 #include <map>
 #include <set>
 #include <sstream>
-#include <unordered_map>
 
 namespace hsx {
 namespace {
@@ -26,7 +27,10 @@ using NT = mpq_class;
 using Kernel = CGAL::Cartesian<NT>;
 using BaseTraits = CGAL::Arr_circle_segment_traits_2<Kernel>;
 using Traits = CGAL::Arr_consolidated_curve_data_traits_2<BaseTraits, int>;
-using CgalArrangement = CGAL::Arrangement_2<Traits>;
+/// Every vertex, halfedge and face carries its index in Arrangement2's plain data (the face outside the domain
+/// -1; both halfedges of an edge the edge's index), set once the insertion is done.
+using Dcel = CGAL::Arr_extended_dcel<Traits, int, int, int>;
+using CgalArrangement = CGAL::Arrangement_2<Traits, Dcel>;
 using CoordNT = BaseTraits::CoordNT;
 using CgalPoint = BaseTraits::Point_2;
 using BaseCurve = BaseTraits::Curve_2;
@@ -102,8 +106,9 @@ Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi) {
 
 /// Whether the curve of `h` runs exactly between h's two vertices (see DistinctCurves on why this is checked).
 bool curve_matches_ends(CgalArrangement::Halfedge_const_handle h) {
-  auto same = [](const CgalPoint& p, const CgalPoint& q) {
-    return CGAL::compare(p.x(), q.x()) == CGAL::EQUAL && CGAL::compare(p.y(), q.y()) == CGAL::EQUAL;
+  auto same = [](const CgalPoint& p, const CgalPoint& q) {  // one shared representation (the usual case), or equal
+    return p.identical(q) ||
+           (CGAL::compare(p.x(), q.x()) == CGAL::EQUAL && CGAL::compare(p.y(), q.y()) == CGAL::EQUAL);
   };
   const CgalPoint &a = h->source()->point(), &b = h->target()->point();
   const CgalPoint &l = h->curve().left(), &r = h->curve().right();
@@ -355,22 +360,149 @@ class SizeGuard : public CGAL::Arr_observer<CgalArrangement> {
   long cells_ = 0;  // bounded faces so far
 };
 
+using Enclosure = IntervalNT;
+
+/// -1 or +1 when the enclosures separate a below or above b, 0 when they overlap (undecided).
+int order(const Enclosure& a, const Enclosure& b) {
+  if (a.sup() < b.inf()) return -1;
+  if (a.inf() > b.sup()) return 1;
+  return 0;
+}
+
+/// y of a non-vertical edge at some x, enclosed from its curve's data: a*x + b*y + c = 0 for a segment;
+/// cy +- sqrt(r^2 - (x - cx)^2) for an arc (+ on its upper half). Fields p, q, r are a, b, c or cx, cy, r^2.
+struct CurveEnclosure {
+  bool arc;
+  bool upper;
+  Enclosure p, q, r;
+};
+
+/// A candidate for the nearest boundary above or below the base edge at x0 (InteriorPoints::inside): the
+/// enclosure of its y, and the exact y once a comparison needed it.
+struct YAtX0 {
+  const XCurve* curve;
+  Enclosure approx;
+  std::optional<OneRoot> exact;
+};
+
+/// Exact interior points of faces: from a point of a non-vertical boundary edge (the base), shoot vertically into
+/// the face; the open vertical segment up to the next boundary crossing lies in the face. Comparisons are decided
+/// on certified enclosures (vertices' x, the edges' y at the shot's x), and exactly only where those overlap, so
+/// every decision, and every point, is the one exact comparisons give.
+class InteriorPoints {
+ public:
+  /// `vertices` and `edges` are filled alongside add_vertex and add_edge (same order).
+  InteriorPoints(const std::vector<ArrVertex2>& vertices, const std::vector<ArrEdge2>& edges)
+      : vertices_(vertices), edges_(edges) {}
+  void add_vertex(const CgalPoint& p) {
+    const CoordNT& x = p.x();
+    Enclosure e = to_interval_nt(x.a0());
+    if (x.is_extended()) e += to_interval_nt(x.a1()) * CGAL::sqrt(to_interval_nt(x.root()));
+    x_.push_back(e);
+  }
+  void add_edge(const XCurve& cv) {
+    const ArrEdge2& e = edges_[curves_.size()];
+    auto enclose = [](const Rational& q) { return to_interval_nt(q); };
+    if (e.shape == EdgeShape2::Arc) {
+      const bool upper = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
+      const Enclosure radius = enclose(e.radius);
+      curves_.push_back({true, upper, enclose(e.center.x), enclose(e.center.y), radius * radius});
+    } else {
+      curves_.push_back({false, false, enclose(e.line_a), enclose(e.line_b), enclose(e.line_c)});
+    }
+  }
+
+  /// A rational point strictly inside the face whose boundary halfedges (outer boundary first) are `walk`.
+  PointQ2 inside(const std::vector<Halfedge>& walk) const {
+    const auto base = std::find_if(walk.begin(), walk.end(), [](Halfedge h) { return !h->curve().is_vertical(); });
+    if (base == walk.end()) throw std::logic_error("arrangement face without a non-vertical boundary edge");
+    // x0: strictly between the base's left end and the next boundary vertex to its right (within the base).
+    const int left = left_end(*base);
+    int next = right_end(*base);
+    for (Halfedge h : walk) {
+      const int v = h->target()->data();
+      if (compare_x(v, left) > 0 && compare_x(v, next) < 0) next = v;
+    }
+    const Rational x0 = rational_strictly_between(x_of(left), x_of(next));
+    const Enclosure x0_approx = to_interval_nt(x0);
+    const OneRoot x0_exact(x0);
+    auto compare_to_x0 = [&](int v) {
+      const int c = order(x_[static_cast<std::size_t>(v)], x0_approx);
+      return c != 0 ? c : compare(x_of(v), x0_exact);
+    };
+    // y0: strictly between the base and the nearest other boundary edge above it (below it) at x0, where the face
+    // lies above (below) the base.
+    YAtX0 y_base = y_at_x0(*base, x0_approx);
+    y_base.exact = y_at(*y_base.curve, x0);
+    const bool face_above = (*base)->direction() == CGAL::ARR_LEFT_TO_RIGHT;
+    std::optional<YAtX0> y_next;
+    for (Halfedge h : walk) {
+      if (h == *base || h->curve().is_vertical()) continue;  // the base is at y_base itself
+      if (!(compare_to_x0(left_end(h)) < 0 && compare_to_x0(right_end(h)) > 0)) continue;
+      YAtX0 y = y_at_x0(h, x0_approx);
+      const int side = compare_y(y, y_base, x0);
+      if (face_above ? side <= 0 : side >= 0) continue;
+      if (!y_next || (face_above ? compare_y(y, *y_next, x0) < 0 : compare_y(y, *y_next, x0) > 0))
+        y_next = std::move(y);
+    }
+    if (!y_next) throw std::logic_error("arrangement face is not closed above/below its base edge");
+    const OneRoot& next_y = exact(*y_next, x0);
+    const Rational y0 =
+        face_above ? rational_strictly_between(*y_base.exact, next_y) : rational_strictly_between(next_y, *y_base.exact);
+    return {x0, y0};
+  }
+
+ private:
+  static int left_end(Halfedge h) {
+    return (h->direction() == CGAL::ARR_LEFT_TO_RIGHT ? h->source() : h->target())->data();
+  }
+  static int right_end(Halfedge h) {
+    return (h->direction() == CGAL::ARR_LEFT_TO_RIGHT ? h->target() : h->source())->data();
+  }
+  const OneRoot& x_of(int v) const { return vertices_[static_cast<std::size_t>(v)].point.x; }
+
+  /// Exact comparison of vertices u and w by x.
+  int compare_x(int u, int w) const {
+    if (u == w) return 0;
+    const int c = order(x_[static_cast<std::size_t>(u)], x_[static_cast<std::size_t>(w)]);
+    return c != 0 ? c : compare(x_of(u), x_of(w));
+  }
+
+  /// The enclosure of h's y at x0 (h non-vertical, x0 in its closed x-range).
+  YAtX0 y_at_x0(Halfedge h, const Enclosure& x0) const {
+    const CurveEnclosure& c = curves_[static_cast<std::size_t>(h->data())];
+    Enclosure y;
+    if (c.arc) {
+      const Enclosure dx = x0 - c.p;
+      const Enclosure half_chord = CGAL::sqrt(c.r - dx * dx);
+      y = c.upper ? c.q + half_chord : c.q - half_chord;
+    } else {
+      y = -(c.p * x0 + c.r) / c.q;
+    }
+    return {&h->curve(), y, std::nullopt};
+  }
+  static const OneRoot& exact(YAtX0& y, const Rational& x0) {
+    if (!y.exact) y.exact = y_at(*y.curve, x0);
+    return *y.exact;
+  }
+  /// Exact comparison of two edges' y at x0.
+  static int compare_y(YAtX0& a, YAtX0& b, const Rational& x0) {
+    const int c = order(a.approx, b.approx);
+    return c != 0 ? c : compare(exact(a, x0), exact(b, x0));
+  }
+
+  const std::vector<ArrVertex2>& vertices_;
+  const std::vector<ArrEdge2>& edges_;
+  std::vector<Enclosure> x_;              // per vertex: its x
+  std::vector<CurveEnclosure> curves_;    // per edge
+};
+
 }  // namespace
 
 struct Arrangement2::Impl {
-  CgalArrangement arr;
+  CgalArrangement arr;  // its records carry their indices (see Dcel)
   std::unique_ptr<PointLocation> locator;
-  std::unordered_map<const void*, int> vertex_index, face_index, edge_index;  // keyed by CGAL record address
 };
-
-namespace {
-
-template <typename Handle>
-const void* key(Handle h) {
-  return &*h;
-}
-
-}  // namespace
 
 Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& limits) {
   Arrangement2 out;
@@ -386,40 +518,33 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   CGAL::insert(arr, curves.curves.begin(), curves.curves.end());
   guard.detach();
 
-  // --- 2. Vertices. ----------------------------------------------------------------------------------------------
+  // --- 2. Vertices (each record gets its index, see Dcel). --------------------------------------------------------
   pieces->vertices.reserve(arr.number_of_vertices());
   pieces->edges.reserve(arr.number_of_edges());
-  impl->vertex_index.reserve(arr.number_of_vertices());
-  impl->face_index.reserve(arr.number_of_faces());
-  impl->edge_index.reserve(2 * arr.number_of_edges());
+  InteriorPoints interior_points(pieces->vertices, pieces->edges);
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
-    impl->vertex_index[key(VertexHandle(v))] = static_cast<int>(pieces->vertices.size());
+    v->set_data(static_cast<int>(pieces->vertices.size()));
     pieces->vertices.push_back({to_point(v->point()), static_cast<int>(v->degree())});
+    interior_points.add_vertex(v->point());
   }
-  // --- 3. Faces: bounded ones only; the unbounded face is outside the domain. -------------------------------------
+  // --- 3. Faces: bounded ones only; the unbounded face is outside the domain (index -1). --------------------------
   std::vector<FaceHandle> faces;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (f->is_unbounded()) continue;
-    impl->face_index[key(FaceHandle(f))] = static_cast<int>(faces.size());
-    faces.push_back(f);
+    f->set_data(f->is_unbounded() ? -1 : static_cast<int>(faces.size()));
+    if (!f->is_unbounded()) faces.push_back(f);
   }
-  auto face_id = [&](FaceHandle f) -> int {
-    if (f->is_unbounded()) return -1;
-    return impl->face_index.at(key(f));
-  };
-  auto vertex_id = [&](VertexHandle v) { return impl->vertex_index.at(key(v)); };
 
   // --- 4. Edges, oriented as CGAL's representative halfedge. ------------------------------------------------------
   for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-    Halfedge h = e;
     const int id = static_cast<int>(pieces->edges.size());
-    impl->edge_index[key(h)] = id;
-    impl->edge_index[key(h->twin())] = id;
+    e->set_data(id);
+    e->twin()->set_data(id);
+    Halfedge h = e;
     ArrEdge2 edge;
-    edge.source = vertex_id(h->source());
-    edge.target = vertex_id(h->target());
-    edge.left_face = face_id(h->face());
-    edge.right_face = face_id(h->twin()->face());
+    edge.source = h->source()->data();
+    edge.target = h->target()->data();
+    edge.left_face = h->face()->data();
+    edge.right_face = h->twin()->face()->data();
     if (!curve_matches_ends(h))
       throw std::logic_error("CGAL left an arrangement edge whose curve does not end at its vertices");
     for (auto it = h->curve().data().begin(); it != h->curve().data().end(); ++it)
@@ -449,9 +574,9 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       edge.ccw = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == same_as_curve;
     }
     pieces->edges.push_back(std::move(edge));
+    interior_points.add_edge(cv);
   }
-  auto edge_of = [&](Halfedge h) { return impl->edge_index.at(key(h)); };
-  auto forward = [&](Halfedge h) { return vertex_id(h->source()) == pieces->edges[edge_of(h)].source; };
+  auto forward = [&](Halfedge h) { return h->source()->data() == pieces->edges[h->data()].source; };
 
   // --- 5. Per face: boundary walks, outer flag, an exact interior point (areas: on request, see below). ----------
   pieces->faces.resize(faces.size());
@@ -465,7 +590,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       do {
         Halfedge h = c;
         walk_halfedges.push_back(h);
-        cycle.emplace_back(edge_of(h), forward(h));
+        cycle.emplace_back(h->data(), forward(h));
       } while (++c != start);
       face.boundary.push_back(std::move(cycle));
     };
@@ -473,43 +598,9 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end(); ++hole) walk(*hole);
 
     for (Halfedge h : walk_halfedges)
-      if (pieces->edges[edge_of(h)].on_box) face.outer = true;
+      if (pieces->edges[h->data()].on_box) face.outer = true;
 
-    // Interior point: shoot vertically from a point of a non-vertical boundary edge into the face; the open
-    // vertical segment up to the next boundary crossing lies in the face.
-    Halfedge base;
-    bool found = false;
-    for (Halfedge h : walk_halfedges)
-      if (!h->curve().is_vertical()) {
-        base = h;
-        found = true;
-        break;
-      }
-    if (!found) throw std::logic_error("arrangement face without a non-vertical boundary edge");
-    const OneRoot xl = to_one_root(base->curve().left().x());
-    OneRoot xn = to_one_root(base->curve().right().x());
-    for (Halfedge h : walk_halfedges) {
-      OneRoot x = to_one_root(h->target()->point().x());
-      if (compare(x, xl) > 0 && compare(x, xn) < 0) xn = x;
-    }
-    const Rational x0 = rational_strictly_between(xl, xn);
-    const OneRoot y_base = y_at(base->curve(), x0);
-    const bool face_above = base->direction() == CGAL::ARR_LEFT_TO_RIGHT;
-    std::optional<OneRoot> y_next;
-    for (Halfedge h : walk_halfedges) {
-      const XCurve& cv = h->curve();
-      if (cv.is_vertical()) continue;
-      const OneRoot l = to_one_root(cv.left().x()), r = to_one_root(cv.right().x());
-      if (!(compare(l, OneRoot(x0)) < 0 && compare(OneRoot(x0), r) < 0)) continue;
-      OneRoot y = y_at(cv, x0);
-      const int side = compare(y, y_base);
-      if (face_above ? side <= 0 : side >= 0) continue;
-      if (!y_next || (face_above ? compare(y, *y_next) < 0 : compare(y, *y_next) > 0)) y_next = y;
-    }
-    if (!y_next) throw std::logic_error("arrangement face is not closed above/below its base edge");
-    const Rational y0 =
-        face_above ? rational_strictly_between(y_base, *y_next) : rational_strictly_between(*y_next, y_base);
-    face.interior = {x0, y0};
+    face.interior = interior_points.inside(walk_halfedges);
   }
 
   // --- 6. Sides: evaluate one face directly, then flip halfspace bits across edges (breadth first). ---------------
@@ -557,7 +648,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     };
     int edge = -1;
     if (const Halfedge* h = boost::get<Halfedge>(&located)) {
-      edge = edge_of(*h);
+      edge = (*h)->data();
       if (pieces->edges[edge].on_box)
         throw InputError(who + ": lies on the domain boundary " + sample.location.exact_string() +
                          "; move it inside the domain");
@@ -566,7 +657,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       // A degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is inside a patch.
       std::vector<int> incident;
       auto c = (*v)->incident_halfedges();
-      for (std::size_t k = 0; k < (*v)->degree(); ++k, ++c) incident.push_back(edge_of(Halfedge(c)));
+      for (std::size_t k = 0; k < (*v)->degree(); ++k, ++c) incident.push_back(c->data());
       const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
                               pieces->edges[incident[0]].halfspaces == pieces->edges[incident[1]].halfspaces;
       if (!inside_run)
@@ -608,12 +699,11 @@ PointLocation2 Arrangement2::locate(const PointQ2& p) const {
   const auto located = impl_->locator->locate(q);
   if (const FaceHandle* f = boost::get<FaceHandle>(&located)) {
     if ((*f)->is_unbounded()) return {PointLocation2::Outside, -1};
-    return {PointLocation2::Face, impl_->face_index.at(key(*f))};
+    return {PointLocation2::Face, (*f)->data()};
   }
-  if (const Halfedge* h = boost::get<Halfedge>(&located))
-    return {PointLocation2::Edge, impl_->edge_index.at(key(*h))};
+  if (const Halfedge* h = boost::get<Halfedge>(&located)) return {PointLocation2::Edge, (*h)->data()};
   const VertexHandle* v = boost::get<VertexHandle>(&located);
-  return {PointLocation2::Vertex, impl_->vertex_index.at(key(*v))};
+  return {PointLocation2::Vertex, (*v)->data()};
 }
 
 }  // namespace hsx

@@ -10,6 +10,8 @@
 // product, so a new proven radicand only has to be checked against the (rare) unproven ones, kept in unsure_.
 #include <hsx/kernel/measure.hpp>
 
+#include "kernel/interval_nt.hpp"
+
 #include <CGAL/Interval_nt.h>
 #include <CGAL/gmpxx.h>
 
@@ -367,27 +369,7 @@ std::string algebraic_text(const Measure& m) { return *m.exact_string(); }
 
 // ---- CGAL interval filter (one for the whole library: Measure::double_bounds, DoubleCombination) ----
 
-using IntervalNT = CGAL::Interval_nt<true>;  // protected: every operation sets and restores the rounding mode
-
 bool fits_double_exactly(mpz_srcptr z) { return mpz_sizeinbase(z, 2) <= 53; }
-
-/// Certified enclosure of q: numerator and denominator below 2^53 are doubles exactly, and Interval_nt's division
-/// rounds outward (the common, fast case); otherwise CGAL::to_interval (MPFR, rounded away from zero).
-IntervalNT to_interval_nt(const Rational& q) {
-  if (fits_double_exactly(q.get_num_mpz_t()) && fits_double_exactly(q.get_den_mpz_t())) {
-    const IntervalNT num(mpz_get_d(q.get_num_mpz_t()));
-    if (q.get_den() == 1) return num;
-    return num / IntervalNT(mpz_get_d(q.get_den_mpz_t()));
-  }
-  const std::pair<double, double> e = CGAL::to_interval(q);
-  return IntervalNT(e.first, e.second);
-}
-
-IntervalNT to_interval_nt(const Integer& z) {
-  if (fits_double_exactly(z.get_mpz_t())) return IntervalNT(mpz_get_d(z.get_mpz_t()));
-  const std::pair<double, double> e = CGAL::to_interval(z);
-  return IntervalNT(e.first, e.second);
-}
 
 /// k exactly when |k| <= 2^53 (a double holds it), else the doubles either side of the nearest one: a long
 /// above 2^53 is rounded on conversion, by at most half an ulp.
@@ -998,6 +980,22 @@ Order compare(const Measure& a, const Measure& b, const CompareOptions& options)
   const std::optional<int> s = d.sign(options);
   if (!s) return Order::Tie;
   return *s < 0 ? Order::Less : (*s > 0 ? Order::Greater : Order::Equal);
+}
+
+IntervalNT to_interval_nt(const Rational& q) {
+  if (fits_double_exactly(q.get_num_mpz_t()) && fits_double_exactly(q.get_den_mpz_t())) {
+    const IntervalNT num(mpz_get_d(q.get_num_mpz_t()));
+    if (q.get_den() == 1) return num;
+    return num / IntervalNT(mpz_get_d(q.get_den_mpz_t()));
+  }
+  const std::pair<double, double> e = CGAL::to_interval(q);
+  return IntervalNT(e.first, e.second);
+}
+
+IntervalNT to_interval_nt(const Integer& z) {
+  if (fits_double_exactly(z.get_mpz_t())) return IntervalNT(mpz_get_d(z.get_mpz_t()));
+  const std::pair<double, double> e = CGAL::to_interval(z);
+  return IntervalNT(e.first, e.second);
 }
 
 }  // namespace hsx

@@ -219,28 +219,38 @@ namespace {
 /// smallest integer n > lo is below hi it is the answer (denominator 1, least value). Otherwise (lo, hi) lies in
 /// [f, f + 1] with f = floor(lo), and x = f + 1/y maps it onto the open interval of y, (1/(hi - f), 1/(lo - f))
 /// (the upper end infinite when lo = f); x has the smallest denominator iff y has the smallest numerator, and the
-/// continued-fraction step preserves simplicity (proofs/measures.md, Claim 1.4). Iterative: the partial
-/// quotients are collected and folded back at the end.
-Rational simplest_nonnegative(Rational lo, std::optional<Rational> hi) {
+/// continued-fraction step preserves simplicity (proofs/measures.md, Claim 1.4). Iterative, on the ends'
+/// numerators and denominators in place (lo = a/b, hi = c/d, b and d > 0; no reduction is needed, floors and
+/// comparisons do not depend on it): the partial quotients are collected and folded back at the end.
+Rational simplest_nonnegative(const Rational& lo, const std::optional<Rational>& hi) {
+  Integer a = lo.get_num(), b = lo.get_den(), c, d, f, t;
+  bool bounded = hi.has_value();
+  if (bounded) {
+    c = hi->get_num();
+    d = hi->get_den();
+  }
   std::vector<Integer> quotients;
   while (true) {
-    Integer f;
-    mpz_fdiv_q(f.get_mpz_t(), lo.get_num_mpz_t(), lo.get_den_mpz_t());
-    const Integer n = f + 1;
-    if (!hi || Rational(n) < *hi) {
-      Rational x(n);
-      for (auto it = quotients.rbegin(); it != quotients.rend(); ++it) x = Rational(*it) + 1 / x;
-      return x;
+    mpz_fdiv_q(f.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+    mpz_add_ui(f.get_mpz_t(), f.get_mpz_t(), 1);  // f + 1, the smallest integer above lo
+    if (bounded) mpz_mul(t.get_mpz_t(), f.get_mpz_t(), d.get_mpz_t());
+    if (!bounded || t < c) {
+      // Fold x = q + 1/x back from x = f + 1, as p/r (continued-fraction convergents are in lowest terms).
+      Integer p = f, r = 1;
+      for (auto it = quotients.rbegin(); it != quotients.rend(); ++it) {
+        mpz_addmul(r.get_mpz_t(), it->get_mpz_t(), p.get_mpz_t());
+        mpz_swap(p.get_mpz_t(), r.get_mpz_t());
+      }
+      return make_rational(p, r);
     }
+    mpz_sub_ui(f.get_mpz_t(), f.get_mpz_t(), 1);  // back to floor(lo)
+    // (lo, hi) := (1 / (hi - f), 1 / (lo - f)) = (d / (c - f d), b / (a - f b)).
+    mpz_submul(c.get_mpz_t(), f.get_mpz_t(), d.get_mpz_t());  // c - f d > 0
+    mpz_submul(a.get_mpz_t(), f.get_mpz_t(), b.get_mpz_t());  // a - f b >= 0
     quotients.push_back(f);
-    const Rational frac_lo = lo - Rational(f);
-    const Rational frac_hi = *hi - Rational(f);  // in (0, 1]
-    lo = 1 / frac_hi;
-    if (sgn(frac_lo) == 0) {
-      hi.reset();
-    } else {
-      hi = 1 / frac_lo;
-    }
+    bounded = sgn(a) != 0;
+    mpz_swap(a.get_mpz_t(), d.get_mpz_t());  // a = d, d = a - f b
+    mpz_swap(b.get_mpz_t(), c.get_mpz_t());  // b = c - f d, c = b
   }
 }
 

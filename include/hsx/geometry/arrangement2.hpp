@@ -70,8 +70,9 @@ struct ArrangementLimits {
 /// Bench support (hsx bench --arrange), used by no algorithm: the baseline hsx's arrangement is measured
 /// against. Inserts the same distinct curves Arrangement2::build hands to CGAL (the domain box's sides and every
 /// halfspace boundary, coincident ones once) into a bare CGAL Arrangement_2 (the same instantiation:
-/// circle-segment traits over exact rationals, each curve's index as consolidated data; aggregated insertion, no
-/// observer) and returns its number of bounded faces. Nothing else is extracted: no vertices, edges, measures,
+/// circle-segment traits over exact rationals, each curve's index as consolidated data, an int on every DCEL
+/// record (Arrangement2::build's indices, unset here); aggregated insertion, no observer) and returns its number of
+/// bounded faces. Nothing else is extracted: no vertices, edges, measures,
 /// interior points, sides or samples. `scene` must be validated (validate_and_resolve).
 long bare_cgal_arrangement_faces(const Scene2& scene);
 

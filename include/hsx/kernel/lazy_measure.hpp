@@ -39,28 +39,30 @@ class MeasureCache {
   // under a memory limit) then terminated the process instead of reaching the caller.
   mutable std::mutex mutex_;
   std::unique_ptr<std::atomic<bool>[]> ready_;  // ready_[k]: values_[k] is computed (set once, under mutex_)
-  std::unique_ptr<Measure[]> values_;
+  std::unique_ptr<std::unique_ptr<Measure>[]> values_;  // allocated when computed: most entries are never read
 };
 
 /// A measure that is either known (set from a Measure) or entry `index` of a shared MeasureCache, computed on
 /// first read. Reads convert implicitly to `const Measure&`; use get() to call Measure's members. Copies share the
-/// cache; assigning a Measure replaces the value without touching the cache.
+/// cache (and a known value, which is never modified); assigning a Measure replaces the value without touching the
+/// cache. Small (two shared pointers and an index), so that cells and patches are cheap to build and move.
 class LazyMeasure {
  public:
   LazyMeasure() = default;  ///< zero
-  LazyMeasure(Measure value) : value_(std::move(value)) {}  // NOLINT: a measure is a lazy measure
+  LazyMeasure(Measure value);  // NOLINT: a measure is a lazy measure
   /// Entry `index` of `cache` (non-null; index < cache->size()).
   LazyMeasure(std::shared_ptr<const MeasureCache> cache, std::size_t index);
   LazyMeasure& operator=(Measure value);
 
   /// The value (computed on the first read of a cache entry; thread-safe).
-  const Measure& get() const { return cache_ ? cache_->get(index_) : value_; }
+  const Measure& get() const { return cache_ ? cache_->get(index_) : value_ ? *value_ : zero(); }
   operator const Measure&() const { return get(); }  // NOLINT: read as a Measure
 
  private:
   std::shared_ptr<const MeasureCache> cache_;  // null: value_ holds the measure
   std::size_t index_ = 0;
-  Measure value_;
+  std::shared_ptr<const Measure> value_;  // null (without cache_): zero
+  static const Measure& zero();
 };
 
 }  // namespace hsx

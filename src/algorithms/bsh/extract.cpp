@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -39,6 +40,9 @@ struct State {
   std::vector<int> removed;
   CutResult cut;
   int parent = -1;  // index into the search's archive
+  /// The islands of b, found when the state was made (its children need them when it is expanded); empty for the
+  /// root, whose are found when it is expanded.
+  std::optional<SampleConnectivity> connectivity;
 };
 
 /// Shared bookkeeping of one extract() call: statistics, limits and progress reports.
@@ -249,7 +253,10 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
     ++ctx.stats().states_expanded;
     const Labelling labelling = out.archive[current].cut.labelling;
     if (ctx.options().record_states) ctx.expanded.push_back(labelling);
-    const SampleConnectivity connectivity = sample_connectivity(problem, labelling);
+    if (!out.archive[current].connectivity)
+      out.archive[current].connectivity = sample_connectivity(problem, labelling);
+    const SampleConnectivity connectivity = std::move(*out.archive[current].connectivity);
+    out.archive[current].connectivity.reset();
     if (connectivity.sample_connected()) {
       // Optimal only if proven no worse than every state still queued (their descendants cost at least as much).
       if (beam_width <= 0)
@@ -268,8 +275,9 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
       if (ctx.limit_reached()) return out;
       CutResult cut = ctx.cut(removed, forced);
       if (cut.energy.missing_samples < 0) continue;
-      if (sample_connectivity(problem, cut.labelling).sample_connected()) ctx.offer_feasible(cut);
-      out.archive.push_back(State{std::move(removed), std::move(cut), current});
+      SampleConnectivity connectivity_of_cut = sample_connectivity(problem, cut.labelling);
+      if (connectivity_of_cut.sample_connected()) ctx.offer_feasible(cut);
+      out.archive.push_back(State{std::move(removed), std::move(cut), current, std::move(connectivity_of_cut)});
       queue.push(static_cast<int>(out.archive.size()) - 1);
       ++ctx.stats().states_created;
     }

@@ -1,5 +1,6 @@
 #include <hsx/algorithms/bsh/graph_cut.hpp>
 
+#include "algorithms/bsh/problem_memo.hpp"
 #include "algorithms/flow_graph.hpp"
 #include "geometry/components.hpp"
 
@@ -90,45 +91,10 @@ Capacity operator-(const Capacity& a, const Capacity& b) {
 }
 Capacity& operator+=(Capacity& a, const Capacity& b) { return a = a + b; }
 
-/// A value made from a problem, kept per thread for the last problem this thread asked about (keyed by its
-/// support atoms, held so that their address is not reused while the value is kept): graph_cut is called many
-/// times per problem by a search.
-template <class T>
-class ProblemMemo {
- public:
-  /// The value for `problem`, made by T(problem) when this thread last asked about another problem.
-  T& of(const Problem& problem) {
-    if (atoms_ != problem.support_atoms()) {
-      value_ = T(problem);
-      atoms_ = problem.support_atoms();
-    }
-    return value_;
-  }
-
- private:
-  std::shared_ptr<const Problem::SupportAtoms> atoms_;
-  T value_;
-};
-
-/// The exact signs decided for combinations of one problem's supports: a best-first search meets the same
-/// unseparated combinations, mostly exact zeros (the costliest to decide, at the precision cap), in many of its
-/// graph cuts. A sign depends only on the combination.
-struct SignMemo {
-  SignMemo() = default;
-  explicit SignMemo(const Problem&) {}
-  std::map<std::vector<std::pair<int, long>>, std::optional<int>> signs;
-};
-
 /// The exact Measure's sign of `d` (atoms only), remembered per problem and thread.
 std::optional<int> exact_sign_of(const Capacity& d) {
-  constexpr std::size_t kMemoLimit = 1 << 12;
   thread_local ProblemMemo<SignMemo> memo;
-  auto& signs = memo.of(*d.problem).signs;
-  if (signs.size() >= kMemoLimit) signs.clear();
-  if (const auto known = signs.find(d.atoms); known != signs.end()) return known->second;
-  const std::optional<int> s = d.measure().sign();
-  signs.emplace(d.atoms, s);
-  return s;
+  return memo.of(*d.problem).sign(d.atoms, CompareOptions{}, [&] { return d.measure().sign(); });
 }
 
 /// Sign of sum k_g * |g|: the kernel's certified double enclosure of the combination first (exact for any long
@@ -396,36 +362,95 @@ struct DoubleEdge {
 /// would an adjacency list built in that order.
 using DoubleGraph = boost::compressed_sparse_row_graph<boost::directedS, boost::no_property, DoubleEdge>;
 
+/// Boost's Boykov-Kolmogorov first pushes min(c(s -> v), c(v -> t)) along every path s -> v -> t without
+/// raising the reverse edges' residuals (boykov_kolmogorov_max_flow.hpp, augment_direct_paths: "incoming/outgoing
+/// edges to/from source/sink don't count for max-flow"), so the reverse residuals read as flows miss that amount on
+/// both arcs and the flow looks unconserved at v (every cut of a scene with a sample whose inside cell is outer
+/// then failed the fast certification and took the exact max flow). Adds it back: the run is the same, the flow
+/// now conserved. Each cell has at most one arc from s and one to t (build_network).
+void add_direct_paths(const Network& net, DoubleFlow& flow) {
+  std::vector<int> from_source(net.cells, -1), to_sink(net.cells, -1);
+  for (std::size_t i = 0; i < net.arcs.size(); ++i) {
+    const Arc& a = net.arcs[i];
+    if (a.from == net.s && a.to < net.cells) from_source[a.to] = static_cast<int>(i);
+    if (a.to == net.t && a.from < net.cells) to_sink[a.from] = static_cast<int>(i);
+  }
+  for (int v = 0; v < net.cells; ++v) {
+    if (from_source[v] < 0 || to_sink[v] < 0) continue;
+    const double pushed = std::min(flow.capacity[from_source[v]], flow.capacity[to_sink[v]]);
+    flow.flow[from_source[v]] += pushed;
+    flow.flow[to_sink[v]] += pushed;
+  }
+}
+
+/// The graph of a double network: the edges of an arc list, built once and kept per thread while the arcs' ends
+/// stay the same (the cuts of one search differ in capacities only: removed supports make arcs infinite, and forced
+/// labels add unary arcs only in tie enumeration). Edge 2i is arc i, edge 2i + 1 its reverse (capacity 0);
+/// position[k] is edge k's place in the sorted edge list: by source, and in the order above within a source (a
+/// stable counting sort).
+class DoubleNetwork {
+ public:
+  /// The graph for `net`'s arcs, with every capacity 0 but the reverse edges' links set.
+  DoubleGraph& graph_for(const Network& net) {
+    const auto n = static_cast<std::size_t>(net.cells + 2);
+    const bool same = n == vertices_ && net.arcs.size() == ends_.size() &&
+                      std::equal(net.arcs.begin(), net.arcs.end(), ends_.begin(), [](const Arc& a, const auto& e) {
+                        return a.from == e.first && a.to == e.second;
+                      });
+    if (!same) build(net, n);
+    return graph_;
+  }
+  /// Edge k's descriptor (k = 2i for arc i, 2i + 1 for its reverse).
+  DoubleEdgeDescriptor edge(std::size_t k) const {
+    const auto& [from, to] = ends_[k / 2];
+    return DoubleEdgeDescriptor(static_cast<std::size_t>(k % 2 ? to : from), position_[k]);
+  }
+
+ private:
+  void build(const Network& net, std::size_t n) {
+    vertices_ = n;
+    ends_.clear();
+    for (const Arc& a : net.arcs) ends_.emplace_back(a.from, a.to);
+    const std::size_t m = 2 * ends_.size();
+    const auto source_of = [&](std::size_t k) {
+      return static_cast<std::size_t>(k % 2 ? ends_[k / 2].second : ends_[k / 2].first);
+    };
+    std::vector<std::size_t> start(n + 1, 0);
+    position_.assign(m, 0);
+    for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
+    for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    for (std::size_t k = 0; k < m; ++k) position_[k] = start[source_of(k)]++;
+    std::vector<std::pair<std::size_t, std::size_t>> edges(m);
+    std::vector<DoubleEdge> properties(m);
+    for (std::size_t i = 0; i < ends_.size(); ++i) {
+      const auto from = static_cast<std::size_t>(ends_[i].first), to = static_cast<std::size_t>(ends_[i].second);
+      const std::size_t e = position_[2 * i], r = position_[2 * i + 1];
+      edges[e] = {from, to};
+      edges[r] = {to, from};
+      properties[e].reverse = DoubleEdgeDescriptor(to, r);
+      properties[r].reverse = DoubleEdgeDescriptor(from, e);
+    }
+    graph_ = DoubleGraph(boost::edges_are_sorted, edges.begin(), edges.end(), properties.begin(), n);
+  }
+
+  std::size_t vertices_ = 0;
+  std::vector<std::pair<int, int>> ends_;
+  std::vector<std::size_t> position_;
+  DoubleGraph graph_;
+};
+
 DoubleFlow double_flow(const Problem& problem, const Network& net) {
   const double lambda = lambda_of(problem);
   const auto n = static_cast<std::size_t>(net.cells + 2);
-  // Edge 2i is arc i (capacity as rounded), edge 2i + 1 its reverse (capacity 0); position[k] is edge k's place in
-  // the sorted edge list: by source, and in the order above within a source (a stable counting sort).
-  const std::size_t m = 2 * net.arcs.size();
-  const auto source_of = [&](std::size_t k) {
-    const Arc& a = net.arcs[k / 2];
-    return static_cast<std::size_t>(k % 2 ? a.to : a.from);
-  };
-  std::vector<std::size_t> start(n + 1, 0), position(m);
-  for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
-  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  for (std::size_t k = 0; k < m; ++k) position[k] = start[source_of(k)]++;
-  std::vector<std::pair<std::size_t, std::size_t>> edges(m);
-  std::vector<DoubleEdge> properties(m);
+  thread_local DoubleNetwork network;
+  DoubleGraph& g = network.graph_for(net);
   DoubleFlow out;
   out.capacity.reserve(net.arcs.size());
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    const Arc& a = net.arcs[i];
-    const std::size_t from = static_cast<std::size_t>(a.from), to = static_cast<std::size_t>(a.to);
-    const std::size_t e = position[2 * i], r = position[2 * i + 1];
-    edges[e] = {from, to};
-    edges[r] = {to, from};
-    properties[e].capacity = double_capacity(problem, net, a, lambda);
-    properties[e].reverse = DoubleEdgeDescriptor(to, r);
-    properties[r].reverse = DoubleEdgeDescriptor(from, e);
-    out.capacity.push_back(properties[e].capacity);
+    const double capacity = double_capacity(problem, net, net.arcs[i], lambda);
+    g[network.edge(2 * i)].capacity = capacity;
+    out.capacity.push_back(capacity);
   }
-  DoubleGraph g(boost::edges_are_sorted, edges.begin(), edges.end(), properties.begin(), n);
   auto residual = boost::get(&DoubleEdge::residual, g);
   std::vector<boost::default_color_type> color(n);
   boost::boykov_kolmogorov_max_flow(g, boost::get(&DoubleEdge::capacity, g), residual,
@@ -435,11 +460,11 @@ DoubleFlow double_flow(const Problem& problem, const Network& net) {
   out.flow.reserve(net.arcs.size());
   out.residual.reserve(net.arcs.size());
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    const Arc& a = net.arcs[i];
     // The reverse edge's residual = the arc's flow.
-    out.flow.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.to), position[2 * i + 1])]);
-    out.residual.push_back(residual[DoubleEdgeDescriptor(static_cast<std::size_t>(a.from), position[2 * i])]);
+    out.flow.push_back(residual[network.edge(2 * i + 1)]);
+    out.residual.push_back(residual[network.edge(2 * i)]);
   }
+  add_direct_paths(net, out);
   return out;
 }
 
@@ -495,15 +520,26 @@ class BasicFlow {
   const Network& net_;
   DoubleFlow d_;
   int ground_, nodes_;
-  std::vector<ArcState> state_;
-  std::vector<std::vector<int>> forest_;  // per node: its free (forest) arcs
-  std::vector<int> parent_arc_, order_, position_, size_;
-  std::vector<Enclosed> subtree_, flow_;  // per node: net saturated outflow of its subtree; per arc: the flow
-  std::vector<char> forward_, backward_;  // per arc: positive residual forward (capacity - f), backward (f)
-  std::vector<long> coefficient_;         // per support: scratch for exact sums
-  std::vector<int> stamp_, via_;          // scratch for cycle search
+  // Per thread, reused by the next cut (every one is reset by the step that fills it; one BasicFlow at a time
+  // per thread): a search makes thousands of cuts, and these allocations were a good part of each.
+  static thread_local std::vector<ArcState> state_;
+  static thread_local std::vector<std::vector<int>> forest_;  // per node: its free (forest) arcs
+  static thread_local std::vector<int> parent_arc_, order_, position_, size_;
+  static thread_local std::vector<Enclosed> subtree_, flow_;  // per node: net saturated outflow of its subtree;
+                                                              // per arc: the flow
+  static thread_local std::vector<char> forward_, backward_;  // per arc: positive residual forward (capacity - f),
+                                                              // backward (f)
+  static thread_local std::vector<int> stamp_, via_;          // scratch for cycle search
+  std::vector<long> coefficient_;  // per support: scratch for exact sums
   int stamp_now_ = 0;
 };
+
+thread_local std::vector<ArcState> BasicFlow::state_;
+thread_local std::vector<std::vector<int>> BasicFlow::forest_;
+thread_local std::vector<int> BasicFlow::parent_arc_, BasicFlow::order_, BasicFlow::position_, BasicFlow::size_;
+thread_local std::vector<Enclosed> BasicFlow::subtree_, BasicFlow::flow_;
+thread_local std::vector<char> BasicFlow::forward_, BasicFlow::backward_;
+thread_local std::vector<int> BasicFlow::stamp_, BasicFlow::via_;
 
 void BasicFlow::classify() {
   double largest = 0;
@@ -523,7 +559,8 @@ void BasicFlow::classify() {
 }
 
 void BasicFlow::build_forest() {
-  forest_.assign(nodes_, {});
+  forest_.resize(nodes_);
+  for (auto& arcs : forest_) arcs.clear();  // keeps their storage for the next cut
   stamp_.assign(nodes_, 0);
   via_.assign(nodes_, -1);
   DisjointSets sets(static_cast<std::size_t>(nodes_));

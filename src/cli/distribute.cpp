@@ -171,13 +171,14 @@ void MpiRun::distribute(const std::vector<std::uint64_t>& indices, const LineWor
   std::condition_variable wake;
   std::deque<std::pair<std::uint64_t, std::string>> local;  // rank 0's lines with their positions
   std::exception_ptr failure;
+  const auto take_chunk = [&] {  // the worker thread and the answers to other ranks both take from `dispenser`
+    std::lock_guard<std::mutex> lock(mutex);
+    return dispenser.next();
+  };
   std::thread worker([&] {
     try {
       for (;;) {
-        const Chunk c = [&] {
-          std::lock_guard<std::mutex> lock(mutex);
-          return dispenser.next();
-        }();
+        const Chunk c = take_chunk();
         if (c.begin == c.end) return;
         std::uint64_t position = c.begin;
         work(share(c), [&](std::string&& line) {
@@ -208,10 +209,7 @@ void MpiRun::distribute(const std::vector<std::uint64_t>& indices, const LineWor
       MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &status);
       if (flag && status.MPI_TAG == kAskTag) {
         MPI_Recv(nullptr, 0, MPI_CHAR, status.MPI_SOURCE, kAskTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        const Chunk c = [&] {
-          std::lock_guard<std::mutex> lock(mutex);
-          return dispenser.next();
-        }();
+        const Chunk c = take_chunk();
         if (c.begin == c.end) ++done_ranks;
         const std::uint64_t bounds[2] = {c.begin, c.end};
         MPI_Send(bounds, 2, MPI_UINT64_T, status.MPI_SOURCE, kGiveTag, MPI_COMM_WORLD);

@@ -231,10 +231,24 @@ struct SearchOutcome {
   int result = -1;
 };
 
+/// True when every open state's energy is certified greater than `bound`: `picked` (just popped) and its rivals
+/// (every other open state is proven no cheaper than `picked`, so greater than `bound` as well).
+bool all_above(const std::vector<State>& archive, const Frontier& queue, const Frontier::Key& picked,
+               const Energy& bound, const CompareOptions& cmp) {
+  if (compare(archive[picked.state].cut.energy, bound, cmp) != Order::Greater) return false;
+  bool above = true;
+  queue.for_each_rival(picked, [&](int other) {
+    above = above && compare(archive[other].cut.energy, bound, cmp) == Order::Greater;
+  });
+  return above;
+}
+
 /// Fig. 9 from the state {base_removed, graph-cut}: best-first when beam_width <= 0, else a beam of that width.
-/// `forced` fixes cell labels (tie enumeration).
+/// `forced` fixes cell labels (tie enumeration). With `bound` (best-first only), the search gives up, found
+/// false, once every open state costs more than `bound`: a state's descendants cost at least as much as it does
+/// (their cuts have more supports removed), so no boundary it could still reach costs `bound` or less.
 SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
-                     const std::vector<signed char>& forced, int beam_width) {
+                     const std::vector<signed char>& forced, int beam_width, const Energy* bound = nullptr) {
   const Problem& problem = ctx.problem();
   const CompareOptions& cmp = ctx.options().compare;
   SearchOutcome out;
@@ -249,6 +263,8 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   while (!queue.empty()) {
     if (ctx.out_of_budget(queue.size())) return out;
     const Frontier::Key picked = queue.pop();
+    // Only while every cut is certified: an uncertified cut's energy need not be its constraints' minimum.
+    if (bound && ctx.stats().uncertified_cuts == 0 && all_above(out.archive, queue, picked, *bound, cmp)) return out;
     const int current = picked.state;
     ++ctx.stats().states_expanded;
     const Labelling labelling = out.archive[current].cut.labelling;
@@ -324,7 +340,7 @@ void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult&
       const bool already_forced = forced[inside] == 1 && forced[outside] == 0;
       if (!already_forced && !std::binary_search(space.removed.begin(), space.removed.end(), g)) {
         std::vector<int> removed = merged(space.removed, {g});
-        SearchOutcome sub = search(ctx, removed, forced, 0);
+        SearchOutcome sub = search(ctx, removed, forced, 0, &optimum.energy);  // a tie costs no more
         if (!ctx.stopped_by.empty()) {
           result.ties.capped = true;
           result.ties.stopped_by = ctx.stopped_by;

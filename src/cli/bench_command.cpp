@@ -22,6 +22,7 @@
 #include <hsx/io/input.hpp>
 #include <hsx/kernel/timing.hpp>
 #include "cli/commands.hpp"
+#include "cli/distribute.hpp"
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
@@ -32,6 +33,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -39,6 +41,10 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+
+#include <cstdlib>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace hsx::cli {
 namespace {
@@ -65,6 +71,9 @@ struct BenchOptions {
   std::vector<int> campaign_halfspaces{4, 8};  ///< campaign mode: one row per scene size
   long campaign_scenes = 40;        ///< campaign mode: scenes per run
   double campaign_time_limit = 2;   ///< campaign mode: seconds per scene
+  long campaign_max_states = 0;     ///< campaign mode: hsx campaign --max-states (0: none)
+  /// Campaign mode: also time two processes, `hsx campaign --jobs 2` and `mpirun -np 2 hsx campaign --jobs 1`.
+  bool campaign_mpi = false;
   /// Campaign mode: one row per scene size and check list (hsx campaign --checks): every check, and every check
   /// but the two about best-first itself (Props. 5.2 and 5.1, whose complete best-first search dominates).
   std::vector<std::string> campaign_checks{"all", kWithoutBestFirst};
@@ -972,6 +981,92 @@ void run_bsh_example_bench(const BenchOptions& o, OutputFiles& files) {
 
 /// `scenes` scenes of `halfspaces` halfspaces (seed 1, every check, the CLI's default generator otherwise) run
 /// through the campaign runner on 1 and on 2 threads, each run timed; the records of the two compared.
+/// The shell command that runs this hsx's `campaign` on the scenes of a --campaign row as a process of its own:
+/// `jobs` threads, under `mpirun -np 2` when `mpi` (each rank one thread), records into folder `out`.
+/// mpirun's options: --oversubscribe (CI's machines may show fewer slots than cores), --allow-run-as-root (when
+/// run as root, as CI does), and odls_base_sigkill_timeout 0: on exit status 3 (a check failed) Open MPI's mpirun
+/// otherwise waits about 2 s before it returns (docs/campaigns-cluster.md).
+std::string campaign_process_command(int halfspaces, const std::string& checks, const BenchOptions& o, int jobs,
+                                     bool mpi, const std::string& out) {
+  const auto quoted = [](const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
+  std::ostringstream command;
+  if (mpi) {
+    command << "mpirun -np 2 --oversubscribe --mca odls_base_sigkill_timeout 0 ";
+    if (geteuid() == 0) command << "--allow-run-as-root ";
+  }
+  command << quoted(std::filesystem::read_symlink("/proc/self/exe").string()) << " campaign --seed 1 --count "
+          << o.campaign_scenes << " --halfspaces " << halfspaces << " --checks " << quoted(checks)
+          << " --time-limit " << printf_string("%.17g", o.campaign_time_limit) << " --max-cells " << o.limits.max_cells
+          << " --max-side-table " << o.limits.max_side_entries << " --max-states " << o.campaign_max_states << " --no-minimise --jobs " << jobs << " --out "
+          << quoted(out) << " >/dev/null 2>&1";
+  return command.str();
+}
+
+/// Runs `command` with /bin/sh; throws unless it exits with 0 or 3 (campaign: a check failed).
+void run_campaign_process(const std::string& command) {
+  const int status = std::system(command.c_str());
+  if (status == -1 || !WIFEXITED(status) || (WEXITSTATUS(status) != 0 && WEXITSTATUS(status) != 3))
+    throw std::runtime_error("bench --campaign-mpi: `" + command + "` failed (status " + std::to_string(status) + ")");
+}
+
+/// The lines of `path` (a campaign's results.jsonl).
+std::vector<std::string> file_lines(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+/// A private folder, removed with what is in it when this goes out of scope.
+class ScratchFolder {
+ public:
+  ScratchFolder() {
+    const char* tmp = std::getenv("TMPDIR");
+    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/hsx-bench.XXXXXX";
+    if (!mkdtemp(pattern.data())) throw OutputError("cannot make a private folder " + pattern);
+    path_ = pattern;
+  }
+  ~ScratchFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  std::string sub(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+/// --campaign-mpi: the row's scenes run by two processes, timed (each run's folder made afresh, untimed):
+/// `hsx campaign --jobs 2` and `mpirun -np 2 hsx campaign --jobs 1`; both stages and, in `row.notes`, MPI's time
+/// over the threads' and whether both processes' records are `reference`'s bytes (the in-process run on one
+/// thread; not compared when a scene of it timed out).
+void time_campaign_processes(int halfspaces, const std::string& checks, const BenchOptions& o,
+                             const RepeatOptions& repeat, const std::vector<std::string>& reference, BenchRow& row) {
+  const ScratchFolder scratch;
+  std::vector<std::string> records[2];
+  for (bool mpi : {false, true}) {
+    const std::string out = scratch.sub(mpi ? "mpi" : "threads");
+    const std::string command = campaign_process_command(halfspaces, checks, o, mpi ? 1 : 2, mpi, out);
+    StageResult stage;
+    stage.timing = time_repeatedly([&] { run_campaign_process(command); }, repeat,
+                                   [&] { std::filesystem::remove_all(out); });
+    records[mpi] = file_lines(out + "/results.jsonl");
+    row.stages.push_back(stage);
+  }
+  const double threads = row.stages[2].timing->median, mpi = row.stages[3].timing->median;
+  row.notes.push_back(printf_string("%.3f", threads > 0 ? mpi / threads : 0));
+  const bool timed_out = std::any_of(reference.begin(), reference.end(), [](const std::string& line) {
+    return line.find("\"timed_out\":true") != std::string::npos;
+  });
+  row.notes.push_back(timed_out ? "-" : records[0] == reference && records[1] == reference ? "yes" : "NO");
+}
+
 BenchRow bench_campaign(int halfspaces, const std::string& checks, const BenchOptions& o,
                         const RepeatOptions& repeat) {
   campaign::CampaignSettings settings;
@@ -979,6 +1074,7 @@ BenchRow bench_campaign(int halfspaces, const std::string& checks, const BenchOp
   settings.scene.min_halfspaces = settings.scene.max_halfspaces = halfspaces;
   settings.seed = 1;
   settings.time_limit = o.campaign_time_limit;
+  settings.max_states = o.campaign_max_states;
   settings.limits = o.limits;
   settings.checks = campaign::parse_check_list(checks);
   campaign::validate(settings);
@@ -1009,6 +1105,7 @@ BenchRow bench_campaign(int halfspaces, const std::string& checks, const BenchOp
                printf_string("%.2fx", two > 0 ? one / two : 0),
                std::to_string(timed_out[0]) + "/" + std::to_string(timed_out[1]),
                timed_out[0] + timed_out[1] ? "-" : lines[0] == lines[1] ? "yes" : "NO"};
+  if (o.campaign_mpi) time_campaign_processes(halfspaces, checks, o, repeat, lines[0], row);
   return row;
 }
 
@@ -1026,6 +1123,14 @@ void run_campaign_bench(const BenchOptions& o, OutputFiles& files) {
   report.with_ratio = {0, 1};
   report.reference = 0;
   report.note_names = {"scenes/s", "speed-up", "timed out", "same"};
+  if (o.campaign_mpi) {
+    if (!built_with_mpi()) throw InputError("--campaign-mpi: this hsx was built without MPI (install libopenmpi-dev)");
+    if (std::system("command -v mpirun >/dev/null 2>&1") != 0)
+      throw InputError("--campaign-mpi: no mpirun on the PATH (install openmpi-bin)");
+    report.stage_names.insert(report.stage_names.end(), {"proc jobs 2", "mpirun 2"});
+    report.with_ratio.insert(report.with_ratio.end(), {1, 1});
+    report.note_names.insert(report.note_names.end(), {"mpi/thread", "mpi same"});
+  }
   report.repeat = repeat_options(o);
   for (int h : o.campaign_halfspaces) {
     if (h < 1) throw InputError("--campaign-halfspaces: every size must be at least 1");
@@ -1039,7 +1144,9 @@ void run_campaign_bench(const BenchOptions& o, OutputFiles& files) {
       "load); same: the two runs' records are the same bytes (compared when no scene timed out)",
       "issue 15's goals: >= 100 scenes/s per core at 8 halfspaces, >= 1.9x on 2 cores; MPI against threads is two "
       "processes: time `mpirun -np 2 hsx campaign ... --jobs 1` against `hsx campaign ... --jobs 2` "
-      "(docs/campaigns-cluster.md)"};
+      "(docs/campaigns-cluster.md); --campaign-mpi does so: proc jobs 2 and mpirun 2 are those two commands as "
+      "processes (start-up included, --no-minimise), mpi/thread the ratio of their medians, mpi same: both "
+      "processes' records are jobs 1's bytes"};
   publish(report, o, files);
 }
 
@@ -1264,7 +1371,14 @@ void add_bench_command(CLI::App& app) {
                       "and every check but prop52 and prop51)"),
       cmd->add_option("--campaign-time-limit", o->campaign_time_limit,
                       "--campaign: seconds per scene (default 2; 0: none)")
-          ->check(seconds())};
+          ->check(seconds()),
+      cmd->add_option("--campaign-max-states", o->campaign_max_states,
+                      "--campaign: each search stops after N states (hsx campaign --max-states; default 0: no limit). "
+                      "With --campaign-time-limit 0 the runs are deterministic and their records compared")
+          ->check(CLI::NonNegativeNumber),
+      cmd->add_flag("--campaign-mpi", o->campaign_mpi,
+                    "--campaign: also time `hsx campaign --jobs 2` and `mpirun -np 2 hsx campaign --jobs 1` as "
+                    "processes, side by side (needs MPI)")};
   cmd->add_option("--bsh-example", o->bsh_examples,
                   "time the BSH authors' example folders end to end (arrangement, K = 1 beam, the certified and the "
                   "double graph cut, the complete searches within --time-limit, peak memory) beside their own "

@@ -141,7 +141,7 @@ OneRoot y_at(const XCurve& cv, const Rational& x0) {
 /// the union of the tags covering it: CGAL then never sees an overlap. This is a correctness fix, not only a speed
 /// one: Debian's CGAL 5.5 sweep (Arr_circle_segment_traits_2 with consolidated data) can leave an edge whose curve
 /// is a longer overlapping segment than the edge itself when several collinear segments overlap among circles
-/// (tests/data/regressions/overlap-curve-mismatch.json; Arrangement2::build now also checks every edge's curve).
+/// (data/crashes/scene/overlap-curve-mismatch.json; Arrangement2::build now also checks every edge's curve).
 /// `cells_at_least` is a lower bound on the bounded faces, known before the sweep: inserted first, each distinct
 /// half-plane chord (ends on the box, meets every other chord or circle in finitely many points) and each
 /// distinct circle splits at least one face, and later curves never merge faces.

@@ -5,7 +5,8 @@
 # - a campaign cut short (its results.jsonl truncated, the last line torn) and resumed under mpirun equals the
 #   uninterrupted one;
 # - a 3D campaign (--dimension 3) gives the same folder and table under mpirun, a minimised 3D failure included;
-# - a folder rank 0 refuses stops every rank with exit 2 and leaves the folder as it was.
+# - a folder rank 0 refuses stops every rank with exit 2 and leaves the folder as it was;
+# - hsx bench --campaign-mpi times both as processes, and their records are one thread's bytes.
 # Prints "N passed, M failed" and exits non-zero when anything failed.
 set -u
 HSX="${1:?usage: mpi_campaign_tests.sh HSX MPIEXEC}"
@@ -72,5 +73,17 @@ status=$?
 [[ $status == 2 ]] && pass || fail "mpirun into a foreign folder exited $status, expected 2: $(cat "$TMP/f.err")"
 [[ "$(ls "$TMP/foreign")" == notes.txt && "$(cat "$TMP/foreign/notes.txt")" == mine ]] && pass ||
   fail "the foreign folder was changed: $(ls "$TMP/foreign")"
+
+# hsx bench --campaign --campaign-mpi: the two process stages run, and their records are one thread's bytes.
+"$HSX" bench --campaign --campaign-halfspaces 4 --campaign-scenes 6 --campaign-checks existence,beam1,uniqueness \
+  --campaign-time-limit 0 --campaign-max-states 200 --campaign-mpi --repetitions 1 --min-time 0 \
+  --json "$TMP/bench.json" >"$TMP/bench.txt" 2>&1
+[[ $? == 0 ]] && pass || fail "bench --campaign-mpi failed: $(cat "$TMP/bench.txt")"
+python3 - "$TMP/bench.json" <<'PY' && pass || fail "bench --campaign-mpi: $(cat "$TMP/bench.txt")"
+import json, sys
+row = json.load(open(sys.argv[1]))["rows"][0]
+assert row["mpi same"] == "yes", row
+assert float(row["mpi/thread"]) > 0, row
+PY
 
 testlib_finish

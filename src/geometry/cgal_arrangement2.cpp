@@ -634,41 +634,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       throw std::logic_error("arrangement faces inside the domain are not connected");
   }
 
-  // --- 7. Samples: exact point location on the boundary of their halfspace. ---------------------------------------
   impl->locator = std::make_unique<PointLocation>(arr);
-  for (std::size_t s = 0; s < scene.samples.size(); ++s) {
-    const Sample2& sample = scene.samples[s];
-    const std::string who = "samples[" + std::to_string(s) + "] (on \"" +
-                            scene.halfspaces.at(sample.halfspace).name + "\")";
-    const CgalPoint p(to_coord(sample.location.x), to_coord(sample.location.y));
-    const auto located = impl->locator->locate(p);
-    auto carries = [&](int ei) {
-      const ArrEdge2& e = pieces->edges[ei];
-      return !e.on_box && std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), sample.halfspace);
-    };
-    int edge = -1;
-    if (const Halfedge* h = boost::get<Halfedge>(&located)) {
-      edge = (*h)->data();
-      if (pieces->edges[edge].on_box)
-        throw InputError(who + ": lies on the domain boundary " + sample.location.exact_string() +
-                         "; move it inside the domain");
-      if (!carries(edge)) throw std::logic_error(who + ": located on an edge of another boundary");
-    } else if (const VertexHandle* v = boost::get<VertexHandle>(&located)) {
-      // A degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is inside a patch.
-      std::vector<int> incident;
-      auto c = (*v)->incident_halfedges();
-      for (std::size_t k = 0; k < (*v)->degree(); ++k, ++c) incident.push_back(c->data());
-      const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
-                              pieces->edges[incident[0]].halfspaces == pieces->edges[incident[1]].halfspaces;
-      if (!inside_run)
-        throw InputError(who + ": lies on an arrangement vertex " + sample.location.exact_string() +
-                         " where boundaries meet; a sample must lie inside a patch");
-      edge = std::min(incident[0], incident[1]);
-    } else {
-      throw InputError(who + ": " + sample.location.exact_string() + " is not on the boundary inside the domain");
-    }
-    out.sample_edges_.push_back(edge);
-  }
   out.impl_ = std::move(impl);
   out.edge_lengths_ = std::make_shared<const MeasureCache>(pieces->edges.size(), [pieces](std::size_t e) {
     const ArrEdge2& edge = pieces->edges[e];
@@ -678,7 +644,58 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     return enclosed_area(pieces->faces[f].boundary, pieces->edges, pieces->vertices);
   });
   out.pieces_ = std::move(pieces);
+  // --- 7. Samples: exact point location on the boundary of their halfspace. ---------------------------------------
+  out.sample_edges_ = out.place_samples(scene);
   return out;
+}
+
+Arrangement2 Arrangement2::with_samples(const Scene2& scene) const {
+  if (static_cast<int>(scene.halfspaces.size()) != halfspace_count_ || !(scene.domain.min == domain_.min) ||
+      !(scene.domain.max == domain_.max))
+    throw std::invalid_argument("Arrangement2::with_samples: the scene's halfspaces or domain are not the arrangement's");
+  Arrangement2 out = *this;
+  out.sample_edges_ = place_samples(scene);
+  return out;
+}
+
+std::vector<int> Arrangement2::place_samples(const Scene2& scene) const {
+  const Pieces& pieces = *pieces_;
+  std::vector<int> sample_edges;
+  sample_edges.reserve(scene.samples.size());
+  for (std::size_t s = 0; s < scene.samples.size(); ++s) {
+    const Sample2& sample = scene.samples[s];
+    const std::string who = "samples[" + std::to_string(s) + "] (on \"" +
+                            scene.halfspaces.at(sample.halfspace).name + "\")";
+    const CgalPoint p(to_coord(sample.location.x), to_coord(sample.location.y));
+    const auto located = impl_->locator->locate(p);
+    auto carries = [&](int ei) {
+      const ArrEdge2& e = pieces.edges[ei];
+      return !e.on_box && std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), sample.halfspace);
+    };
+    int edge = -1;
+    if (const Halfedge* h = boost::get<Halfedge>(&located)) {
+      edge = (*h)->data();
+      if (pieces.edges[edge].on_box)
+        throw InputError(who + ": lies on the domain boundary " + sample.location.exact_string() +
+                         "; move it inside the domain");
+      if (!carries(edge)) throw std::logic_error(who + ": located on an edge of another boundary");
+    } else if (const VertexHandle* v = boost::get<VertexHandle>(&located)) {
+      // A degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is inside a patch.
+      std::vector<int> incident;
+      auto c = (*v)->incident_halfedges();
+      for (std::size_t k = 0; k < (*v)->degree(); ++k, ++c) incident.push_back(c->data());
+      const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
+                              pieces.edges[incident[0]].halfspaces == pieces.edges[incident[1]].halfspaces;
+      if (!inside_run)
+        throw InputError(who + ": lies on an arrangement vertex " + sample.location.exact_string() +
+                         " where boundaries meet; a sample must lie inside a patch");
+      edge = std::min(incident[0], incident[1]);
+    } else {
+      throw InputError(who + ": " + sample.location.exact_string() + " is not on the boundary inside the domain");
+    }
+    sample_edges.push_back(edge);
+  }
+  return sample_edges;
 }
 
 long bare_cgal_arrangement_faces(const Scene2& scene) {

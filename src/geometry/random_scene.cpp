@@ -367,9 +367,9 @@ Sample2 draw_sample(const RandomSceneSettings& s, Random& rng, const Scene2& sce
   return sample;
 }
 
-/// Step 6: samples on patches of the sample-free arrangement (in all, or per halfspace).
-void add_samples(const RandomSceneSettings& s, Random& rng, Scene2& scene) {
-  const Arrangement2 arr = Arrangement2::build(scene);
+/// Step 6: samples on patches of the sample-free arrangement (in all, or per halfspace); returns that arrangement.
+Arrangement2 add_samples(const RandomSceneSettings& s, Random& rng, Scene2& scene) {
+  Arrangement2 arr = Arrangement2::build(scene);
   std::vector<std::vector<PointQ2>> fitting(scene.halfspaces.size());
   std::vector<std::pair<int, PointQ2>> all;
   for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i)
@@ -378,7 +378,7 @@ void add_samples(const RandomSceneSettings& s, Random& rng, Scene2& scene) {
         fitting[static_cast<std::size_t>(i)].push_back(p);
         all.emplace_back(i, p);
       }
-  if (all.empty()) return;
+  if (all.empty()) return arr;
   if (s.max_samples_per_halfspace > 0) {
     for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
       const auto& mine = fitting[static_cast<std::size_t>(i)];
@@ -394,6 +394,7 @@ void add_samples(const RandomSceneSettings& s, Random& rng, Scene2& scene) {
     }
   }
   validate_and_resolve(scene);
+  return arr;
 }
 
 std::vector<Degeneracy> draw_patterns(const RandomSceneSettings& s, const Builder& b, Random& rng) {
@@ -464,7 +465,7 @@ RandomScene random_scene(const RandomSceneSettings& s, Random& rng) {
     }
   while (b.count() < s.min_halfspaces) b.random_halfspace();
   out.scene = b.finish_geometry();
-  if (s.max_samples > 0 || s.max_samples_per_halfspace > 0) add_samples(s, rng, out.scene);
+  if (s.max_samples > 0 || s.max_samples_per_halfspace > 0) out.arrangement = add_samples(s, rng, out.scene);
   return out;
 }
 

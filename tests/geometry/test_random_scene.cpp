@@ -297,6 +297,49 @@ TEST_CASE("random_scene: samples per halfspace (hsx bench --exact's scenes)", "[
   CHECK_THROWS_AS(random_scene(s, 5, 0), std::invalid_argument);
 }
 
+TEST_CASE("random_scene: its arrangement, with the samples placed, is the scene's own", "[random_scene]") {
+  RandomSceneSettings s;
+  s.max_halfspaces = 8;
+  s.max_samples = 6;
+  int samples = 0;
+  for (std::uint64_t index = 0; index < 40; ++index) {
+    const RandomScene r = random_scene(s, 1, index);
+    REQUIRE(r.arrangement.has_value());
+    CHECK(r.arrangement->sample_edges().empty());  // built before the samples were drawn
+    const Arrangement2 placed = r.arrangement->with_samples(r.scene);
+    const Arrangement2 fresh = Arrangement2::build(r.scene);
+    CHECK(placed.sample_edges() == fresh.sample_edges());
+    CHECK(placed.faces().size() == fresh.faces().size());
+    CHECK(placed.edges().size() == fresh.edges().size());
+    for (std::size_t f = 0; f < fresh.faces().size(); ++f) {
+      CHECK(placed.faces()[f].interior == fresh.faces()[f].interior);
+      CHECK(placed.faces()[f].inside == fresh.faces()[f].inside);
+    }
+    samples += static_cast<int>(r.scene.samples.size());
+  }
+  CHECK(samples > 40);  // the scenes have samples to place
+  s.max_samples = 0;
+  CHECK_FALSE(random_scene(s, 1, 0).arrangement.has_value());
+}
+
+TEST_CASE("Arrangement2::with_samples: another scene's samples are refused", "[random_scene]") {
+  RandomSceneSettings s;
+  s.max_halfspaces = 4;
+  s.max_samples = 4;
+  const RandomScene r = random_scene(s, 1, 3);
+  Scene2 other = r.scene;
+  other.halfspaces.pop_back();
+  CHECK_THROWS_AS(r.arrangement->with_samples(other), std::invalid_argument);
+  Scene2 moved = r.scene;
+  moved.domain.max.x += 1;
+  CHECK_THROWS_AS(r.arrangement->with_samples(moved), std::invalid_argument);
+  Scene2 off = r.scene;  // a sample off its boundary: refused as build() refuses it
+  off.samples.push_back(Sample2{});
+  off.samples.back().halfspace = 0;
+  off.samples.back().location = PointQ2{(off.domain.min.x + off.domain.max.x) / 2, off.domain.max.y};
+  CHECK_THROWS_AS(r.arrangement->with_samples(off), InputError);
+}
+
 TEST_CASE("random_scene: every applied degeneracy is in the scene, and each kind occurs", "[random_scene]") {
   RandomSceneSettings s;  // the property tests' usual settings: up to 6 halfspaces, up to 2 patterns
   s.max_samples = 4;

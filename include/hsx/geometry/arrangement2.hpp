@@ -88,6 +88,12 @@ class Arrangement2 {
   /// refuses many inputs.
   static Arrangement2 build(const Scene2& scene, const ArrangementLimits& limits = {});
 
+  /// This arrangement with the samples of `scene` placed instead of its own: the same faces, edges and vertices
+  /// (shared, not copied), sample_edges() for `scene`. `scene` must have the halfspaces and domain this was
+  /// built from (samples do not change the arrangement); its halfspace count and domain are checked
+  /// (std::invalid_argument). Throws InputError for a misplaced sample, as build() does.
+  Arrangement2 with_samples(const Scene2& scene) const;
+
   const Box2& domain() const { return domain_; }
   int halfspace_count() const { return halfspace_count_; }
   const std::vector<ArrVertex2>& vertices() const { return pieces_->vertices; }
@@ -111,6 +117,8 @@ class Arrangement2 {
 
  private:
   struct Impl;
+  /// For each sample of `scene`, the edge that holds it (build's step 7; see sample_edges()).
+  std::vector<int> place_samples(const Scene2& scene) const;
   std::shared_ptr<const Impl> impl_;
   /// The plain data, shared with the measure caches (which must not hold the arrangement itself).
   struct Pieces {

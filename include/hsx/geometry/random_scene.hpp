@@ -47,6 +47,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace hsx {
@@ -124,6 +125,9 @@ struct RandomSceneSettings {
 struct RandomScene {
   Scene2 scene;                          ///< validated (validate_and_resolve did not throw), domain_given = true
   std::vector<Degeneracy> degeneracies;  ///< the patterns applied, in order (skipped ones are not listed)
+  /// The arrangement of `scene`'s halfspaces, built under the default ArrangementLimits to choose the samples,
+  /// without them (Arrangement2::with_samples places them); empty when no samples were asked for.
+  std::optional<Arrangement2> arrangement;
 };
 
 /// Scene `index` of `seed`: the procedure above on Random(item_seed(seed, index)). The domain contains every

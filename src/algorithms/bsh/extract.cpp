@@ -374,7 +374,7 @@ void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult&
 void fill_from_cut(const Problem& problem, const CutResult& cut, ExtractResult& result) {
   result.labelling = cut.labelling;
   result.energy = cut.energy;
-  result.sample_connected = sample_connectivity(problem, cut.labelling).sample_connected();
+  result.sample_connected = is_sample_connected(problem, cut.labelling);
 }
 
 /// Best-first at non-generic junctions: Prop. 5.2 rests on Prop. 5.1, which needs generic junctions (a
@@ -758,7 +758,7 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, const Br
     ++result.enumerated;
     if (screen.greater(label)) return;  // compare() would say Greater: skipped, sample-connected or not
     Labelling l(label.begin(), label.end());
-    if (connectivity && !sample_connectivity(problem, l).sample_connected()) return;
+    if (connectivity && !is_sample_connected(problem, l)) return;
     Energy e = energy(problem, l);
     if (!have_best) {
       have_best = true;

@@ -2,7 +2,8 @@
 
 #include "algorithms/bsh/problem_memo.hpp"
 #include "algorithms/bsh/support_lists.hpp"
-#include "geometry/components.hpp"
+
+#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <map>
@@ -158,10 +159,7 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
 
 std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling) {
   std::vector<int> out;
-  for (int g = 0; g < problem.support_count(); ++g) {
-    const SupportTerm& s = problem.supports()[g];
-    if (labelling[s.cell_a] != labelling[s.cell_b]) out.push_back(g);
-  }
+  for_each_boundary_support(problem, labelling, [&](int g) { out.push_back(g); });
   return out;
 }
 
@@ -201,33 +199,81 @@ Energy energy(const Problem& problem, const Labelling& labelling) {
   return e;
 }
 
-SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& labelling) {
+namespace {
+
+/// The patches on b of a labelling, joined into the components of Def. 3.2 (patches of one halfspace on b that
+/// share a junction). Per-thread scratch, refilled by each call of boundary_components: a search tests thousands
+/// of boundaries.
+struct BoundaryComponents {
+  std::vector<char> on_b;         ///< per patch: on b (its support on b with its halfspace's orientation)
+  std::vector<int> rank, parent;  ///< Boost's disjoint sets over the patches
+  boost::disjoint_sets<int*, int*> sets{nullptr, nullptr};
+
+  /// The representative of patch p's component.
+  int find(int p) { return sets.find_set(p); }
+};
+
+BoundaryComponents& boundary_components(const Problem& problem, const Labelling& labelling) {
+  thread_local BoundaryComponents scratch;
   const Complex& c = problem.complex();
-  SampleConnectivity out;
-  std::vector<char> on_b(c.patches.size(), 0);
-  for (int g : boundary_supports(problem, labelling))
-    for (int p : problem.supports()[g].patches) on_b[p] = labelling[c.patches[p].inside_cell];
-  // Components: patches on the boundary, of the same halfspace, joined where they share a junction.
-  DisjointSets sets(c.patches.size());
+  const int patches = static_cast<int>(c.patches.size());
+  scratch.on_b.assign(patches, 0);
+  for_each_boundary_support(problem, labelling, [&](int g) {
+    for (int p : problem.supports()[g].patches) scratch.on_b[p] = labelling[c.patches[p].inside_cell];
+  });
+  scratch.rank.assign(patches, 0);
+  scratch.parent.resize(patches);
+  scratch.sets = boost::disjoint_sets<int*, int*>(scratch.rank.data(), scratch.parent.data());
+  for (int p = 0; p < patches; ++p) scratch.sets.make_set(p);
   for (const Junction& j : c.junctions)
     for (std::size_t a = 0; a < j.patches.size(); ++a)
       for (std::size_t b = a + 1; b < j.patches.size(); ++b) {
         const int p = j.patches[a], q = j.patches[b];
-        if (on_b[p] && on_b[q] && c.patches[p].halfspace == c.patches[q].halfspace) sets.union_set(p, q);
+        if (scratch.on_b[p] && scratch.on_b[q] && c.patches[p].halfspace == c.patches[q].halfspace)
+          scratch.sets.union_set(p, q);
       }
-  std::vector<std::pair<std::pair<int, int>, std::vector<int>>> ordered;  // ordered by (halfspace, smallest patch)
-  for (auto& list : components_of(sets, c.patches.size()).members(on_b))
-    ordered.push_back({{c.patches[list.front()].halfspace, list.front()}, std::move(list)});
-  std::sort(ordered.begin(), ordered.end());
-  for (auto& [key, list] : ordered) {
-    Component comp;
-    comp.halfspace = key.first;
-    comp.patches = list;
-    for (int p : list) comp.has_sample = comp.has_sample || !c.patches[p].samples.empty();
-    if (!comp.has_sample) out.islands.push_back(static_cast<int>(out.components.size()));
-    out.components.push_back(std::move(comp));
+  return scratch;
+}
+
+}  // namespace
+
+SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& labelling) {
+  const Complex& c = problem.complex();
+  BoundaryComponents& b = boundary_components(problem, labelling);
+  thread_local std::vector<int> slot;  // per representative: its component's index in `out`, -1 before
+  slot.assign(c.patches.size(), -1);
+  SampleConnectivity out;
+  // Patches ascending: components appear in order of their smallest patch, each with its patches ascending.
+  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p) {
+    if (!b.on_b[p]) continue;
+    int& s = slot[b.find(p)];
+    if (s < 0) {
+      s = static_cast<int>(out.components.size());
+      out.components.emplace_back();
+      out.components.back().halfspace = c.patches[p].halfspace;
+    }
+    Component& comp = out.components[s];
+    comp.patches.push_back(p);
+    comp.has_sample = comp.has_sample || !c.patches[p].samples.empty();
   }
+  // Ordered by halfspace, then smallest patch (the order above, kept by a stable sort).
+  std::stable_sort(out.components.begin(), out.components.end(),
+                   [](const Component& x, const Component& y) { return x.halfspace < y.halfspace; });
+  for (std::size_t k = 0; k < out.components.size(); ++k)
+    if (!out.components[k].has_sample) out.islands.push_back(static_cast<int>(k));
   return out;
+}
+
+bool is_sample_connected(const Problem& problem, const Labelling& labelling) {
+  const Complex& c = problem.complex();
+  BoundaryComponents& b = boundary_components(problem, labelling);
+  thread_local std::vector<char> sampled;  // per representative: its component holds a sample
+  sampled.assign(c.patches.size(), 0);
+  for (std::size_t p = 0; p < c.patches.size(); ++p)
+    if (b.on_b[p] && !c.patches[p].samples.empty()) sampled[b.find(static_cast<int>(p))] = 1;
+  for (std::size_t p = 0; p < c.patches.size(); ++p)
+    if (b.on_b[p] && !sampled[b.find(static_cast<int>(p))]) return false;
+  return true;
 }
 
 std::vector<std::vector<int>> removable_sets(const Problem& problem, const Labelling& labelling,

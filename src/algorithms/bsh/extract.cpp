@@ -2,6 +2,8 @@
 #include <hsx/algorithms/bsh/exact.hpp>
 #include "algorithms/bsh/support_lists.hpp"
 
+#include <boost/container_hash/hash.hpp>
+
 #include <algorithm>
 #include <cfloat>
 #include <chrono>
@@ -11,6 +13,7 @@
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <unordered_set>
 
 namespace hsx::bsh {
 
@@ -256,7 +259,8 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   const CompareOptions& cmp = ctx.options().compare;
   SearchOutcome out;
   if (ctx.limit_reached()) return out;
-  std::set<std::vector<int>> visited{base_removed};
+  // The removed sets met so far: only asked whether one is new, so hashed.
+  std::unordered_set<std::vector<int>, boost::hash<std::vector<int>>> visited{base_removed};
   State root{base_removed, ctx.cut(base_removed, forced), -1};
   if (root.cut.energy.missing_samples < 0) return out;  // the constraints admit no labelling
   out.archive.push_back(std::move(root));

@@ -522,6 +522,18 @@ std::optional<int> enclosed_sign(const Enclosed& v) {
   return std::nullopt;
 }
 
+/// True when `supports` (ascending) are exactly the supports on the boundary of `labelling` (compared without
+/// listing the boundary).
+bool is_boundary(const Problem& problem, const Labelling& labelling, const std::vector<int>& supports) {
+  std::size_t k = 0;
+  bool same = true;
+  for_each_boundary_support(problem, labelling, [&](int g) {
+    same = same && k < supports.size() && supports[k] == g;
+    ++k;
+  });
+  return same && k == supports.size();
+}
+
 class BasicFlow {
  public:
   /// Works on `doubles` in place (classification and cycle cancelling move its flows).
@@ -557,6 +569,7 @@ class BasicFlow {
   static thread_local std::vector<char> forward_, backward_;  // per arc: positive residual forward (capacity - f),
                                                               // backward (f)
   static thread_local std::vector<int> stamp_, via_;          // scratch for cycle search
+  static thread_local ReusableDisjointSets sets_;             // scratch: the forest's trees while it is built
   static thread_local std::vector<int> queue_;                // scratch for cycle search and tree walks
   static thread_local std::vector<std::pair<int, int>> cycle_;  // scratch: a cycle's (arc, orientation)
   static thread_local std::vector<long> coefficient_;         // per support: scratch for exact sums (kept 0)
@@ -574,6 +587,7 @@ thread_local std::vector<Enclosed> BasicFlow::subtree_, BasicFlow::flow_;
 thread_local std::vector<char> BasicFlow::forward_, BasicFlow::backward_;
 thread_local std::vector<int> BasicFlow::stamp_, BasicFlow::via_, BasicFlow::queue_;
 thread_local std::vector<std::pair<int, int>> BasicFlow::cycle_;
+thread_local ReusableDisjointSets BasicFlow::sets_;
 thread_local std::vector<long> BasicFlow::coefficient_;
 thread_local std::vector<int> BasicFlow::touched_, BasicFlow::start_, BasicFlow::incident_, BasicFlow::supports_;
 thread_local std::vector<char> BasicFlow::reach_;
@@ -600,7 +614,8 @@ void BasicFlow::build_forest() {
   for (auto& arcs : forest_) arcs.clear();  // keeps their storage for the next cut
   stamp_.assign(nodes_, 0);
   via_.assign(nodes_, -1);
-  DisjointSets sets(static_cast<std::size_t>(nodes_));
+  ReusableDisjointSets& sets = sets_;
+  sets.reset(static_cast<std::size_t>(nodes_));
   for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
     if (state_[e] != ArcState::Free) continue;
     const int u = node(net_.arcs[e].from), v = node(net_.arcs[e].to);
@@ -879,7 +894,7 @@ std::optional<CutResult> BasicFlow::cut_from_residuals() {
     supports.insert(supports.end(), net_.atoms.begin() + a.atoms_begin, net_.atoms.begin() + a.atoms_end);
   }
   std::sort(supports.begin(), supports.end());
-  if (samples != result.energy.missing_samples || supports != boundary_supports(problem_, result.labelling))
+  if (samples != result.energy.missing_samples || !is_boundary(problem_, result.labelling, supports))
     return std::nullopt;
   result.certified = true;
   return result;

@@ -3,7 +3,7 @@
 #include "algorithms/bsh/problem_memo.hpp"
 #include "algorithms/bsh/support_lists.hpp"
 
-#include <boost/pending/disjoint_sets.hpp>
+#include "geometry/components.hpp"
 
 #include <algorithm>
 #include <map>
@@ -158,7 +158,11 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
 }
 
 std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling) {
+  // Counted first: the list is allocated once, at its size (every state of a search keeps one in its energy).
+  std::size_t count = 0;
+  for_each_boundary_support(problem, labelling, [&](int) { ++count; });
   std::vector<int> out;
+  out.reserve(count);
   for_each_boundary_support(problem, labelling, [&](int g) { out.push_back(g); });
   return out;
 }
@@ -205,9 +209,8 @@ namespace {
 /// share a junction). Per-thread scratch, refilled by each call of boundary_components: a search tests thousands
 /// of boundaries.
 struct BoundaryComponents {
-  std::vector<char> on_b;         ///< per patch: on b (its support on b with its halfspace's orientation)
-  std::vector<int> rank, parent;  ///< Boost's disjoint sets over the patches
-  boost::disjoint_sets<int*, int*> sets{nullptr, nullptr};
+  std::vector<char> on_b;     ///< per patch: on b (its support on b with its halfspace's orientation)
+  ReusableDisjointSets sets;  ///< over the patches
 
   /// The representative of patch p's component.
   int find(int p) { return sets.find_set(p); }
@@ -221,10 +224,7 @@ BoundaryComponents& boundary_components(const Problem& problem, const Labelling&
   for_each_boundary_support(problem, labelling, [&](int g) {
     for (int p : problem.supports()[g].patches) scratch.on_b[p] = labelling[c.patches[p].inside_cell];
   });
-  scratch.rank.assign(patches, 0);
-  scratch.parent.resize(patches);
-  scratch.sets = boost::disjoint_sets<int*, int*>(scratch.rank.data(), scratch.parent.data());
-  for (int p = 0; p < patches; ++p) scratch.sets.make_set(p);
+  scratch.sets.reset(patches);
   for (const Junction& j : c.junctions)
     for (std::size_t a = 0; a < j.patches.size(); ++a)
       for (std::size_t b = a + 1; b < j.patches.size(); ++b) {

@@ -315,6 +315,9 @@ Capacity capacity_of(const Problem& problem, const Network& net, const Arc& a) {
 /// A path of infinite arcs from s to t: the constraints admit no finite labelling. (Its adjacency lists and search
 /// stack are per-thread scratch, reused by the next cut.)
 bool infeasible(const Network& net) {
+  // Without an infinite arc out of s (no cell forced inside) no such path starts.
+  if (std::none_of(net.arcs.begin(), net.arcs.end(), [&](const Arc& a) { return a.infinite && a.from == net.s; }))
+    return false;
   thread_local std::vector<int> start, targets, stack;
   thread_local std::vector<char> seen;
   const int vertices = net.cells + 2;
@@ -386,19 +389,15 @@ using DoubleGraph = boost::compressed_sparse_row_graph<boost::directedS, boost::
 /// edges to/from source/sink don't count for max-flow"), so the reverse residuals read as flows miss that amount on
 /// both arcs and the flow looks unconserved at v (every cut of a scene with a sample whose inside cell is outer
 /// then failed the fast certification and took the exact max flow). Adds it back: the run is the same, the flow
-/// now conserved. Each cell has at most one arc from s and one to t (build_network).
+/// now conserved. Each cell has at most one arc from s and one to t, and when it has both, s -> v comes right
+/// before v -> t (build_network's order).
 void add_direct_paths(const Network& net, DoubleFlow& flow) {
-  std::vector<int> from_source(net.cells, -1), to_sink(net.cells, -1);
-  for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    const Arc& a = net.arcs[i];
-    if (a.from == net.s && a.to < net.cells) from_source[a.to] = static_cast<int>(i);
-    if (a.to == net.t && a.from < net.cells) to_sink[a.from] = static_cast<int>(i);
-  }
-  for (int v = 0; v < net.cells; ++v) {
-    if (from_source[v] < 0 || to_sink[v] < 0) continue;
-    const double pushed = std::min(flow.capacity[from_source[v]], flow.capacity[to_sink[v]]);
-    flow.flow[from_source[v]] += pushed;
-    flow.flow[to_sink[v]] += pushed;
+  for (std::size_t i = 0; i + 1 < net.arcs.size(); ++i) {
+    const Arc &in = net.arcs[i], &out = net.arcs[i + 1];
+    if (in.from != net.s || in.to >= net.cells || out.from != in.to || out.to != net.t) continue;
+    const double pushed = std::min(flow.capacity[i], flow.capacity[i + 1]);
+    flow.flow[i] += pushed;
+    flow.flow[i + 1] += pushed;
   }
 }
 

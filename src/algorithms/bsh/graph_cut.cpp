@@ -423,6 +423,11 @@ class DoubleNetwork {
     const auto& [from, to] = ends_[k / 2];
     return DoubleEdgeDescriptor(static_cast<std::size_t>(k % 2 ? to : from), position_[k]);
   }
+  /// The arcs with an end at vertex v, ascending, as [first, last) of arc indices: the arcs of v's out-edges in the
+  /// graph (an arc's edge or its reverse leaves each of its ends), for the network graph_for was last asked about.
+  std::pair<const int*, const int*> incident_arcs(int v) const {
+    return {arc_at_.data() + row_start_[v], arc_at_.data() + row_start_[v + 1]};
+  }
 
  private:
   void build(const Network& net, std::size_t n) {
@@ -437,7 +442,10 @@ class DoubleNetwork {
     position_.assign(m, 0);
     for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
     for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    row_start_ = start;
     for (std::size_t k = 0; k < m; ++k) position_[k] = start[source_of(k)]++;
+    arc_at_.resize(m);
+    for (std::size_t k = 0; k < m; ++k) arc_at_[position_[k]] = static_cast<int>(k / 2);
     std::vector<std::pair<std::size_t, std::size_t>> edges(m);
     std::vector<DoubleEdge> properties(m);
     for (std::size_t i = 0; i < ends_.size(); ++i) {
@@ -454,14 +462,16 @@ class DoubleNetwork {
   std::size_t vertices_ = 0;
   std::vector<std::pair<int, int>> ends_;
   std::vector<std::size_t> position_;
+  std::vector<std::size_t> row_start_;  ///< per vertex: its first out-edge's position (and the end, last)
+  std::vector<int> arc_at_;             ///< per edge position: its arc
   DoubleGraph graph_;
 };
 
-/// Fills `out` (its storage reused) with a maximum flow of `net`'s rounded capacities.
-void double_flow(const Problem& problem, const Network& net, DoubleFlow& out) {
+/// Fills `out` (its storage reused) with a maximum flow of `net`'s rounded capacities, on `network`'s graph (kept
+/// per thread by the caller, rebuilt only when the arcs' ends change).
+void double_flow(const Problem& problem, const Network& net, DoubleNetwork& network, DoubleFlow& out) {
   const double lambda = lambda_of(problem);
   const auto n = static_cast<std::size_t>(net.cells + 2);
-  thread_local DoubleNetwork network;
   // Boykov-Kolmogorov's vertex maps, reset as Boost's own overload makes them (zeros) but kept per thread.
   thread_local std::vector<boost::default_color_type> color;
   thread_local std::vector<DoubleEdgeDescriptor> predecessor;
@@ -535,9 +545,10 @@ bool is_boundary(const Problem& problem, const Labelling& labelling, const std::
 
 class BasicFlow {
  public:
-  /// Works on `doubles` in place (classification and cycle cancelling move its flows).
-  BasicFlow(const Problem& problem, const Network& net, DoubleFlow& doubles)
-      : problem_(problem), net_(net), d_(doubles), ground_(net.cells), nodes_(net.cells + 1) {}
+  /// Works on `doubles` in place (classification and cycle cancelling move its flows); `network` is the double
+  /// flow's, for `net` (its arcs incident to each vertex).
+  BasicFlow(const Problem& problem, const Network& net, const DoubleNetwork& network, DoubleFlow& doubles)
+      : problem_(problem), net_(net), network_(network), d_(doubles), ground_(net.cells), nodes_(net.cells + 1) {}
 
   /// The certified cut, or nullopt when a check fails or does not decide.
   std::optional<CutResult> certify();
@@ -556,6 +567,7 @@ class BasicFlow {
 
   const Problem& problem_;
   const Network& net_;
+  const DoubleNetwork& network_;
   DoubleFlow& d_;
   int ground_, nodes_;
   // Per thread, reused by the next cut (every one is reset by the step that fills it; one BasicFlow at a time
@@ -573,7 +585,6 @@ class BasicFlow {
   static thread_local std::vector<std::pair<int, int>> cycle_;  // scratch: a cycle's (arc, orientation)
   static thread_local std::vector<long> coefficient_;         // per support: scratch for exact sums (kept 0)
   static thread_local std::vector<int> touched_;              // scratch: supports with a coefficient
-  static thread_local std::vector<int> start_, incident_;     // scratch: arcs incident to each vertex
   static thread_local std::vector<char> reach_;               // scratch: per vertex, on the source side
   static thread_local std::vector<int> supports_;             // scratch: the supports across the cut
   int stamp_now_ = 0;
@@ -588,7 +599,7 @@ thread_local std::vector<int> BasicFlow::stamp_, BasicFlow::via_, BasicFlow::que
 thread_local std::vector<std::pair<int, int>> BasicFlow::cycle_;
 thread_local ReusableDisjointSets BasicFlow::sets_;
 thread_local std::vector<long> BasicFlow::coefficient_;
-thread_local std::vector<int> BasicFlow::touched_, BasicFlow::start_, BasicFlow::incident_, BasicFlow::supports_;
+thread_local std::vector<int> BasicFlow::touched_, BasicFlow::supports_;
 thread_local std::vector<char> BasicFlow::reach_;
 
 void BasicFlow::classify() {
@@ -847,21 +858,7 @@ bool BasicFlow::decide_residuals() {
 /// capacity equals that energy; nullopt when t is reachable or the check fails.
 std::optional<CutResult> BasicFlow::cut_from_residuals() {
   const int n = net_.cells;
-  std::vector<int>& start = start_;
-  std::vector<int>& incident = incident_;
   std::vector<int>& stack = queue_;
-  start.assign(n + 3, 0);
-  for (const Arc& a : net_.arcs) {
-    ++start[a.from + 1];
-    ++start[a.to + 1];
-  }
-  for (int v = 0; v < n + 2; ++v) start[v + 1] += start[v];
-  incident.resize(start.back());
-  stack.assign(start.begin(), start.end() - 1);  // each vertex's next free slot, while filling
-  for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
-    incident[stack[net_.arcs[e].from]++] = static_cast<int>(e);
-    incident[stack[net_.arcs[e].to]++] = static_cast<int>(e);
-  }
   std::vector<char>& reach = reach_;
   reach.assign(n + 2, 0);
   stack.assign(1, net_.s);
@@ -869,8 +866,9 @@ std::optional<CutResult> BasicFlow::cut_from_residuals() {
   while (!stack.empty()) {
     const int v = stack.back();
     stack.pop_back();
-    for (int k = start[v]; k < start[v + 1]; ++k) {
-      const int e = incident[k];
+    const auto [first, last] = network_.incident_arcs(v);
+    for (const int* it = first; it != last; ++it) {
+      const int e = *it;
       const Arc& a = net_.arcs[e];
       const int w = a.from == v ? a.to : a.from;
       if (reach[w] || !(a.from == v ? forward_[e] : backward_[e])) continue;
@@ -1113,9 +1111,10 @@ bool cut_cost(const Problem& problem, const CutConstraints& constraints, const L
 
 CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, const std::function<bool()>& stop) {
   const int n = problem.cell_count();
-  // The network, the double flow and its copy for the warm start, per thread: a search makes thousands of cuts,
-  // and allocating these was a good part of each.
+  // The network, its double graph, the double flow and its copy for the warm start, per thread: a search makes
+  // thousands of cuts, and allocating these was a good part of each.
   thread_local Network net;
+  thread_local DoubleNetwork network;
   thread_local DoubleFlow doubles;
   thread_local std::vector<double> warm;
   build_network(problem, constraints, net);
@@ -1128,9 +1127,9 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
   }
   if (stop && stop()) return stopped_result(n);
   if (!constraints.warm_start) return exact_max_flow_cut(problem, net, nullptr, stop);
-  double_flow(problem, net, doubles);
+  double_flow(problem, net, network, doubles);
   warm.assign(doubles.flow.begin(), doubles.flow.end());
-  if (auto certified = BasicFlow(problem, net, doubles).certify()) return *std::move(certified);
+  if (auto certified = BasicFlow(problem, net, network, doubles).certify()) return *std::move(certified);
   return exact_max_flow_cut(problem, net, &warm, stop);
 }
 

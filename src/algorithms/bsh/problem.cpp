@@ -205,6 +205,23 @@ Energy energy(const Problem& problem, const Labelling& labelling) {
 
 namespace {
 
+/// The pairs of patches of one halfspace that share a junction (each pair once per junction, in junction order):
+/// the only pairs Def. 3.2 may join, the same for every boundary of a problem (kept per problem and thread).
+struct SameHalfspacePairs {
+  std::vector<std::pair<int, int>> pairs;
+
+  SameHalfspacePairs() = default;
+  explicit SameHalfspacePairs(const Problem& problem) {
+    const Complex& c = problem.complex();
+    for (const Junction& j : c.junctions)
+      for (std::size_t a = 0; a < j.patches.size(); ++a)
+        for (std::size_t b = a + 1; b < j.patches.size(); ++b) {
+          const int p = j.patches[a], q = j.patches[b];
+          if (c.patches[p].halfspace == c.patches[q].halfspace) pairs.emplace_back(p, q);
+        }
+  }
+};
+
 /// The patches on b of a labelling, joined into the components of Def. 3.2 (patches of one halfspace on b that
 /// share a junction). Per-thread scratch, refilled by each call of boundary_components: a search tests thousands
 /// of boundaries.
@@ -225,13 +242,9 @@ BoundaryComponents& boundary_components(const Problem& problem, const Labelling&
     for (int p : problem.supports()[g].patches) scratch.on_b[p] = labelling[c.patches[p].inside_cell];
   });
   scratch.sets.reset(patches);
-  for (const Junction& j : c.junctions)
-    for (std::size_t a = 0; a < j.patches.size(); ++a)
-      for (std::size_t b = a + 1; b < j.patches.size(); ++b) {
-        const int p = j.patches[a], q = j.patches[b];
-        if (scratch.on_b[p] && scratch.on_b[q] && c.patches[p].halfspace == c.patches[q].halfspace)
-          scratch.sets.union_set(p, q);
-      }
+  thread_local ProblemMemo<SameHalfspacePairs> memo;
+  for (const auto& [p, q] : memo.of(problem).pairs)
+    if (scratch.on_b[p] && scratch.on_b[q]) scratch.sets.union_set(p, q);
   return scratch;
 }
 

@@ -205,6 +205,7 @@ struct FixedArcs {
   struct Group {
     int from = 0, to = 0;
     int begin = 0, end = 0;  ///< its entries
+    bool disallowed = false;  ///< some entry is not allowed: the arc is infinite under any constraints
     DoubleBounds measure;
   };
   std::vector<long> source_samples, sink_samples;  ///< per cell: h_c(0), h_c(1) finite parts
@@ -250,6 +251,7 @@ struct FixedArcs {
       for (; i < entries.size() && entries[i].from == group.from && entries[i].to == group.to; ++i) {
         const auto& [lo, hi] = problem.support_enclosures()[entries[i].support];
         group.measure = batch.add(group.measure, DoubleBounds{lo, hi});
+        group.disallowed = group.disallowed || !entries[i].allowed;
       }
       group.end = static_cast<int>(i);
       arcs.push_back(group);
@@ -290,10 +292,10 @@ void build_network(const Problem& problem, const CutConstraints& constraints, Ne
     a.from = group.from;
     a.to = group.to;
     a.atoms_begin = static_cast<int>(net.atoms.size());
-    a.infinite = std::any_of(fixed.entries.begin() + group.begin, fixed.entries.begin() + group.end,
-                             [&](const FixedArcs::Entry& e) {
-                               return !e.allowed || (!constraints.removed.empty() && constraints.removed[e.support]);
-                             });
+    a.infinite = group.disallowed ||
+                 (!constraints.removed.empty() &&
+                  std::any_of(fixed.entries.begin() + group.begin, fixed.entries.begin() + group.end,
+                              [&](const FixedArcs::Entry& e) { return constraints.removed[e.support] != 0; }));
     if (!a.infinite) {
       for (int k = group.begin; k < group.end; ++k) net.atoms.push_back(fixed.entries[k].support);
       a.measure = group.measure;

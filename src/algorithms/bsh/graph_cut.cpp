@@ -395,7 +395,8 @@ using DoubleGraph = boost::compressed_sparse_row_graph<boost::directedS, boost::
 /// before v -> t (build_network's order).
 void add_direct_paths(const Network& net, DoubleFlow& flow) {
   for (std::size_t i = 0; i + 1 < net.arcs.size(); ++i) {
-    const Arc &in = net.arcs[i], &out = net.arcs[i + 1];
+    const Arc& in = net.arcs[i];
+    const Arc& out = net.arcs[i + 1];
     if (in.from != net.s || in.to >= net.cells || out.from != in.to || out.to != net.t) continue;
     const double pushed = std::min(flow.capacity[i], flow.capacity[i + 1]);
     flow.flow[i] += pushed;

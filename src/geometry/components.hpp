@@ -23,6 +23,26 @@ namespace hsx {
 /// Elements are ints in [0, n); Boost grows the storage silently for larger ones, so callers keep them in range.
 using DisjointSets = boost::disjoint_sets_with_storage<>;
 
+/// Boost's disjoint sets over 0..n-1 on storage that is kept between uses: reset(n) starts again from n singletons
+/// without allocating once the storage has grown, for callers that run many small union-finds (keep the object per
+/// thread). Same operations as DisjointSets.
+class ReusableDisjointSets {
+ public:
+  void reset(std::size_t n) {
+    rank_.assign(n, 0);
+    parent_.resize(n);
+    sets_ = boost::disjoint_sets<int*, int*>(rank_.data(), parent_.data());
+    for (std::size_t e = 0; e < n; ++e) sets_.make_set(static_cast<int>(e));
+  }
+  int find_set(int e) { return sets_.find_set(e); }
+  void link(int a, int b) { sets_.link(a, b); }
+  void union_set(int a, int b) { sets_.union_set(a, b); }
+
+ private:
+  std::vector<int> rank_, parent_;
+  boost::disjoint_sets<int*, int*> sets_{nullptr, nullptr};
+};
+
 /// A partition of 0..n-1 into components, numbered by lowest element.
 struct Components {
   std::vector<int> of;  ///< per element (size n) its component in 0..count-1

@@ -337,9 +337,14 @@ class Builder {
   int next_name_ = 0;
 };
 
-/// Candidate sample points of halfspace i: rational_boundary_points plus the midpoints of its rational segment edges.
-std::vector<PointQ2> sample_candidates(const Scene2& scene, const Arrangement2& arr, int i) {
-  std::vector<PointQ2> out = rational_boundary_points(scene.halfspaces[static_cast<std::size_t>(i)], scene.domain);
+/// The candidate sample points of halfspace i that fit (sample_fits): the rational_boundary_points that do, then the
+/// midpoints of its rational segment edges. A midpoint lies inside its edge, which carries i and holds no vertex
+/// or other edge there, so it fits by construction and is not located (point location is most of a scene's
+/// drawing time).
+std::vector<PointQ2> fitting_candidates(const Scene2& scene, const Arrangement2& arr, int i) {
+  std::vector<PointQ2> out;
+  for (const PointQ2& p : rational_boundary_points(scene.halfspaces[static_cast<std::size_t>(i)], scene.domain))
+    if (sample_fits(arr, i, p)) out.push_back(p);
   for (const ArrEdge2& e : arr.edges()) {
     if (e.shape != EdgeShape2::Segment || e.on_box) continue;
     if (!std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), i)) continue;
@@ -373,11 +378,10 @@ Arrangement2 add_samples(const RandomSceneSettings& s, Random& rng, Scene2& scen
   std::vector<std::vector<PointQ2>> fitting(scene.halfspaces.size());
   std::vector<std::pair<int, PointQ2>> all;
   for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i)
-    for (const PointQ2& p : sample_candidates(scene, arr, i))
-      if (sample_fits(arr, i, p)) {
-        fitting[static_cast<std::size_t>(i)].push_back(p);
-        all.emplace_back(i, p);
-      }
+    for (const PointQ2& p : fitting_candidates(scene, arr, i)) {
+      fitting[static_cast<std::size_t>(i)].push_back(p);
+      all.emplace_back(i, p);
+    }
   if (all.empty()) return arr;
   if (s.max_samples_per_halfspace > 0) {
     for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {

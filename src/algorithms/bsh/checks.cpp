@@ -380,7 +380,7 @@ CheckResult check_prop51_on_states(const Problem& problem, const ExtractResult& 
   CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
   long checked = 0;
   for (const Labelling& state : best.expanded) {
-    if (sample_connectivity(problem, state).sample_connected()) continue;
+    if (is_sample_connected(problem, state)) continue;
     ++checked;
     CheckResult one = check_prop51(problem, state, reference);
     if (one.status == CheckResult::Fail) {

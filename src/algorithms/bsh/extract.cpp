@@ -2,14 +2,18 @@
 #include <hsx/algorithms/bsh/exact.hpp>
 #include "algorithms/bsh/support_lists.hpp"
 
+#include <boost/container_hash/hash.hpp>
+
 #include <algorithm>
 #include <cfloat>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <optional>
 #include <set>
 #include <stdexcept>
+#include <unordered_set>
 
 namespace hsx::bsh {
 
@@ -35,15 +39,17 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 
-/// A search state {r, b}: removed supports r (ascending) and the graph-cut boundary b without them.
+/// A search state {r, b}: removed supports r (ascending) and the graph-cut boundary b without them. (The islands
+/// of b are found again when the state is expanded: most states never are, and keeping them for all cost more.)
 struct State {
   std::vector<int> removed;
   CutResult cut;
   int parent = -1;  // index into the search's archive
-  /// The islands of b, found when the state was made (its children need them when it is expanded); empty for the
-  /// root, whose are found when it is expanded.
-  std::optional<SampleConnectivity> connectivity;
 };
+
+/// Every state a search made, by index. A deque: it grows by thousands of states without moving them, so a
+/// reference to a state stays valid while its children are added.
+using Archive = std::deque<State>;
 
 /// Shared bookkeeping of one extract() call: statistics, limits and progress reports.
 class SearchContext {
@@ -59,14 +65,13 @@ class SearchContext {
   bool unseparated = false;  ///< a best-first pick had a competitor whose energy did not separate from it
 
   CutResult cut(const std::vector<int>& removed, const std::vector<signed char>& forced) {
-    CutConstraints constraints;
-    constraints.removed.assign(problem_.support_count(), 0);
-    for (int g : removed) constraints.removed[g] = 1;
-    constraints.forced = forced;
+    constraints_.removed.assign(problem_.support_count(), 0);
+    for (int g : removed) constraints_.removed[g] = 1;
+    constraints_.forced.assign(forced.begin(), forced.end());
     ++stats_.graph_cuts;
     std::function<bool()> stop;
     if (options_.time_limit > 0 || options_.cancel) stop = [this] { return !stop_reason().empty(); };
-    CutResult result = graph_cut(problem_, constraints, stop);
+    CutResult result = graph_cut(problem_, constraints_, stop);
     if (result.stopped) stopped_by = stop_reason();  // its energy is -1: every caller drops it
     if (result.stopped && stopped_by.empty()) stopped_by = "cancelled";  // a cancel that said stop only once
     if (result.energy.missing_samples >= 0 && !result.certified) ++stats_.uncertified_cuts;
@@ -128,6 +133,7 @@ class SearchContext {
   const Problem& problem_;
   const ExtractOptions& options_;
   SearchStats stats_;
+  CutConstraints constraints_;  // the last cut's, its storage reused by the next
   Clock::time_point start_, last_report_;
   std::optional<CutResult> best_feasible_;
 };
@@ -164,7 +170,7 @@ class Frontier {
   };
 
   /// `archive` grows while the frontier lives; states are pushed by index.
-  Frontier(const Problem& problem, const std::vector<State>& archive, const CompareOptions& compare)
+  Frontier(const Problem& problem, const Archive& archive, const CompareOptions& compare)
       : problem_(problem), archive_(archive), compare_(compare) {}
 
   bool empty() const { return open_.empty(); }
@@ -173,10 +179,10 @@ class Frontier {
   void push(int state) {
     const CutResult& cut = archive_[state].cut;
     DoubleCombination sum;
-    for (int g : boundary_supports(problem_, cut.labelling)) {
+    for_each_boundary_support(problem_, cut.labelling, [&](int g) {
       const auto& [lo, hi] = problem_.support_enclosures()[g];
       sum.add(1, DoubleBounds{lo, hi});
-    }
+    });
     open_.insert(Key{cut.energy.missing_samples, sum.bounds().lo, sum.bounds().hi, state});
   }
 
@@ -214,7 +220,7 @@ class Frontier {
 
  private:
   const Problem& problem_;
-  const std::vector<State>& archive_;
+  const Archive& archive_;
   const CompareOptions& compare_;
   std::set<Key> open_;
 };
@@ -227,13 +233,13 @@ std::vector<int> merged(const std::vector<int>& a, const std::vector<int>& b) {
 
 struct SearchOutcome {
   bool found = false;
-  std::vector<State> archive;
+  Archive archive;
   int result = -1;
 };
 
 /// True when every open state's energy is certified greater than `bound`: `picked` (just popped) and its rivals
 /// (every other open state is proven no cheaper than `picked`, so greater than `bound` as well).
-bool all_above(const std::vector<State>& archive, const Frontier& queue, const Frontier::Key& picked,
+bool all_above(const Archive& archive, const Frontier& queue, const Frontier::Key& picked,
                const Energy& bound, const CompareOptions& cmp) {
   if (compare(archive[picked.state].cut.energy, bound, cmp) != Order::Greater) return false;
   bool above = true;
@@ -253,7 +259,8 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   const CompareOptions& cmp = ctx.options().compare;
   SearchOutcome out;
   if (ctx.limit_reached()) return out;
-  std::set<std::vector<int>> visited{base_removed};
+  // The removed sets met so far: only asked whether one is new, so hashed.
+  std::unordered_set<std::vector<int>, boost::hash<std::vector<int>>> visited{base_removed};
   State root{base_removed, ctx.cut(base_removed, forced), -1};
   if (root.cut.energy.missing_samples < 0) return out;  // the constraints admit no labelling
   out.archive.push_back(std::move(root));
@@ -266,34 +273,31 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
     // Only while every cut is certified: an uncertified cut's energy need not be its constraints' minimum.
     if (bound && ctx.stats().uncertified_cuts == 0 && all_above(out.archive, queue, picked, *bound, cmp)) return out;
     const int current = picked.state;
+    const State& state = out.archive[current];  // stays valid while children are added (Archive)
     ++ctx.stats().states_expanded;
-    const Labelling labelling = out.archive[current].cut.labelling;
+    const Labelling& labelling = state.cut.labelling;
     if (ctx.options().record_states) ctx.expanded.push_back(labelling);
-    if (!out.archive[current].connectivity)
-      out.archive[current].connectivity = sample_connectivity(problem, labelling);
-    const SampleConnectivity connectivity = std::move(*out.archive[current].connectivity);
-    out.archive[current].connectivity.reset();
+    const SampleConnectivity connectivity = sample_connectivity(problem, labelling);
     if (connectivity.sample_connected()) {
       // Optimal only if proven no worse than every state still queued (their descendants cost at least as much).
       if (beam_width <= 0)
         queue.for_each_rival(picked, [&](int other) {
-          if (compare(out.archive[other].cut.energy, out.archive[current].cut.energy, cmp) == Order::Tie)
+          if (compare(out.archive[other].cut.energy, state.cut.energy, cmp) == Order::Tie)
             ctx.unseparated = true;
         });
-      ctx.offer_feasible(out.archive[current].cut);
+      ctx.offer_feasible(state.cut);
       out.found = true;
       out.result = current;
       return out;
     }
     for (const std::vector<int>& set : removable_sets(problem, labelling, connectivity)) {
-      std::vector<int> removed = merged(out.archive[current].removed, set);
+      std::vector<int> removed = merged(state.removed, set);
       if (!visited.insert(removed).second) continue;
       if (ctx.limit_reached()) return out;
       CutResult cut = ctx.cut(removed, forced);
       if (cut.energy.missing_samples < 0) continue;
-      SampleConnectivity connectivity_of_cut = sample_connectivity(problem, cut.labelling);
-      if (connectivity_of_cut.sample_connected()) ctx.offer_feasible(cut);
-      out.archive.push_back(State{std::move(removed), std::move(cut), current, std::move(connectivity_of_cut)});
+      if (is_sample_connected(problem, cut.labelling)) ctx.offer_feasible(cut);
+      out.archive.push_back(State{std::move(removed), std::move(cut), current});
       queue.push(static_cast<int>(out.archive.size()) - 1);
       ++ctx.stats().states_created;
     }
@@ -374,7 +378,7 @@ void enumerate_ties(SearchContext& ctx, const CutResult& optimum, ExtractResult&
 void fill_from_cut(const Problem& problem, const CutResult& cut, ExtractResult& result) {
   result.labelling = cut.labelling;
   result.energy = cut.energy;
-  result.sample_connected = sample_connectivity(problem, cut.labelling).sample_connected();
+  result.sample_connected = is_sample_connected(problem, cut.labelling);
 }
 
 /// Best-first at non-generic junctions: Prop. 5.2 rests on Prop. 5.1, which needs generic junctions (a
@@ -758,7 +762,7 @@ BruteForceResult brute_force(const Problem& problem, bool connectivity, const Br
     ++result.enumerated;
     if (screen.greater(label)) return;  // compare() would say Greater: skipped, sample-connected or not
     Labelling l(label.begin(), label.end());
-    if (connectivity && !sample_connectivity(problem, l).sample_connected()) return;
+    if (connectivity && !is_sample_connected(problem, l)) return;
     Energy e = energy(problem, l);
     if (!have_best) {
       have_best = true;

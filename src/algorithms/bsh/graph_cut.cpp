@@ -193,10 +193,11 @@ struct Network {
   std::vector<int> atoms;
 };
 
-/// The binary arcs of a problem's network before any constraint: every support g between cells a and b is an
-/// entry of a -> b and of b -> a (allowed when g may lie on b with that cell inside), grouped by (from, to), with
-/// the supports ascending and the certified enclosure of their measures' sum.
-struct BinaryArcs {
+/// The parts of a problem's network that no constraint changes, made once per problem and thread: the unary
+/// arcs' samples and outer cells, and the binary arcs, where every support g between cells a and b is an entry of
+/// a -> b and of b -> a (allowed when g may lie on b with that cell inside), grouped by (from, to), with the
+/// supports ascending and the certified enclosure of their measures' sum.
+struct FixedArcs {
   struct Entry {
     int from, to, support;
     bool allowed;
@@ -204,13 +205,34 @@ struct BinaryArcs {
   struct Group {
     int from = 0, to = 0;
     int begin = 0, end = 0;  ///< its entries
+    bool disallowed = false;  ///< some entry is not allowed: the arc is infinite under any constraints
     DoubleBounds measure;
   };
-  std::vector<Entry> entries;  ///< by (from, to, support)
+  std::vector<long> source_samples, sink_samples;  ///< per cell: h_c(0), h_c(1) finite parts
+  std::vector<char> outer;                         ///< per cell: an outer cell (its arc to t is infinite)
+  std::vector<Entry> entries;                      ///< by (from, to, support)
   std::vector<Group> arcs;
 
-  BinaryArcs() = default;
-  explicit BinaryArcs(const Problem& problem) {
+  FixedArcs() = default;
+  explicit FixedArcs(const Problem& problem) {
+    add_unary(problem);
+    add_binary(problem);
+  }
+
+ private:
+  void add_unary(const Problem& problem) {
+    const Complex& c = problem.complex();
+    const int n = problem.cell_count();
+    source_samples.assign(n, 0);
+    sink_samples.assign(n, 0);
+    outer.assign(n, 0);
+    for (int k = 0; k < n; ++k) outer[k] = c.cells[k].outer;
+    for (const Patch& p : c.patches) {
+      source_samples[p.inside_cell] += static_cast<long>(p.samples.size());
+      sink_samples[p.outside_cell] += static_cast<long>(p.samples.size());
+    }
+  }
+  void add_binary(const Problem& problem) {
     entries.reserve(2 * static_cast<std::size_t>(problem.support_count()));
     for (int g = 0; g < problem.support_count(); ++g) {
       const SupportTerm& st = problem.supports()[g];
@@ -229,6 +251,7 @@ struct BinaryArcs {
       for (; i < entries.size() && entries[i].from == group.from && entries[i].to == group.to; ++i) {
         const auto& [lo, hi] = problem.support_enclosures()[entries[i].support];
         group.measure = batch.add(group.measure, DoubleBounds{lo, hi});
+        group.disallowed = group.disallowed || !entries[i].allowed;
       }
       group.end = static_cast<int>(i);
       arcs.push_back(group);
@@ -236,25 +259,17 @@ struct BinaryArcs {
   }
 };
 
-Network build_network(const Problem& problem, const CutConstraints& constraints) {
-  const Complex& c = problem.complex();
+/// Fills `net` (its storage reused: a search builds thousands of networks) with the network of `problem` under
+/// `constraints`.
+void build_network(const Problem& problem, const CutConstraints& constraints, Network& net) {
+  thread_local ProblemMemo<FixedArcs> memo;
+  const FixedArcs& fixed = memo.of(problem);
   const int n = problem.cell_count();
-  Network net;
   net.cells = n;
   net.s = n;
   net.t = n + 1;
-  std::vector<long> source_samples(n, 0), sink_samples(n, 0);  // h_c(0), h_c(1) finite parts
-  std::vector<char> source_infinite(n, 0), sink_infinite(n, 0);  // forced 1 can't be cut from s, outer from t
-  for (int k = 0; k < n; ++k) sink_infinite[k] = c.cells[k].outer;
-  for (int k = 0; k < n; ++k) {
-    if (constraints.forced.empty() || constraints.forced[k] < 0) continue;
-    // Forced 1: cutting s -> k is impossible; forced 0: cutting k -> t is impossible.
-    if (constraints.forced[k] == 1) source_infinite[k] = 1; else sink_infinite[k] = 1;
-  }
-  for (const Patch& p : c.patches) {
-    source_samples[p.inside_cell] += static_cast<long>(p.samples.size());
-    sink_samples[p.outside_cell] += static_cast<long>(p.samples.size());
-  }
+  net.arcs.clear();
+  net.atoms.clear();
   const auto add_unary = [&net](int from, int to, bool infinite, long samples) {
     if (!infinite && samples == 0) return;
     Arc a;
@@ -264,33 +279,30 @@ Network build_network(const Problem& problem, const CutConstraints& constraints)
     a.samples = infinite ? 0 : samples;
     net.arcs.push_back(a);
   };
-  net.arcs.reserve(2 * static_cast<std::size_t>(n) + 2 * static_cast<std::size_t>(problem.support_count()));
   for (int k = 0; k < n; ++k) {
-    add_unary(net.s, k, source_infinite[k], source_samples[k]);
-    add_unary(k, net.t, sink_infinite[k], sink_samples[k]);
+    // Forced 1: cutting s -> k is impossible; forced 0 (or an outer cell): cutting k -> t is impossible.
+    const int forced = constraints.forced.empty() ? -1 : constraints.forced[k];
+    add_unary(net.s, k, forced == 1, fixed.source_samples[k]);
+    add_unary(k, net.t, fixed.outer[k] || forced == 0, fixed.sink_samples[k]);
   }
   // Binary arcs: every support g between a and b adds |g| to a -> b and to b -> a, or makes the arc infinite when
   // it does not allow that orientation or is removed.
-  thread_local ProblemMemo<BinaryArcs> memo;
-  const BinaryArcs& binary = memo.of(problem);
-  net.atoms.reserve(binary.entries.size());
-  for (const BinaryArcs::Group& group : binary.arcs) {
+  for (const FixedArcs::Group& group : fixed.arcs) {
     Arc a;
     a.from = group.from;
     a.to = group.to;
     a.atoms_begin = static_cast<int>(net.atoms.size());
-    a.infinite = std::any_of(binary.entries.begin() + group.begin, binary.entries.begin() + group.end,
-                             [&](const BinaryArcs::Entry& e) {
-                               return !e.allowed || (!constraints.removed.empty() && constraints.removed[e.support]);
-                             });
+    a.infinite = group.disallowed ||
+                 (!constraints.removed.empty() &&
+                  std::any_of(fixed.entries.begin() + group.begin, fixed.entries.begin() + group.end,
+                              [&](const FixedArcs::Entry& e) { return constraints.removed[e.support] != 0; }));
     if (!a.infinite) {
-      for (int k = group.begin; k < group.end; ++k) net.atoms.push_back(binary.entries[k].support);
+      for (int k = group.begin; k < group.end; ++k) net.atoms.push_back(fixed.entries[k].support);
       a.measure = group.measure;
     }
     a.atoms_end = static_cast<int>(net.atoms.size());
     net.arcs.push_back(a);
   }
-  return net;
 }
 
 /// The exact capacity of an arc.
@@ -302,21 +314,33 @@ Capacity capacity_of(const Problem& problem, const Network& net, const Arc& a) {
   return c;
 }
 
-/// A path of infinite arcs from s to t: the constraints admit no finite labelling.
+/// A path of infinite arcs from s to t: the constraints admit no finite labelling. (Its adjacency lists and search
+/// stack are per-thread scratch, reused by the next cut.)
 bool infeasible(const Network& net) {
-  std::vector<std::vector<int>> infinite_out(net.cells + 2);
+  // Without an infinite arc out of s (no cell forced inside) no such path starts.
+  if (std::none_of(net.arcs.begin(), net.arcs.end(), [&](const Arc& a) { return a.infinite && a.from == net.s; }))
+    return false;
+  thread_local std::vector<int> start, targets, stack;
+  thread_local std::vector<char> seen;
+  const int vertices = net.cells + 2;
+  start.assign(vertices + 1, 0);
   for (const Arc& a : net.arcs)
-    if (a.infinite) infinite_out[a.from].push_back(a.to);
-  std::vector<char> seen(net.cells + 2, 0);
-  std::vector<int> stack{net.s};
+    if (a.infinite) ++start[a.from + 1];
+  for (int v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  targets.resize(start[vertices]);
+  stack.assign(start.begin(), start.end() - 1);  // each vertex's next free slot, while filling
+  for (const Arc& a : net.arcs)
+    if (a.infinite) targets[stack[a.from]++] = a.to;
+  seen.assign(vertices, 0);
+  stack.assign(1, net.s);
   seen[net.s] = 1;
   while (!stack.empty()) {
     const int v = stack.back();
     stack.pop_back();
-    for (int w : infinite_out[v])
-      if (!seen[w]) {
-        seen[w] = 1;
-        stack.push_back(w);
+    for (int k = start[v]; k < start[v + 1]; ++k)
+      if (!seen[targets[k]]) {
+        seen[targets[k]] = 1;
+        stack.push_back(targets[k]);
       }
   }
   return seen[net.t];
@@ -367,19 +391,16 @@ using DoubleGraph = boost::compressed_sparse_row_graph<boost::directedS, boost::
 /// edges to/from source/sink don't count for max-flow"), so the reverse residuals read as flows miss that amount on
 /// both arcs and the flow looks unconserved at v (every cut of a scene with a sample whose inside cell is outer
 /// then failed the fast certification and took the exact max flow). Adds it back: the run is the same, the flow
-/// now conserved. Each cell has at most one arc from s and one to t (build_network).
+/// now conserved. Each cell has at most one arc from s and one to t, and when it has both, s -> v comes right
+/// before v -> t (build_network's order).
 void add_direct_paths(const Network& net, DoubleFlow& flow) {
-  std::vector<int> from_source(net.cells, -1), to_sink(net.cells, -1);
-  for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    const Arc& a = net.arcs[i];
-    if (a.from == net.s && a.to < net.cells) from_source[a.to] = static_cast<int>(i);
-    if (a.to == net.t && a.from < net.cells) to_sink[a.from] = static_cast<int>(i);
-  }
-  for (int v = 0; v < net.cells; ++v) {
-    if (from_source[v] < 0 || to_sink[v] < 0) continue;
-    const double pushed = std::min(flow.capacity[from_source[v]], flow.capacity[to_sink[v]]);
-    flow.flow[from_source[v]] += pushed;
-    flow.flow[to_sink[v]] += pushed;
+  for (std::size_t i = 0; i + 1 < net.arcs.size(); ++i) {
+    const Arc& in = net.arcs[i];
+    const Arc& out = net.arcs[i + 1];
+    if (in.from != net.s || in.to >= net.cells || out.from != in.to || out.to != net.t) continue;
+    const double pushed = std::min(flow.capacity[i], flow.capacity[i + 1]);
+    flow.flow[i] += pushed;
+    flow.flow[i + 1] += pushed;
   }
 }
 
@@ -405,6 +426,11 @@ class DoubleNetwork {
     const auto& [from, to] = ends_[k / 2];
     return DoubleEdgeDescriptor(static_cast<std::size_t>(k % 2 ? to : from), position_[k]);
   }
+  /// The arcs with an end at vertex v, ascending, as [first, last) of arc indices: the arcs of v's out-edges in the
+  /// graph (an arc's edge or its reverse leaves each of its ends), for the network graph_for was last asked about.
+  std::pair<const int*, const int*> incident_arcs(int v) const {
+    return {arc_at_.data() + row_start_[v], arc_at_.data() + row_start_[v + 1]};
+  }
 
  private:
   void build(const Network& net, std::size_t n) {
@@ -419,7 +445,10 @@ class DoubleNetwork {
     position_.assign(m, 0);
     for (std::size_t k = 0; k < m; ++k) ++start[source_of(k) + 1];
     for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+    row_start_ = start;
     for (std::size_t k = 0; k < m; ++k) position_[k] = start[source_of(k)]++;
+    arc_at_.resize(m);
+    for (std::size_t k = 0; k < m; ++k) arc_at_[position_[k]] = static_cast<int>(k / 2);
     std::vector<std::pair<std::size_t, std::size_t>> edges(m);
     std::vector<DoubleEdge> properties(m);
     for (std::size_t i = 0; i < ends_.size(); ++i) {
@@ -436,36 +465,45 @@ class DoubleNetwork {
   std::size_t vertices_ = 0;
   std::vector<std::pair<int, int>> ends_;
   std::vector<std::size_t> position_;
+  std::vector<std::size_t> row_start_;  ///< per vertex: its first out-edge's position (and the end, last)
+  std::vector<int> arc_at_;             ///< per edge position: its arc
   DoubleGraph graph_;
 };
 
-DoubleFlow double_flow(const Problem& problem, const Network& net) {
+/// Fills `out` (its storage reused) with a maximum flow of `net`'s rounded capacities, on `network`'s graph (kept
+/// per thread by the caller, rebuilt only when the arcs' ends change).
+void double_flow(const Problem& problem, const Network& net, DoubleNetwork& network, DoubleFlow& out) {
   const double lambda = lambda_of(problem);
   const auto n = static_cast<std::size_t>(net.cells + 2);
-  thread_local DoubleNetwork network;
+  // Boykov-Kolmogorov's vertex maps, reset as Boost's own overload makes them (zeros) but kept per thread.
+  thread_local std::vector<boost::default_color_type> color;
+  thread_local std::vector<DoubleEdgeDescriptor> predecessor;
+  thread_local std::vector<std::size_t> distance;
   DoubleGraph& g = network.graph_for(net);
-  DoubleFlow out;
-  out.capacity.reserve(net.arcs.size());
+  out.capacity.clear();
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
     const double capacity = double_capacity(problem, net, net.arcs[i], lambda);
     g[network.edge(2 * i)].capacity = capacity;
     out.capacity.push_back(capacity);
   }
   auto residual = boost::get(&DoubleEdge::residual, g);
-  std::vector<boost::default_color_type> color(n);
+  const auto index = boost::get(boost::vertex_index, g);
+  color.assign(n, boost::default_color_type());
+  predecessor.assign(n, DoubleEdgeDescriptor());
+  distance.assign(n, 0);
   boost::boykov_kolmogorov_max_flow(g, boost::get(&DoubleEdge::capacity, g), residual,
                                     boost::get(&DoubleEdge::reverse, g),
-                                    boost::make_iterator_property_map(color.begin(), boost::get(boost::vertex_index, g)),
-                                    boost::get(boost::vertex_index, g), net.s, net.t);
-  out.flow.reserve(net.arcs.size());
-  out.residual.reserve(net.arcs.size());
+                                    boost::make_iterator_property_map(predecessor.begin(), index),
+                                    boost::make_iterator_property_map(color.begin(), index),
+                                    boost::make_iterator_property_map(distance.begin(), index), index, net.s, net.t);
+  out.flow.clear();
+  out.residual.clear();
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
     // The reverse edge's residual = the arc's flow.
     out.flow.push_back(residual[network.edge(2 * i + 1)]);
     out.residual.push_back(residual[network.edge(2 * i)]);
   }
   add_direct_paths(net, out);
-  return out;
 }
 
 // ---- certification of a basic flow close to the double flow (the fast path) ----
@@ -496,10 +534,24 @@ std::optional<int> enclosed_sign(const Enclosed& v) {
   return std::nullopt;
 }
 
+/// True when `supports` (ascending) are exactly the supports on the boundary of `labelling` (compared without
+/// listing the boundary).
+bool is_boundary(const Problem& problem, const Labelling& labelling, const std::vector<int>& supports) {
+  std::size_t k = 0;
+  bool same = true;
+  for_each_boundary_support(problem, labelling, [&](int g) {
+    same = same && k < supports.size() && supports[k] == g;
+    ++k;
+  });
+  return same && k == supports.size();
+}
+
 class BasicFlow {
  public:
-  BasicFlow(const Problem& problem, const Network& net, DoubleFlow doubles)
-      : problem_(problem), net_(net), d_(std::move(doubles)), ground_(net.cells), nodes_(net.cells + 1) {}
+  /// Works on `doubles` in place (classification and cycle cancelling move its flows); `network` is the double
+  /// flow's, for `net` (its arcs incident to each vertex).
+  BasicFlow(const Problem& problem, const Network& net, const DoubleNetwork& network, DoubleFlow& doubles)
+      : problem_(problem), net_(net), network_(network), d_(doubles), ground_(net.cells), nodes_(net.cells + 1) {}
 
   /// The certified cut, or nullopt when a check fails or does not decide.
   std::optional<CutResult> certify();
@@ -518,7 +570,8 @@ class BasicFlow {
 
   const Problem& problem_;
   const Network& net_;
-  DoubleFlow d_;
+  const DoubleNetwork& network_;
+  DoubleFlow& d_;
   int ground_, nodes_;
   // Per thread, reused by the next cut (every one is reset by the step that fills it; one BasicFlow at a time
   // per thread): a search makes thousands of cuts, and these allocations were a good part of each.
@@ -530,7 +583,13 @@ class BasicFlow {
   static thread_local std::vector<char> forward_, backward_;  // per arc: positive residual forward (capacity - f),
                                                               // backward (f)
   static thread_local std::vector<int> stamp_, via_;          // scratch for cycle search
-  std::vector<long> coefficient_;  // per support: scratch for exact sums
+  static thread_local ReusableDisjointSets sets_;             // scratch: the forest's trees while it is built
+  static thread_local std::vector<int> queue_;                // scratch for cycle search and tree walks
+  static thread_local std::vector<std::pair<int, int>> cycle_;  // scratch: a cycle's (arc, orientation)
+  static thread_local std::vector<long> coefficient_;         // per support: scratch for exact sums (kept 0)
+  static thread_local std::vector<int> touched_;              // scratch: supports with a coefficient
+  static thread_local std::vector<char> reach_;               // scratch: per vertex, on the source side
+  static thread_local std::vector<int> supports_;             // scratch: the supports across the cut
   int stamp_now_ = 0;
 };
 
@@ -539,7 +598,12 @@ thread_local std::vector<std::vector<int>> BasicFlow::forest_;
 thread_local std::vector<int> BasicFlow::parent_arc_, BasicFlow::order_, BasicFlow::position_, BasicFlow::size_;
 thread_local std::vector<Enclosed> BasicFlow::subtree_, BasicFlow::flow_;
 thread_local std::vector<char> BasicFlow::forward_, BasicFlow::backward_;
-thread_local std::vector<int> BasicFlow::stamp_, BasicFlow::via_;
+thread_local std::vector<int> BasicFlow::stamp_, BasicFlow::via_, BasicFlow::queue_;
+thread_local std::vector<std::pair<int, int>> BasicFlow::cycle_;
+thread_local ReusableDisjointSets BasicFlow::sets_;
+thread_local std::vector<long> BasicFlow::coefficient_;
+thread_local std::vector<int> BasicFlow::touched_, BasicFlow::supports_;
+thread_local std::vector<char> BasicFlow::reach_;
 
 void BasicFlow::classify() {
   double largest = 0;
@@ -563,7 +627,8 @@ void BasicFlow::build_forest() {
   for (auto& arcs : forest_) arcs.clear();  // keeps their storage for the next cut
   stamp_.assign(nodes_, 0);
   via_.assign(nodes_, -1);
-  DisjointSets sets(static_cast<std::size_t>(nodes_));
+  ReusableDisjointSets& sets = sets_;
+  sets.reset(static_cast<std::size_t>(nodes_));
   for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
     if (state_[e] != ArcState::Free) continue;
     const int u = node(net_.arcs[e].from), v = node(net_.arcs[e].to);
@@ -584,25 +649,25 @@ void BasicFlow::cancel_cycle(int e) {
   const int u = node(net_.arcs[e].from), v = node(net_.arcs[e].to);
   // Breadth-first search of the forest from v to u: via_[x] = the forest arc that reached x.
   ++stamp_now_;
-  std::vector<int> queue{v};
+  queue_.assign(1, v);
   stamp_[v] = stamp_now_;
-  for (std::size_t head = 0; head < queue.size() && stamp_[u] != stamp_now_; ++head) {
-    const int x = queue[head];
+  for (std::size_t head = 0; head < queue_.size() && stamp_[u] != stamp_now_; ++head) {
+    const int x = queue_[head];
     for (int a : forest_[x]) {
       const int y = node(net_.arcs[a].from) == x ? node(net_.arcs[a].to) : node(net_.arcs[a].from);
       if (stamp_[y] == stamp_now_) continue;
       stamp_[y] = stamp_now_;
       via_[y] = a;
-      queue.push_back(y);
+      queue_.push_back(y);
     }
   }
   // The cycle u -> v along e, then back from v to u through the forest; orientation +1 where the arc points
   // along the cycle.
-  std::vector<std::pair<int, int>> cycle{{e, 1}};
+  cycle_.assign(1, {e, 1});
   for (int x = u; x != v;) {
     const int a = via_[x];
     const int y = node(net_.arcs[a].from) == x ? node(net_.arcs[a].to) : node(net_.arcs[a].from);
-    cycle.emplace_back(a, node(net_.arcs[a].from) == y ? 1 : -1);  // walked from y to x
+    cycle_.emplace_back(a, node(net_.arcs[a].from) == y ? 1 : -1);  // walked from y to x
     x = y;
   }
   const auto room = [this](int a, int direction) {  // how far a's flow can move in `direction`
@@ -611,7 +676,7 @@ void BasicFlow::cancel_cycle(int e) {
   double best = std::numeric_limits<double>::infinity();
   int limiting = e, push = 1;
   for (int direction : {1, -1})
-    for (const auto& [a, orientation] : cycle) {
+    for (const auto& [a, orientation] : cycle_) {
       const double r = room(a, direction * orientation);
       if (r < best) {
         best = r;
@@ -619,9 +684,9 @@ void BasicFlow::cancel_cycle(int e) {
         push = direction;
       }
     }
-  for (const auto& [a, orientation] : cycle) d_.flow[a] += push * orientation * best;
+  for (const auto& [a, orientation] : cycle_) d_.flow[a] += push * orientation * best;
   const int hit = push * (limiting == e ? 1 : [&] {
-    for (const auto& [a, orientation] : cycle)
+    for (const auto& [a, orientation] : cycle_)
       if (a == limiting) return orientation;
     return 1;
   }());
@@ -643,7 +708,8 @@ void BasicFlow::root_forest() {
   size_.assign(nodes_, 1);
   order_.clear();
   order_.reserve(nodes_);
-  std::vector<int> stack;
+  std::vector<int>& stack = queue_;
+  stack.clear();
   for (int root = -1; root < nodes_; ++root) {
     const int r = root < 0 ? ground_ : root;
     if (position_[r] >= 0) continue;
@@ -708,7 +774,8 @@ std::optional<int> BasicFlow::exact_sign(int below, int sign, int plus_arc) {
     return position_[x] >= first && position_[x] < last;
   };
   coefficient_.resize(problem_.support_count(), 0);
-  std::vector<int> touched;
+  std::vector<int>& touched = touched_;
+  touched.clear();
   long samples = 0;
   const auto add_arc = [&](const Arc& a, long k) {
     samples += k * a.samples;
@@ -794,25 +861,17 @@ bool BasicFlow::decide_residuals() {
 /// capacity equals that energy; nullopt when t is reachable or the check fails.
 std::optional<CutResult> BasicFlow::cut_from_residuals() {
   const int n = net_.cells;
-  std::vector<int> start(n + 3, 0);
-  for (const Arc& a : net_.arcs) {
-    ++start[a.from + 1];
-    ++start[a.to + 1];
-  }
-  for (int v = 0; v < n + 2; ++v) start[v + 1] += start[v];
-  std::vector<int> incident(start.back()), fill(start.begin(), start.end() - 1);
-  for (std::size_t e = 0; e < net_.arcs.size(); ++e) {
-    incident[fill[net_.arcs[e].from]++] = static_cast<int>(e);
-    incident[fill[net_.arcs[e].to]++] = static_cast<int>(e);
-  }
-  std::vector<char> reach(n + 2, 0);
-  std::vector<int> stack{net_.s};
+  std::vector<int>& stack = queue_;
+  std::vector<char>& reach = reach_;
+  reach.assign(n + 2, 0);
+  stack.assign(1, net_.s);
   reach[net_.s] = 1;
   while (!stack.empty()) {
     const int v = stack.back();
     stack.pop_back();
-    for (int k = start[v]; k < start[v + 1]; ++k) {
-      const int e = incident[k];
+    const auto [first, last] = network_.incident_arcs(v);
+    for (const int* it = first; it != last; ++it) {
+      const int e = *it;
       const Arc& a = net_.arcs[e];
       const int w = a.from == v ? a.to : a.from;
       if (reach[w] || !(a.from == v ? forward_[e] : backward_[e])) continue;
@@ -826,7 +885,8 @@ std::optional<CutResult> BasicFlow::cut_from_residuals() {
   result.energy = energy(problem_, result.labelling);
   // The cut's capacity: its samples and its supports (each arc across counted once) must be the energy's.
   long samples = 0;
-  std::vector<int> supports;
+  std::vector<int>& supports = supports_;
+  supports.clear();
   for (const Arc& a : net_.arcs) {
     if (!reach[a.from] || reach[a.to]) continue;
     if (a.infinite) return std::nullopt;
@@ -834,7 +894,7 @@ std::optional<CutResult> BasicFlow::cut_from_residuals() {
     supports.insert(supports.end(), net_.atoms.begin() + a.atoms_begin, net_.atoms.begin() + a.atoms_end);
   }
   std::sort(supports.begin(), supports.end());
-  if (samples != result.energy.missing_samples || supports != boundary_supports(problem_, result.labelling))
+  if (samples != result.energy.missing_samples || !is_boundary(problem_, result.labelling, supports))
     return std::nullopt;
   result.certified = true;
   return result;
@@ -1039,7 +1099,8 @@ CutResult exact_max_flow_cut(const Problem& problem, const Network& flat, const 
 }  // namespace
 
 bool cut_cost(const Problem& problem, const CutConstraints& constraints, const Labelling& labelling, Energy* cost) {
-  const Network net = build_network(problem, constraints);
+  Network net;
+  build_network(problem, constraints, net);
   const auto side = [&](int vertex) { return vertex == net.s || (vertex != net.t && labelling[vertex]); };
   Capacity total;
   for (const Arc& a : net.arcs) {
@@ -1053,7 +1114,13 @@ bool cut_cost(const Problem& problem, const CutConstraints& constraints, const L
 
 CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, const std::function<bool()>& stop) {
   const int n = problem.cell_count();
-  const Network net = build_network(problem, constraints);
+  // The network, its double graph, the double flow and its copy for the warm start, per thread: a search makes
+  // thousands of cuts, and allocating these was a good part of each.
+  thread_local Network net;
+  thread_local DoubleNetwork network;
+  thread_local DoubleFlow doubles;
+  thread_local std::vector<double> warm;
+  build_network(problem, constraints, net);
   if (infeasible(net)) {
     CutResult infeasible;
     infeasible.labelling.assign(n, 0);
@@ -1063,9 +1130,9 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
   }
   if (stop && stop()) return stopped_result(n);
   if (!constraints.warm_start) return exact_max_flow_cut(problem, net, nullptr, stop);
-  DoubleFlow doubles = double_flow(problem, net);
-  const std::vector<double> warm = doubles.flow;
-  if (auto certified = BasicFlow(problem, net, std::move(doubles)).certify()) return *std::move(certified);
+  double_flow(problem, net, network, doubles);
+  warm.assign(doubles.flow.begin(), doubles.flow.end());
+  if (auto certified = BasicFlow(problem, net, network, doubles).certify()) return *std::move(certified);
   return exact_max_flow_cut(problem, net, &warm, stop);
 }
 

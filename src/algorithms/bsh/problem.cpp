@@ -2,6 +2,7 @@
 
 #include "algorithms/bsh/problem_memo.hpp"
 #include "algorithms/bsh/support_lists.hpp"
+
 #include "geometry/components.hpp"
 
 #include <algorithm>
@@ -157,11 +158,12 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
 }
 
 std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling) {
+  // Counted first: the list is allocated once, at its size (every state of a search keeps one in its energy).
+  std::size_t count = 0;
+  for_each_boundary_support(problem, labelling, [&](int) { ++count; });
   std::vector<int> out;
-  for (int g = 0; g < problem.support_count(); ++g) {
-    const SupportTerm& s = problem.supports()[g];
-    if (labelling[s.cell_a] != labelling[s.cell_b]) out.push_back(g);
-  }
+  out.reserve(count);
+  for_each_boundary_support(problem, labelling, [&](int g) { out.push_back(g); });
   return out;
 }
 
@@ -201,33 +203,90 @@ Energy energy(const Problem& problem, const Labelling& labelling) {
   return e;
 }
 
+namespace {
+
+/// The pairs of patches of one halfspace that share a junction (each pair once per junction, in junction order):
+/// the only pairs Def. 3.2 may join, the same for every boundary of a problem (kept per problem and thread).
+struct SameHalfspacePairs {
+  std::vector<std::pair<int, int>> pairs;
+
+  SameHalfspacePairs() = default;
+  explicit SameHalfspacePairs(const Problem& problem) {
+    const Complex& c = problem.complex();
+    for (const Junction& j : c.junctions)
+      for (std::size_t a = 0; a < j.patches.size(); ++a)
+        for (std::size_t b = a + 1; b < j.patches.size(); ++b) {
+          const int p = j.patches[a], q = j.patches[b];
+          if (c.patches[p].halfspace == c.patches[q].halfspace) pairs.emplace_back(p, q);
+        }
+  }
+};
+
+/// The patches on b of a labelling, joined into the components of Def. 3.2 (patches of one halfspace on b that
+/// share a junction). Per-thread scratch, refilled by each call of boundary_components: a search tests thousands
+/// of boundaries.
+struct BoundaryComponents {
+  std::vector<char> on_b;     ///< per patch: on b (its support on b with its halfspace's orientation)
+  ReusableDisjointSets sets;  ///< over the patches
+
+  /// The representative of patch p's component.
+  int find(int p) { return sets.find_set(p); }
+};
+
+BoundaryComponents& boundary_components(const Problem& problem, const Labelling& labelling) {
+  thread_local BoundaryComponents scratch;
+  const Complex& c = problem.complex();
+  const int patches = static_cast<int>(c.patches.size());
+  scratch.on_b.assign(patches, 0);
+  for_each_boundary_support(problem, labelling, [&](int g) {
+    for (int p : problem.supports()[g].patches) scratch.on_b[p] = labelling[c.patches[p].inside_cell];
+  });
+  scratch.sets.reset(patches);
+  thread_local ProblemMemo<SameHalfspacePairs> memo;
+  for (const auto& [p, q] : memo.of(problem).pairs)
+    if (scratch.on_b[p] && scratch.on_b[q]) scratch.sets.union_set(p, q);
+  return scratch;
+}
+
+}  // namespace
+
 SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& labelling) {
   const Complex& c = problem.complex();
+  BoundaryComponents& b = boundary_components(problem, labelling);
+  thread_local std::vector<int> slot;  // per representative: its component's index in `out`, -1 before
+  slot.assign(c.patches.size(), -1);
   SampleConnectivity out;
-  std::vector<char> on_b(c.patches.size(), 0);
-  for (int g : boundary_supports(problem, labelling))
-    for (int p : problem.supports()[g].patches) on_b[p] = labelling[c.patches[p].inside_cell];
-  // Components: patches on the boundary, of the same halfspace, joined where they share a junction.
-  DisjointSets sets(c.patches.size());
-  for (const Junction& j : c.junctions)
-    for (std::size_t a = 0; a < j.patches.size(); ++a)
-      for (std::size_t b = a + 1; b < j.patches.size(); ++b) {
-        const int p = j.patches[a], q = j.patches[b];
-        if (on_b[p] && on_b[q] && c.patches[p].halfspace == c.patches[q].halfspace) sets.union_set(p, q);
-      }
-  std::vector<std::pair<std::pair<int, int>, std::vector<int>>> ordered;  // ordered by (halfspace, smallest patch)
-  for (auto& list : components_of(sets, c.patches.size()).members(on_b))
-    ordered.push_back({{c.patches[list.front()].halfspace, list.front()}, std::move(list)});
-  std::sort(ordered.begin(), ordered.end());
-  for (auto& [key, list] : ordered) {
-    Component comp;
-    comp.halfspace = key.first;
-    comp.patches = list;
-    for (int p : list) comp.has_sample = comp.has_sample || !c.patches[p].samples.empty();
-    if (!comp.has_sample) out.islands.push_back(static_cast<int>(out.components.size()));
-    out.components.push_back(std::move(comp));
+  // Patches ascending: components appear in order of their smallest patch, each with its patches ascending.
+  for (int p = 0; p < static_cast<int>(c.patches.size()); ++p) {
+    if (!b.on_b[p]) continue;
+    int& s = slot[b.find(p)];
+    if (s < 0) {
+      s = static_cast<int>(out.components.size());
+      out.components.emplace_back();
+      out.components.back().halfspace = c.patches[p].halfspace;
+    }
+    Component& comp = out.components[s];
+    comp.patches.push_back(p);
+    comp.has_sample = comp.has_sample || !c.patches[p].samples.empty();
   }
+  // Ordered by halfspace, then smallest patch (the order above, kept by a stable sort).
+  std::stable_sort(out.components.begin(), out.components.end(),
+                   [](const Component& x, const Component& y) { return x.halfspace < y.halfspace; });
+  for (std::size_t k = 0; k < out.components.size(); ++k)
+    if (!out.components[k].has_sample) out.islands.push_back(static_cast<int>(k));
   return out;
+}
+
+bool is_sample_connected(const Problem& problem, const Labelling& labelling) {
+  const Complex& c = problem.complex();
+  BoundaryComponents& b = boundary_components(problem, labelling);
+  thread_local std::vector<char> sampled;  // per representative: its component holds a sample
+  sampled.assign(c.patches.size(), 0);
+  for (std::size_t p = 0; p < c.patches.size(); ++p)
+    if (b.on_b[p] && !c.patches[p].samples.empty()) sampled[b.find(static_cast<int>(p))] = 1;
+  for (std::size_t p = 0; p < c.patches.size(); ++p)
+    if (b.on_b[p] && !sampled[b.find(static_cast<int>(p))]) return false;
+  return true;
 }
 
 std::vector<std::vector<int>> removable_sets(const Problem& problem, const Labelling& labelling,

@@ -106,6 +106,15 @@ class Problem {
 
 /// Supports on the boundary of `labelling`, ascending.
 std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling);
+/// Calls f(g) for every support g on the boundary of `labelling`, ascending: boundary_supports without making the
+/// list (searches walk thousands of boundaries).
+template <class F>
+void for_each_boundary_support(const Problem& problem, const Labelling& labelling, F f) {
+  for (int g = 0; g < problem.support_count(); ++g) {
+    const SupportTerm& s = problem.supports()[g];
+    if (labelling[s.cell_a] != labelling[s.cell_b]) f(g);
+  }
+}
 /// True when every outer cell is 0 and every support on b has its inside cell labelled 1. When false and `why`
 /// is given, names the first offending cell or support.
 bool is_orientation_preserving(const Problem& problem, const Labelling& labelling, std::string* why = nullptr);
@@ -124,6 +133,8 @@ struct SampleConnectivity {
   bool sample_connected() const { return islands.empty(); }
 };
 SampleConnectivity sample_connectivity(const Problem& problem, const Labelling& labelling);
+/// sample_connectivity(problem, labelling).sample_connected(), without listing the components.
+bool is_sample_connected(const Problem& problem, const Labelling& labelling);
 
 /// Removable sets of b (Section 5.2) as sets of supports: each island, and each single support on b adjacent to
 /// an island (outside it). Deduplicated, in a deterministic order.

@@ -20,6 +20,7 @@
 #include <hsx/geometry/random_scene.hpp>
 #include <hsx/io/files.hpp>
 #include <hsx/io/input.hpp>
+#include <hsx/io/temporary_folder.hpp>
 #include <hsx/kernel/timing.hpp>
 #include "cli/commands.hpp"
 #include "cli/distribute.hpp"
@@ -1021,37 +1022,16 @@ std::vector<std::string> file_lines(const std::string& path) {
   return lines;
 }
 
-/// A private folder, removed with what is in it when this goes out of scope.
-class ScratchFolder {
- public:
-  ScratchFolder() {
-    const char* tmp = std::getenv("TMPDIR");
-    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/hsx-bench.XXXXXX";
-    if (!mkdtemp(pattern.data())) throw OutputError("cannot make a private folder " + pattern);
-    path_ = pattern;
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchFolder(const ScratchFolder&) = delete;
-  ScratchFolder& operator=(const ScratchFolder&) = delete;
-  std::string sub(const std::string& name) const { return path_ + "/" + name; }
-
- private:
-  std::string path_;
-};
-
 /// --campaign-mpi: the row's scenes run by two processes, timed (each run's folder made afresh, untimed):
 /// `hsx campaign --jobs 2` and `mpirun -np 2 hsx campaign --jobs 1`; both stages and, in `row.notes`, MPI's time
 /// over the threads' and whether both processes' records are `reference`'s bytes (the in-process run on one
 /// thread; not compared when a scene of it timed out).
 void time_campaign_processes(int halfspaces, const std::string& checks, const BenchOptions& o,
                              const RepeatOptions& repeat, const std::vector<std::string>& reference, BenchRow& row) {
-  const ScratchFolder scratch;
+  const TemporaryFolder scratch("hsx-bench");
   std::vector<std::string> records[2];
   for (bool mpi : {false, true}) {
-    const std::string out = scratch.sub(mpi ? "mpi" : "threads");
+    const std::string out = scratch.file(mpi ? "mpi" : "threads");
     const std::string command = campaign_process_command(halfspaces, checks, o, mpi ? 1 : 2, mpi, out);
     StageResult stage;
     stage.timing = time_repeatedly([&] { run_campaign_process(command); }, repeat,

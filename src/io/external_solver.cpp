@@ -1,6 +1,7 @@
 #include <hsx/io/external_solver.hpp>
 
 #include <hsx/io/files.hpp>
+#include <hsx/io/temporary_folder.hpp>
 #include <hsx/hsx.hpp>
 
 #include <chrono>
@@ -21,27 +22,6 @@ namespace hsx {
 namespace {
 
 constexpr std::size_t kTailBytes = 4096;
-
-/// A private folder, removed with everything in it when this goes out of scope.
-class PrivateFolder {
- public:
-  PrivateFolder() {
-    const char* tmp = std::getenv("TMPDIR");
-    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/hsx-run.XXXXXX";
-    if (!mkdtemp(pattern.data())) throw OutputError("cannot make a private folder " + pattern + " to run the solver in");
-    path_ = pattern;
-  }
-  ~PrivateFolder() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  PrivateFolder(const PrivateFolder&) = delete;
-  PrivateFolder& operator=(const PrivateFolder&) = delete;
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
 
 std::string shell_quoted(const std::string& s) {
   std::string out = "'";
@@ -114,9 +94,9 @@ void check_external_solver(const ExternalSolver& solver) {
 
 ExternalRun run_external_solver(const LoadedInput& in, const ExternalSolver& solver) {
   check_external_solver(solver);
-  const PrivateFolder folder;
-  const std::string input_path = folder.path() + "/input.json", output_path = folder.path() + "/output.json",
-                    log_path = folder.path() + "/log.txt";
+  const TemporaryFolder folder("hsx-run");
+  const std::string input_path = folder.file("input.json"), output_path = folder.file("output.json"),
+                    log_path = folder.file("log.txt");
   {
     std::ofstream f(input_path, std::ios::binary);
     f << input_text(in, solver);

@@ -1,9 +1,11 @@
 #include <hsx/io/files.hpp>
+#include <hsx/io/temporary_folder.hpp>
 
 #include <array>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
+#include <filesystem>
 #include <fcntl.h>
 #include <iostream>
 #include <limits.h>
@@ -325,6 +327,18 @@ std::string read_file(const std::string& path, std::size_t max_bytes) {
   }
   ::close(fd);
   return content;
+}
+
+TemporaryFolder::TemporaryFolder(const std::string& prefix) {
+  const char* tmp = std::getenv("TMPDIR");
+  std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/" + prefix + ".XXXXXX";
+  if (!mkdtemp(pattern.data())) throw OutputError("cannot make a private folder " + pattern + ": " + std::strerror(errno));
+  path_ = pattern;
+}
+
+TemporaryFolder::~TemporaryFolder() {
+  std::error_code ignored;
+  std::filesystem::remove_all(path_, ignored);
 }
 
 }  // namespace hsx

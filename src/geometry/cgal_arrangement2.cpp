@@ -502,6 +502,44 @@ class InteriorPoints {
 struct Arrangement2::Impl {
   CgalArrangement arr;  // its records carry their indices (see Dcel)
   std::unique_ptr<PointLocation> locator;
+  std::vector<Halfedge> halfedges;           // per edge index: its representative halfedge
+  std::vector<std::vector<int>> on_boundary;  // per halfspace: the edges (not on the box) that carry it
+
+  /// Exact point location (walking along a vertical line).
+  PointLocation2 locate(const CgalPoint& p) const {
+    const auto located = locator->locate(p);
+    if (const FaceHandle* f = boost::get<FaceHandle>(&located)) {
+      if ((*f)->is_unbounded()) return {PointLocation2::Outside, -1};
+      return {PointLocation2::Face, (*f)->data()};
+    }
+    if (const Halfedge* h = boost::get<Halfedge>(&located)) return {PointLocation2::Edge, (*h)->data()};
+    const VertexHandle* v = boost::get<VertexHandle>(&located);
+    return {PointLocation2::Vertex, (*v)->data()};
+  }
+
+  /// locate(p), trying `halfspace`'s edges first.
+  PointLocation2 locate_on_boundary(const CgalPoint& p, int halfspace) const {
+    if (const auto on_edges = locate_on_edges(p, halfspace)) return *on_edges;
+    return locate(p);
+  }
+
+  /// locate_on_boundary's answer when p lies on one of `halfspace`'s edges (its ends included), else nullopt.
+  std::optional<PointLocation2> locate_on_edges(const CgalPoint& p, int halfspace) const {
+    const Traits& traits = *arr.geometry_traits();
+    const auto equal = traits.equal_2_object();
+    const auto compare_x = traits.compare_x_2_object();
+    const auto compare_y_at_x = traits.compare_y_at_x_2_object();
+    for (int e : on_boundary[static_cast<std::size_t>(halfspace)]) {
+      const Halfedge h = halfedges[static_cast<std::size_t>(e)];
+      if (equal(p, h->source()->point())) return PointLocation2{PointLocation2::Vertex, h->source()->data()};
+      if (equal(p, h->target()->point())) return PointLocation2{PointLocation2::Vertex, h->target()->data()};
+      // Strictly between the ends' x (or at their common x, for a vertical segment) and on the curve there.
+      const auto left = compare_x(p, h->source()->point()), right = compare_x(p, h->target()->point());
+      if (left != CGAL::EQUAL && left == right) continue;
+      if (compare_y_at_x(p, h->curve()) == CGAL::EQUAL) return PointLocation2{PointLocation2::Edge, e};
+    }
+    return std::nullopt;
+  }
 };
 
 Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& limits) {
@@ -573,6 +611,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       const bool same_as_curve = halfedge_directed_right == cv.is_directed_right();
       edge.ccw = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == same_as_curve;
     }
+    impl->halfedges.push_back(h);
     pieces->edges.push_back(std::move(edge));
     interior_points.add_edge(cv);
   }
@@ -635,6 +674,10 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   }
 
   impl->locator = std::make_unique<PointLocation>(arr);
+  impl->on_boundary.resize(n_half);
+  for (std::size_t e = 0; e < pieces->edges.size(); ++e)
+    if (!pieces->edges[e].on_box)
+      for (int i : pieces->edges[e].halfspaces) impl->on_boundary[static_cast<std::size_t>(i)].push_back(static_cast<int>(e));
   out.impl_ = std::move(impl);
   out.edge_lengths_ = std::make_shared<const MeasureCache>(pieces->edges.size(), [pieces](std::size_t e) {
     const ArrEdge2& edge = pieces->edges[e];
@@ -667,23 +710,21 @@ std::vector<int> Arrangement2::place_samples(const Scene2& scene) const {
     const std::string who = "samples[" + std::to_string(s) + "] (on \"" +
                             scene.halfspaces.at(sample.halfspace).name + "\")";
     const CgalPoint p(to_coord(sample.location.x), to_coord(sample.location.y));
-    const auto located = impl_->locator->locate(p);
+    const PointLocation2 where = impl_->locate_on_boundary(p, sample.halfspace);
     auto carries = [&](int ei) {
       const ArrEdge2& e = pieces.edges[ei];
       return !e.on_box && std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), sample.halfspace);
     };
     int edge = -1;
-    if (const Halfedge* h = boost::get<Halfedge>(&located)) {
-      edge = (*h)->data();
+    if (where.kind == PointLocation2::Edge) {
+      edge = where.index;
       if (pieces.edges[edge].on_box)
         throw InputError(who + ": lies on the domain boundary " + sample.location.exact_string() +
                          "; move it inside the domain");
       if (!carries(edge)) throw std::logic_error(who + ": located on an edge of another boundary");
-    } else if (const VertexHandle* v = boost::get<VertexHandle>(&located)) {
+    } else if (where.kind == PointLocation2::Vertex) {
       // A degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is inside a patch.
-      std::vector<int> incident;
-      auto c = (*v)->incident_halfedges();
-      for (std::size_t k = 0; k < (*v)->degree(); ++k, ++c) incident.push_back(c->data());
+      const std::vector<int> incident = incident_edges(where.index);
       const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
                               pieces.edges[incident[0]].halfspaces == pieces.edges[incident[1]].halfspaces;
       if (!inside_run)
@@ -711,16 +752,26 @@ int Arrangement2::connected_components() const {
   return components_of(sets, vertices().size()).count;
 }
 
-PointLocation2 Arrangement2::locate(const PointQ2& p) const {
-  const CgalPoint q(CoordNT(p.x), CoordNT(p.y));
-  const auto located = impl_->locator->locate(q);
-  if (const FaceHandle* f = boost::get<FaceHandle>(&located)) {
-    if ((*f)->is_unbounded()) return {PointLocation2::Outside, -1};
-    return {PointLocation2::Face, (*f)->data()};
+std::vector<int> Arrangement2::incident_edges(int vertex) const {
+  const Pieces& pieces = *pieces_;
+  if (vertex < 0 || vertex >= static_cast<int>(pieces.vertices.size()))
+    throw std::invalid_argument("Arrangement2::incident_edges: no vertex " + std::to_string(vertex));
+  std::vector<int> incident;
+  for (std::size_t e = 0; e < pieces.edges.size(); ++e) {
+    if (pieces.edges[e].source == vertex) incident.push_back(static_cast<int>(e));
+    if (pieces.edges[e].target == vertex) incident.push_back(static_cast<int>(e));
   }
-  if (const Halfedge* h = boost::get<Halfedge>(&located)) return {PointLocation2::Edge, (*h)->data()};
-  const VertexHandle* v = boost::get<VertexHandle>(&located);
-  return {PointLocation2::Vertex, (*v)->data()};
+  return incident;
+}
+
+PointLocation2 Arrangement2::locate_on_boundary(const PointQ2& p, int halfspace) const {
+  if (halfspace < 0 || halfspace >= halfspace_count_)
+    throw std::invalid_argument("Arrangement2::locate_on_boundary: no halfspace " + std::to_string(halfspace));
+  return impl_->locate_on_boundary(CgalPoint(CoordNT(p.x), CoordNT(p.y)), halfspace);
+}
+
+PointLocation2 Arrangement2::locate(const PointQ2& p) const {
+  return impl_->locate(CgalPoint(CoordNT(p.x), CoordNT(p.y)));
 }
 
 }  // namespace hsx

@@ -525,15 +525,10 @@ bool sample_fits(const Arrangement2& arr, int halfspace, const PointQ2& p) {
     const ArrEdge2& edge = arr.edges()[static_cast<std::size_t>(e)];
     return !edge.on_box && std::binary_search(edge.halfspaces.begin(), edge.halfspaces.end(), halfspace);
   };
-  const PointLocation2 where = arr.locate(p);
+  const PointLocation2 where = arr.locate_on_boundary(p, halfspace);
   if (where.kind == PointLocation2::Edge) return carries(where.index);
   if (where.kind != PointLocation2::Vertex) return false;
-  std::vector<int> incident;
-  for (int e = 0; e < static_cast<int>(arr.edges().size()); ++e) {
-    const ArrEdge2& edge = arr.edges()[static_cast<std::size_t>(e)];
-    if (edge.source == where.index) incident.push_back(e);
-    if (edge.target == where.index) incident.push_back(e);
-  }
+  const std::vector<int> incident = arr.incident_edges(where.index);
   return incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
          arr.edges()[static_cast<std::size_t>(incident[0])].halfspaces ==
              arr.edges()[static_cast<std::size_t>(incident[1])].halfspaces;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,15 +41,6 @@ bool encloses_same(const Measure& a, const Measure& b) {
   const Interval d = a.enclose(256) - b.enclose(256);
   const double tol = 1e-30 * (1 + std::fabs(b.to_double()));
   return d.lo_double() > -tol && d.hi_double() < tol;
-}
-
-std::vector<int> incident_edges(const Arrangement2& arr, int v) {
-  std::vector<int> out;
-  for (int e = 0; e < static_cast<int>(arr.edges().size()); ++e) {
-    if (arr.edges()[e].source == v) out.push_back(e);
-    if (arr.edges()[e].target == v) out.push_back(e);
-  }
-  return out;
 }
 
 /// Index of the arrangement vertex at p, -1 when none.
@@ -96,6 +88,7 @@ void check_structure(const Scene2& scene, const Arrangement2& arr) {
     RC_ASSERT(arr.edge_lengths()->get(e).sign() == std::optional<int>(1));
   for (int v = 0; v < V; ++v) {
     RC_ASSERT(arr.vertices()[v].degree == degree[v]);
+    RC_ASSERT(static_cast<int>(arr.incident_edges(v).size()) == degree[v]);
     RC_ASSERT(degree[v] >= 2);
   }
   // Every edge side that is a face is walked exactly once, by that face, with the face on the left.
@@ -161,6 +154,12 @@ void check_location(const Scene2& scene, const Arrangement2& arr) {
   for (const PointQ2& p : points) {
     const PointLocation2 where = arr.locate(p);
     RC_ASSERT(where.kind != PointLocation2::Outside);
+    // The shortcut for points on a boundary gives the same answer for every halfspace, on its boundary or not.
+    for (int i = 0; i < static_cast<int>(scene.halfspaces.size()); ++i) {
+      const PointLocation2 on = arr.locate_on_boundary(p, i);
+      RC_ASSERT(on.kind == where.kind);
+      RC_ASSERT(on.index == where.index);
+    }
     switch (where.kind) {
       case PointLocation2::Face: {
         const ArrFace2& face = arr.faces().at(where.index);
@@ -183,7 +182,7 @@ void check_location(const Scene2& scene, const Arrangement2& arr) {
         RC_ASSERT(v.point.x == OneRoot(p.x));
         RC_ASSERT(v.point.y == OneRoot(p.y));
         // Every halfspace carried by an incident edge has p on its boundary.
-        for (int e : incident_edges(arr, where.index))
+        for (int e : arr.incident_edges(where.index))
           for (int i : arr.edges()[e].halfspaces) RC_ASSERT(scene.halfspaces[i].side(p) == 0);
         break;
       }
@@ -285,10 +284,24 @@ TEST_CASE("arrangement2: three concurrent lines meet at one vertex of degree 6",
   int interior_vertices = 0;
   for (int v = 0; v < static_cast<int>(arr.vertices().size()); ++v) {
     bool on_box = false;
-    for (int e : incident_edges(arr, v)) on_box |= arr.edges()[e].on_box;
+    for (int e : arr.incident_edges(v)) on_box |= arr.edges()[e].on_box;
     if (!on_box) ++interior_vertices;
   }
   CHECK(interior_vertices == 1);
+  // Located on the boundary of one line: the origin from each, a point of X's line (y = 0) from X and from D.
+  for (int i = 0; i < 3; ++i) {
+    CHECK(arr.locate_on_boundary(pt(0, 0), i).kind == PointLocation2::Vertex);
+    CHECK(arr.locate_on_boundary(pt(0, 0), i).index == o.index);
+  }
+  const PointLocation2 on_x = arr.locate(pt(1, 0));
+  REQUIRE(on_x.kind == PointLocation2::Edge);
+  for (int i : {0, 2}) {
+    CHECK(arr.locate_on_boundary(pt(1, 0), i).kind == PointLocation2::Edge);
+    CHECK(arr.locate_on_boundary(pt(1, 0), i).index == on_x.index);
+  }
+  CHECK_THROWS_AS(arr.locate_on_boundary(pt(1, 0), 3), std::invalid_argument);
+  CHECK_THROWS_AS(arr.locate_on_boundary(pt(1, 0), -1), std::invalid_argument);
+  CHECK_THROWS_AS(arr.incident_edges(11), std::invalid_argument);
   // The six sectors have areas adding up to 25.
   Measure total;
   for (std::size_t f = 0; f < arr.faces().size(); ++f) total += arr.face_areas()->get(f);

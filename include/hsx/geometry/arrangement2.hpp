@@ -114,6 +114,13 @@ class Arrangement2 {
 
   /// Exact point location of a rational point.
   PointLocation2 locate(const PointQ2& p) const;
+  /// The same answer as locate(p), found faster when p lies on the boundary of halfspace `halfspace` (an index
+  /// into the scene's halfspaces; std::invalid_argument when out of range): only the edges carrying it and their
+  /// ends are tested, and locate(p) is asked when p is on none of them.
+  PointLocation2 locate_on_boundary(const PointQ2& p, int halfspace) const;
+  /// The edges that end at vertex `vertex` (an index into vertices(); std::invalid_argument when out of range), in
+  /// increasing order, an edge twice when both its ends are there.
+  std::vector<int> incident_edges(int vertex) const;
 
  private:
   struct Impl;

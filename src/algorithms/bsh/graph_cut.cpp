@@ -183,6 +183,7 @@ struct Arc {
   long samples = 0;
   int atoms_begin = 0, atoms_end = 0;  ///< its supports in Network::atoms, ascending (each counted once)
   DoubleBounds measure;                ///< certified enclosure of the sum of their measures
+  double estimate = 0;                 ///< finite arcs: the double flow's capacity (see double_capacity)
 };
 
 /// The network: vertices 0..cells-1 (the cells), s = cells, t = cells + 1; arcs in a fixed order (for each cell
@@ -192,6 +193,13 @@ struct Network {
   std::vector<Arc> arcs;
   std::vector<int> atoms;
 };
+
+/// Samples weigh more than the measure of every support together (a finite cut's measure is at most that).
+double lambda_of(const Problem& problem) {
+  double total = 0;
+  for (const auto& bounds : problem.support_enclosures()) total += bounds.second;
+  return 2 * total + 1;
+}
 
 /// The parts of a problem's network that no constraint changes, made once per problem and thread: the unary
 /// arcs' samples and outer cells, and the binary arcs, where every support g between cells a and b is an entry of
@@ -207,14 +215,16 @@ struct FixedArcs {
     int begin = 0, end = 0;  ///< its entries
     bool disallowed = false;  ///< some entry is not allowed: the arc is infinite under any constraints
     DoubleBounds measure;
+    double estimate = 0;      ///< the midpoints of its supports' enclosures, summed in entry order
   };
   std::vector<long> source_samples, sink_samples;  ///< per cell: h_c(0), h_c(1) finite parts
   std::vector<char> outer;                         ///< per cell: an outer cell (its arc to t is infinite)
   std::vector<Entry> entries;                      ///< by (from, to, support)
   std::vector<Group> arcs;
+  double lambda = 1;  ///< the double flow's weight of a sample (lambda_of)
 
   FixedArcs() = default;
-  explicit FixedArcs(const Problem& problem) {
+  explicit FixedArcs(const Problem& problem) : lambda(lambda_of(problem)) {
     add_unary(problem);
     add_binary(problem);
   }
@@ -251,6 +261,7 @@ struct FixedArcs {
       for (; i < entries.size() && entries[i].from == group.from && entries[i].to == group.to; ++i) {
         const auto& [lo, hi] = problem.support_enclosures()[entries[i].support];
         group.measure = batch.add(group.measure, DoubleBounds{lo, hi});
+        group.estimate += lo + (hi - lo) / 2;
         group.disallowed = group.disallowed || !entries[i].allowed;
       }
       group.end = static_cast<int>(i);
@@ -270,13 +281,14 @@ void build_network(const Problem& problem, const CutConstraints& constraints, Ne
   net.t = n + 1;
   net.arcs.clear();
   net.atoms.clear();
-  const auto add_unary = [&net](int from, int to, bool infinite, long samples) {
+  const auto add_unary = [&net, &fixed](int from, int to, bool infinite, long samples) {
     if (!infinite && samples == 0) return;
     Arc a;
     a.from = from;
     a.to = to;
     a.infinite = infinite;
     a.samples = infinite ? 0 : samples;
+    a.estimate = static_cast<double>(a.samples) * fixed.lambda;
     net.arcs.push_back(a);
   };
   for (int k = 0; k < n; ++k) {
@@ -299,6 +311,7 @@ void build_network(const Problem& problem, const CutConstraints& constraints, Ne
     if (!a.infinite) {
       for (int k = group.begin; k < group.end; ++k) net.atoms.push_back(fixed.entries[k].support);
       a.measure = group.measure;
+      a.estimate = group.estimate;
     }
     a.atoms_end = static_cast<int>(net.atoms.size());
     net.arcs.push_back(a);
@@ -353,21 +366,10 @@ bool infeasible(const Network& net) {
 // is checked exactly.
 
 
-/// Samples weigh more than the measure of every support together (a finite cut's measure is at most that).
-double lambda_of(const Problem& problem) {
-  double total = 0;
-  for (const auto& bounds : problem.support_enclosures()) total += bounds.second;
-  return 2 * total + 1;
-}
-
-double double_capacity(const Problem& problem, const Network& net, const Arc& a, double lambda) {
-  if (a.infinite) return std::numeric_limits<double>::infinity();
-  double value = static_cast<double>(a.samples) * lambda;
-  for (int k = a.atoms_begin; k < a.atoms_end; ++k) {
-    const auto& [lo, hi] = problem.support_enclosures()[net.atoms[k]];
-    value += lo + (hi - lo) / 2;
-  }
-  return value;
+/// An arc's capacity in the double flow: its samples times lambda_of(problem), plus the midpoints of its supports'
+/// enclosures (summed once per problem, FixedArcs; an arc has samples or supports, never both).
+double double_capacity(const Arc& a) {
+  return a.infinite ? std::numeric_limits<double>::infinity() : a.estimate;
 }
 
 /// A maximum flow of the rounded capacities, per arc of the network (by index).
@@ -472,8 +474,7 @@ class DoubleNetwork {
 
 /// Fills `out` (its storage reused) with a maximum flow of `net`'s rounded capacities, on `network`'s graph (kept
 /// per thread by the caller, rebuilt only when the arcs' ends change).
-void double_flow(const Problem& problem, const Network& net, DoubleNetwork& network, DoubleFlow& out) {
-  const double lambda = lambda_of(problem);
+void double_flow(const Network& net, DoubleNetwork& network, DoubleFlow& out) {
   const auto n = static_cast<std::size_t>(net.cells + 2);
   // Boykov-Kolmogorov's vertex maps, reset as Boost's own overload makes them (zeros) but kept per thread.
   thread_local std::vector<boost::default_color_type> color;
@@ -482,7 +483,7 @@ void double_flow(const Problem& problem, const Network& net, DoubleNetwork& netw
   DoubleGraph& g = network.graph_for(net);
   out.capacity.clear();
   for (std::size_t i = 0; i < net.arcs.size(); ++i) {
-    const double capacity = double_capacity(problem, net, net.arcs[i], lambda);
+    const double capacity = double_capacity(net.arcs[i]);
     g[network.edge(2 * i)].capacity = capacity;
     out.capacity.push_back(capacity);
   }
@@ -1130,7 +1131,7 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
   }
   if (stop && stop()) return stopped_result(n);
   if (!constraints.warm_start) return exact_max_flow_cut(problem, net, nullptr, stop);
-  double_flow(problem, net, network, doubles);
+  double_flow(net, network, doubles);
   warm.assign(doubles.flow.begin(), doubles.flow.end());
   if (auto certified = BasicFlow(problem, net, network, doubles).certify()) return *std::move(certified);
   return exact_max_flow_cut(problem, net, &warm, stop);

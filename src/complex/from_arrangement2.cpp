@@ -155,4 +155,10 @@ Arranged2 arrange(const Scene2& scene, const ArrangementLimits& limits) {
   return out;
 }
 
+Arranged2 arrange(const Scene2& scene, const Arrangement2& arrangement) {
+  Arranged2 out{arrangement.with_samples(scene), {}};
+  out.complex = complex_from_arrangement(scene, out.arrangement);
+  return out;
+}
+
 }  // namespace hsx

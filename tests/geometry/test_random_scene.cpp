@@ -2,7 +2,9 @@
 // runs and seeds, settings respected, and every forced degeneracy present, each checked exactly on the scene's
 // data by an oracle written here (not by trusting the generator's own list), both through the library and through
 // the rapidcheck adapter the property tests use (tests/support/random_scenes.hpp).
+#include <hsx/complex/from_arrangement2.hpp>
 #include <hsx/geometry/random_scene.hpp>
+#include <hsx/io/complex_json.hpp>
 #include <hsx/io/scene_json.hpp>
 #include <hsx/kernel/random.hpp>
 #include "support/random_scenes.hpp"
@@ -315,6 +317,11 @@ TEST_CASE("random_scene: its arrangement, with the samples placed, is the scene'
       CHECK(placed.faces()[f].interior == fresh.faces()[f].interior);
       CHECK(placed.faces()[f].inside == fresh.faces()[f].inside);
     }
+    // arrange(scene, arrangement): the complex, with its geometry, written as arrange(scene) writes it.
+    const Arranged2 on = arrange(r.scene, *r.arrangement);
+    const Arranged2 direct = arrange(r.scene);
+    CHECK(complex_json_text(on.complex, &on.arrangement, &r.scene.domain) ==
+          complex_json_text(direct.complex, &direct.arrangement, &r.scene.domain));
     samples += static_cast<int>(r.scene.samples.size());
   }
   CHECK(samples > 40);  // the scenes have samples to place
@@ -333,6 +340,7 @@ TEST_CASE("Arrangement2::with_samples: another scene's samples are refused", "[r
   Scene2 moved = r.scene;
   moved.domain.max.x += 1;
   CHECK_THROWS_AS(r.arrangement->with_samples(moved), std::invalid_argument);
+  CHECK_THROWS_AS(arrange(moved, *r.arrangement), std::invalid_argument);
   Scene2 off = r.scene;  // a sample off its boundary: refused as build() refuses it
   off.samples.push_back(Sample2{});
   off.samples.back().halfspace = 0;

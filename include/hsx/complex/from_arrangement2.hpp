@@ -23,4 +23,10 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arrang
 /// arrangement larger than `limits` (Arrangement2::build).
 Arranged2 arrange(const Scene2& scene, const ArrangementLimits& limits = {});
 
+/// `scene` arranged on `arrangement`, an arrangement of the same halfspaces and domain (built from this scene or
+/// from another with other samples): Arrangement2::with_samples places the samples, then the complex is built. The
+/// same result as arrange(scene) (proofs/arrangement2.md, claim 4) without a second sweep. Throws InputError for
+/// samples on junctions, std::invalid_argument when the halfspace count or the domain differ.
+Arranged2 arrange(const Scene2& scene, const Arrangement2& arrangement);
+
 }  // namespace hsx

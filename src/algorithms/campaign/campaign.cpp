@@ -383,7 +383,7 @@ Generated generate_intended(const CampaignSettings& s, std::uint64_t index) {
   Scene2 sampled = bsh::scene_with_samples(g.generated.scene, bare, patches, g.generated.scene.description);
   validate_and_resolve(sampled);
   g.generated.scene = std::move(sampled);
-  g.arranged = arrange(g.generated.scene, s.limits);
+  g.arranged = arrange(g.generated.scene, bare.arrangement);  // the samples placed on the same arrangement
   g.intended = carry_solid_over(bare.arrangement, solid, g.arranged->arrangement);
   return g;
 }
@@ -714,9 +714,7 @@ bool admits_defaults(const ArrangementLimits& limits) {
 std::optional<Arranged2> generated_arrangement(const CampaignSettings& s, const RandomScene& generated) {
   if (!generated.arrangement || !admits_defaults(s.limits)) return std::nullopt;
   try {
-    Arranged2 out{generated.arrangement->with_samples(generated.scene), {}};
-    out.complex = complex_from_arrangement(generated.scene, out.arrangement);
-    return out;
+    return arrange(generated.scene, *generated.arrangement);
   } catch (const std::exception&) {
     return std::nullopt;
   }

@@ -503,6 +503,7 @@ struct Arrangement2::Impl {
   CgalArrangement arr;  // its records carry their indices (see Dcel)
   std::unique_ptr<PointLocation> locator;
   std::vector<Halfedge> halfedges;           // per edge index: its representative halfedge
+  std::vector<VertexHandle> vertices;        // per vertex index: its record
   std::vector<std::vector<int>> on_boundary;  // per halfspace: the edges (not on the box) that carry it
 
   /// Exact point location (walking along a vertical line).
@@ -562,6 +563,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   InteriorPoints interior_points(pieces->vertices, pieces->edges);
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
     v->set_data(static_cast<int>(pieces->vertices.size()));
+    impl->vertices.push_back(v);
     pieces->vertices.push_back({to_point(v->point()), static_cast<int>(v->degree())});
     interior_points.add_vertex(v->point());
   }
@@ -711,27 +713,16 @@ std::vector<int> Arrangement2::place_samples(const Scene2& scene) const {
                             scene.halfspaces.at(sample.halfspace).name + "\")";
     const CgalPoint p(to_coord(sample.location.x), to_coord(sample.location.y));
     const PointLocation2 where = impl_->locate_on_boundary(p, sample.halfspace);
-    auto carries = [&](int ei) {
-      const ArrEdge2& e = pieces.edges[ei];
-      return !e.on_box && std::binary_search(e.halfspaces.begin(), e.halfspaces.end(), sample.halfspace);
-    };
-    int edge = -1;
-    if (where.kind == PointLocation2::Edge) {
-      edge = where.index;
-      if (pieces.edges[edge].on_box)
+    const int edge = holding_edge(where, sample.halfspace);
+    if (edge < 0) {
+      if (where.kind == PointLocation2::Edge && pieces.edges[where.index].on_box)
         throw InputError(who + ": lies on the domain boundary " + sample.location.exact_string() +
                          "; move it inside the domain");
-      if (!carries(edge)) throw std::logic_error(who + ": located on an edge of another boundary");
-    } else if (where.kind == PointLocation2::Vertex) {
-      // A degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is inside a patch.
-      const std::vector<int> incident = incident_edges(where.index);
-      const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
-                              pieces.edges[incident[0]].halfspaces == pieces.edges[incident[1]].halfspaces;
-      if (!inside_run)
+      if (where.kind == PointLocation2::Edge)
+        throw std::logic_error(who + ": located on an edge of another boundary");
+      if (where.kind == PointLocation2::Vertex)
         throw InputError(who + ": lies on an arrangement vertex " + sample.location.exact_string() +
                          " where boundaries meet; a sample must lie inside a patch");
-      edge = std::min(incident[0], incident[1]);
-    } else {
       throw InputError(who + ": " + sample.location.exact_string() + " is not on the boundary inside the domain");
     }
     sample_edges.push_back(edge);
@@ -753,15 +744,40 @@ int Arrangement2::connected_components() const {
 }
 
 std::vector<int> Arrangement2::incident_edges(int vertex) const {
-  const Pieces& pieces = *pieces_;
-  if (vertex < 0 || vertex >= static_cast<int>(pieces.vertices.size()))
+  if (vertex < 0 || vertex >= static_cast<int>(impl_->vertices.size()))
     throw std::invalid_argument("Arrangement2::incident_edges: no vertex " + std::to_string(vertex));
+  const VertexHandle v = impl_->vertices[static_cast<std::size_t>(vertex)];
   std::vector<int> incident;
-  for (std::size_t e = 0; e < pieces.edges.size(); ++e) {
-    if (pieces.edges[e].source == vertex) incident.push_back(static_cast<int>(e));
-    if (pieces.edges[e].target == vertex) incident.push_back(static_cast<int>(e));
-  }
+  incident.reserve(v->degree());
+  if (v->is_isolated()) return incident;
+  auto h = v->incident_halfedges();  // the halfedges whose target is v: one per edge end at v
+  const auto first = h;
+  do incident.push_back((*h).data());
+  while (++h != first);
+  std::sort(incident.begin(), incident.end());
   return incident;
+}
+
+int Arrangement2::holding_edge(const PointLocation2& where, int halfspace) const {
+  if (halfspace < 0 || halfspace >= halfspace_count_)
+    throw std::invalid_argument("Arrangement2::holding_edge: no halfspace " + std::to_string(halfspace));
+  const Pieces& pieces = *pieces_;
+  auto carries = [&](int e) {
+    const ArrEdge2& edge = pieces.edges[static_cast<std::size_t>(e)];
+    return !edge.on_box && std::binary_search(edge.halfspaces.begin(), edge.halfspaces.end(), halfspace);
+  };
+  if (where.kind == PointLocation2::Edge) {
+    if (where.index < 0 || where.index >= static_cast<int>(pieces.edges.size()))
+      throw std::invalid_argument("Arrangement2::holding_edge: no edge " + std::to_string(where.index));
+    return carries(where.index) ? where.index : -1;
+  }
+  if (where.kind != PointLocation2::Vertex) return -1;
+  // A degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is inside a patch.
+  const std::vector<int> incident = incident_edges(where.index);
+  const bool inside_run = incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
+                          pieces.edges[static_cast<std::size_t>(incident[0])].halfspaces ==
+                              pieces.edges[static_cast<std::size_t>(incident[1])].halfspaces;
+  return inside_run ? incident[0] : -1;
 }
 
 PointLocation2 Arrangement2::locate_on_boundary(const PointQ2& p, int halfspace) const {

@@ -521,17 +521,7 @@ std::vector<PointQ2> rational_boundary_points(const Halfspace2& h, const Box2& b
 }
 
 bool sample_fits(const Arrangement2& arr, int halfspace, const PointQ2& p) {
-  auto carries = [&](int e) {
-    const ArrEdge2& edge = arr.edges()[static_cast<std::size_t>(e)];
-    return !edge.on_box && std::binary_search(edge.halfspaces.begin(), edge.halfspaces.end(), halfspace);
-  };
-  const PointLocation2 where = arr.locate_on_boundary(p, halfspace);
-  if (where.kind == PointLocation2::Edge) return carries(where.index);
-  if (where.kind != PointLocation2::Vertex) return false;
-  const std::vector<int> incident = arr.incident_edges(where.index);
-  return incident.size() == 2 && carries(incident[0]) && carries(incident[1]) &&
-         arr.edges()[static_cast<std::size_t>(incident[0])].halfspaces ==
-             arr.edges()[static_cast<std::size_t>(incident[1])].halfspaces;
+  return arr.holding_edge(arr.locate_on_boundary(p, halfspace), halfspace) >= 0;
 }
 
 }  // namespace hsx

@@ -86,9 +86,14 @@ void check_structure(const Scene2& scene, const Arrangement2& arr) {
   }
   for (std::size_t e = 0; e < arr.edges().size(); ++e)
     RC_ASSERT(arr.edge_lengths()->get(e).sign() == std::optional<int>(1));
+  std::vector<std::vector<int>> ends(V);  // a scan of every edge: the incident edges, ascending
+  for (int e = 0; e < E; ++e) {
+    ends[arr.edges()[e].source].push_back(e);
+    ends[arr.edges()[e].target].push_back(e);
+  }
   for (int v = 0; v < V; ++v) {
     RC_ASSERT(arr.vertices()[v].degree == degree[v]);
-    RC_ASSERT(static_cast<int>(arr.incident_edges(v).size()) == degree[v]);
+    RC_ASSERT(arr.incident_edges(v) == ends[v]);
     RC_ASSERT(degree[v] >= 2);
   }
   // Every edge side that is a face is walked exactly once, by that face, with the face on the left.
@@ -159,6 +164,18 @@ void check_location(const Scene2& scene, const Arrangement2& arr) {
       const PointLocation2 on = arr.locate_on_boundary(p, i);
       RC_ASSERT(on.kind == where.kind);
       RC_ASSERT(on.index == where.index);
+      // The holding edge: where's edge when it carries i; at a vertex, one of exactly two edges carrying the same
+      // halfspaces, i among them; -1 in a face.
+      const int held = arr.holding_edge(on, i);
+      if (where.kind == PointLocation2::Face) RC_ASSERT(held == -1);
+      if (where.kind == PointLocation2::Edge) RC_ASSERT(held == (carries(arr.edges()[where.index], i) ? where.index : -1));
+      if (where.kind == PointLocation2::Vertex && held >= 0) {
+        const std::vector<int> two = arr.incident_edges(where.index);
+        RC_ASSERT(two.size() == 2u);
+        RC_ASSERT(held == two[0]);
+        RC_ASSERT(carries(arr.edges()[two[0]], i));
+        RC_ASSERT(arr.edges()[two[0]].halfspaces == arr.edges()[two[1]].halfspaces);
+      }
     }
     switch (where.kind) {
       case PointLocation2::Face: {
@@ -302,6 +319,14 @@ TEST_CASE("arrangement2: three concurrent lines meet at one vertex of degree 6",
   CHECK_THROWS_AS(arr.locate_on_boundary(pt(1, 0), 3), std::invalid_argument);
   CHECK_THROWS_AS(arr.locate_on_boundary(pt(1, 0), -1), std::invalid_argument);
   CHECK_THROWS_AS(arr.incident_edges(11), std::invalid_argument);
+  // No edge holds the origin (six edges meet there); an edge of X holds (1, 0) for X, none for Y or D.
+  for (int i = 0; i < 3; ++i) CHECK(arr.holding_edge(o, i) == -1);
+  CHECK(arr.holding_edge(on_x, 0) == on_x.index);
+  CHECK(arr.holding_edge(on_x, 1) == -1);
+  CHECK(arr.holding_edge(on_x, 2) == -1);
+  CHECK_THROWS_AS(arr.holding_edge(on_x, 3), std::invalid_argument);
+  CHECK_THROWS_AS(arr.holding_edge(PointLocation2{PointLocation2::Edge, 16}, 0), std::invalid_argument);
+  CHECK_THROWS_AS(arr.holding_edge(PointLocation2{PointLocation2::Vertex, -1}, 0), std::invalid_argument);
   // The six sectors have areas adding up to 25.
   Measure total;
   for (std::size_t f = 0; f < arr.faces().size(); ++f) total += arr.face_areas()->get(f);
@@ -402,6 +427,16 @@ TEST_CASE("arrangement2: samples on degree-2 vertices are accepted", "[arrangeme
   CHECK(carries(arr.edges()[arr.sample_edges()[0]], 0));
   CHECK(carries(arr.edges()[arr.sample_edges()[1]], 1));
   CHECK(sample_fits(arr, 0, pt(2, 2)));
+  // The corner's holding edge is the lower-indexed of its two edges, for P only.
+  const PointLocation2 corner = arr.locate(pt(2, 2));
+  REQUIRE(corner.kind == PointLocation2::Vertex);
+  const std::vector<int> two = arr.incident_edges(corner.index);
+  REQUIRE(two.size() == 2);
+  CHECK(two[0] < two[1]);
+  CHECK(arr.holding_edge(corner, 0) == two[0]);
+  CHECK(arr.sample_edges()[0] == two[0]);
+  CHECK(arr.holding_edge(corner, 1) == -1);
+  CHECK_FALSE(sample_fits(arr, 1, pt(2, 2)));
 }
 
 TEST_CASE("arrangement2: samples where boundaries meet are input errors", "[arrangement2]") {

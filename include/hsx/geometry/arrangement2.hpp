@@ -121,6 +121,14 @@ class Arrangement2 {
   /// The edges that end at vertex `vertex` (an index into vertices(); std::invalid_argument when out of range), in
   /// increasing order, an edge twice when both its ends are there.
   std::vector<int> incident_edges(int vertex) const;
+  /// The edge that holds a point of halfspace `halfspace`'s boundary (an index into the scene's halfspaces;
+  /// std::invalid_argument when out of range) located at `where` (locate() or locate_on_boundary()'s answer for
+  /// it), as sample_edges() gives it: `where`'s edge when that edge carries the halfspace and is not on the domain
+  /// box; at a degree-2 vertex whose two edges carry the same halfspaces, `halfspace` among them (a point inside
+  /// one curve run: a polygon corner, a circle's x-extreme point), the lower-indexed of the two; else -1 (the point
+  /// is not inside a patch of the halfspace's boundary). std::invalid_argument when `where` names no edge or vertex
+  /// of this arrangement.
+  int holding_edge(const PointLocation2& where, int halfspace) const;
 
  private:
   struct Impl;

@@ -87,16 +87,45 @@ std::optional<std::pair<PointQ2, PointQ2>> clip_line_to_box(const PointQ2& n, co
   return std::make_pair(*lo, *hi);
 }
 
+/// A one-root number's first enclosure in rational_strictly_between: its value twice when rational, else the ends
+/// of its 64-bit MPFR enclosure as rationals.
+struct FirstEnclosure {
+  Rational lo, hi;
+};
+constexpr mpfr_prec_t kFirstBits = 64;
+
+FirstEnclosure first_enclosure(const OneRoot& v) {
+  if (v.is_rational()) return {v.a0, v.a0};
+  const Interval e = v.enclose(kFirstBits);
+  FirstEnclosure out;
+  mpfr_get_q(out.lo.get_mpq_t(), e.lo());
+  mpfr_get_q(out.hi.get_mpq_t(), e.hi());
+  return out;
+}
+
 /// The simplest rational (smallest denominator) strictly between two one-root numbers lo < hi, as far as their
 /// certified enclosures show it: rational ends are used as they are, irrational ones through the upper end of
 /// lo's enclosure and the lower end of hi's, refined until those separate. Short witnesses, still exact.
-Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi) {
+/// `lo_first`, `hi_first`: first_enclosure(lo) and first_enclosure(hi) when the caller keeps them (a vertex's x
+/// serves several faces), else computed here; the answer is the same.
+Rational rational_strictly_between(const OneRoot& lo, const OneRoot& hi, const FirstEnclosure* lo_first = nullptr,
+                                   const FirstEnclosure* hi_first = nullptr) {
   auto to_q = [](const mpfr_t x) {
     Rational q;
     mpfr_get_q(q.get_mpq_t(), x);
     return q;
   };
-  for (mpfr_prec_t bits = 64;; bits *= 2) {  // rational ends are never enclosed (no MPFR for them)
+  {
+    Rational lo_own, hi_own;  // the ends computed here (the given ones and rational values are not copied)
+    const Rational& above_lo = lo_first            ? lo_first->hi
+                               : lo.is_rational() ? lo.a0
+                                                  : (lo_own = to_q(lo.enclose(kFirstBits).hi()));
+    const Rational& below_hi = hi_first            ? hi_first->lo
+                               : hi.is_rational() ? hi.a0
+                                                  : (hi_own = to_q(hi.enclose(kFirstBits).lo()));
+    if (above_lo < below_hi) return simplest_rational_in(above_lo, below_hi);
+  }
+  for (mpfr_prec_t bits = 2 * kFirstBits;; bits *= 2) {  // rational ends are never enclosed (no MPFR for them)
     const Rational above_lo = lo.is_rational() ? lo.a0 : to_q(lo.enclose(bits).hi());
     const Rational below_hi = hi.is_rational() ? hi.a0 : to_q(hi.enclose(bits).lo());
     if (above_lo < below_hi) return simplest_rational_in(above_lo, below_hi);
@@ -423,7 +452,7 @@ class InteriorPoints {
       const int v = h->target()->data();
       if (compare_x(v, left) > 0 && compare_x(v, next) < 0) next = v;
     }
-    const Rational x0 = rational_strictly_between(x_of(left), x_of(next));
+    const Rational x0 = rational_strictly_between(x_of(left), x_of(next), &first_x(left), &first_x(next));
     const Enclosure x0_approx = to_interval_nt(x0);
     const OneRoot x0_exact(x0);
     auto compare_to_x0 = [&](int v) {
@@ -460,6 +489,13 @@ class InteriorPoints {
     return (h->direction() == CGAL::ARR_LEFT_TO_RIGHT ? h->target() : h->source())->data();
   }
   const OneRoot& x_of(int v) const { return vertices_[static_cast<std::size_t>(v)].point.x; }
+  /// first_enclosure(x_of(v)), computed on its first use (most vertices serve two or more faces).
+  const FirstEnclosure& first_x(int v) const {
+    if (first_x_.size() < vertices_.size()) first_x_.resize(vertices_.size());
+    std::optional<FirstEnclosure>& e = first_x_[static_cast<std::size_t>(v)];
+    if (!e) e = first_enclosure(x_of(v));
+    return *e;
+  }
 
   /// Exact comparison of vertices u and w by x.
   int compare_x(int u, int w) const {
@@ -495,6 +531,7 @@ class InteriorPoints {
   const std::vector<ArrEdge2>& edges_;
   std::vector<Enclosure> x_;              // per vertex: its x
   std::vector<CurveEnclosure> curves_;    // per edge
+  mutable std::vector<std::optional<FirstEnclosure>> first_x_;  // per vertex: see first_x
 };
 
 }  // namespace

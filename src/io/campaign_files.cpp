@@ -783,7 +783,7 @@ campaign::Summary merge_campaigns(const std::string& out, const std::vector<std:
       if (!fs::is_directory(to, ec) && !fs::create_directory(to, ec) && ec)
         throw OutputError(to.string() + ": cannot make the folder: " + ec.message());
       const std::string name = "scene-" + std::to_string(r.index);
-      for (const std::string file : {name + ".json", name + ".min.json"})
+      for (const std::string& file : {name + ".json", name + ".min.json"})
         if (fs::is_regular_file(from / file, ec)) write_file_atomically((to / file).string(), read_file((from / file).string()));
     }
     folder.append_line(line);

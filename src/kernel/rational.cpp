@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <vector>
 
@@ -222,7 +223,68 @@ namespace {
 /// continued-fraction step preserves simplicity (proofs/measures.md, Claim 1.4). Iterative, on the ends'
 /// numerators and denominators in place (lo = a/b, hi = c/d, b and d > 0; no reduction is needed, floors and
 /// comparisons do not depend on it): the partial quotients are collected and folded back at the end.
+Rational simplest_nonnegative_big(const Rational& lo, const std::optional<Rational>& hi);
+
+/// Ends of at most kSmallBits bits take simplest_small: the same steps in 128-bit integers, where no value of the
+/// descent exceeds the ends (see there).
+constexpr std::size_t kSmallBits = 120;
+using Small = unsigned __int128;
+
+bool small_enough(const Integer& v) { return mpz_sizeinbase(v.get_mpz_t(), 2) <= kSmallBits; }
+
+Small to_small(const Integer& v) {  // 0 <= v < 2^kSmallBits
+  static_assert(sizeof(mp_limb_t) == 8, "64-bit GMP limbs");
+  return (static_cast<Small>(mpz_getlimbn(v.get_mpz_t(), 1)) << 64) | mpz_getlimbn(v.get_mpz_t(), 0);
+}
+
+Integer from_small(Small v) {
+  Integer out(static_cast<unsigned long>(v >> 64));
+  out <<= 64;
+  out += static_cast<unsigned long>(static_cast<std::uint64_t>(v));
+  return out;
+}
+
+/// simplest_nonnegative's descent in 128-bit integers, for ends a/b (and c/d when bounded) of at most kSmallBits
+/// bits. Nothing overflows: "f d < c" is asked as "f <= (c - 1) / d"; the ends' numerators and denominators only
+/// shrink (each step leaves remainders of the previous ones); the folded convergents p/r of the answer are at most
+/// its numerator and denominator, which are at most a + c and b + d: the mediant (a + c)/(b + d) lies strictly
+/// inside, and the answer, a Stern-Brocot ancestor of every fraction inside, has numerator and denominator at most
+/// theirs (unbounded: the answer is an integer f <= a / b + 1). The descent takes at most about 1.44 * 2 * kSmallBits steps (the ends
+/// shrink like Fibonacci numbers): fewer than kSteps.
+Rational simplest_small(Small a, Small b, Small c, Small d, bool bounded) {
+  constexpr int kSteps = 400;
+  Small quotients[kSteps];
+  int count = 0;
+  while (true) {
+    const Small f = a / b + 1;  // the smallest integer above lo
+    if (!bounded || f <= (c - 1) / d) {
+      Small p = f, r = 1;
+      for (int k = count - 1; k >= 0; --k) {
+        r += quotients[k] * p;
+        std::swap(p, r);
+      }
+      return make_rational(from_small(p), from_small(r));
+    }
+    const Small q = f - 1;  // floor(lo)
+    c -= q * d;  // c - q d > 0
+    a -= q * b;  // a - q b >= 0
+    if (count == kSteps) throw std::logic_error("simplest_rational_in: more continued-fraction steps than possible");
+    quotients[count++] = q;
+    bounded = a != 0;
+    std::swap(a, d);
+    std::swap(b, c);
+  }
+}
+
 Rational simplest_nonnegative(const Rational& lo, const std::optional<Rational>& hi) {
+  if (small_enough(lo.get_num()) && small_enough(lo.get_den()) &&
+      (!hi || (small_enough(hi->get_num()) && small_enough(hi->get_den()))))
+    return simplest_small(to_small(lo.get_num()), to_small(lo.get_den()), hi ? to_small(hi->get_num()) : 0,
+                          hi ? to_small(hi->get_den()) : 1, hi.has_value());
+  return simplest_nonnegative_big(lo, hi);
+}
+
+Rational simplest_nonnegative_big(const Rational& lo, const std::optional<Rational>& hi) {
   Integer a = lo.get_num(), b = lo.get_den(), c, d, f, t;
   bool bounded = hi.has_value();
   if (bounded) {

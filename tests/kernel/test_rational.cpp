@@ -276,3 +276,46 @@ TEST_CASE("simplest_rational_in: inside, and no smaller denominator fits", "[rat
     }
   });
 }
+
+TEST_CASE("simplest_rational_in: long ends, checked against the Stern-Brocot neighbours", "[rational][simplest][property]") {
+  // Ends of 40 to 180 bits: below and above the 120 bits that the 128-bit descent takes. The answer p/r (r > 1)
+  // is the simplest in (a, b) iff it is inside and its two Stern-Brocot parents, the fractions next to it among
+  // denominators below r, are not: every fraction strictly between them has denominator at least r.
+  const auto big = [](int bits) {
+    hsx::Integer v = 1;
+    for (int k = 0; k < bits; k += 30) {
+      v <<= 30;
+      v += *rc::gen::inRange(0, 1 << 30);
+    }
+    return v;
+  };
+  rc::prop("inside, parents outside", [&] {
+    const int bits = *rc::gen::inRange(40, 180);
+    const hsx::Integer den = big(bits), num = big(bits + *rc::gen::inRange(-8, 8)), width = big(bits / 2);
+    Rational a = hsx::make_rational(num, den);
+    Rational b = a + hsx::make_rational(width, den * den);  // a very short interval: r > 1 unless it holds an integer
+    const bool negative = *rc::gen::arbitrary<bool>();
+    if (negative) {
+      std::swap(a, b);
+      a = -a;
+      b = -b;
+    }
+    const Rational x = hsx::simplest_rational_in(a, b);
+    RC_ASSERT(a < x);
+    RC_ASSERT(x < b);
+    const Rational ax = negative ? -b : a, bx = negative ? -a : b, y = negative ? -x : x;  // mirrored to 0 < a < b
+    const hsx::Integer p = y.get_num(), r = y.get_den();
+    if (r == 1) {
+      RC_ASSERT(Rational(p - 1) <= ax);
+      return;
+    }
+    hsx::Integer g, s, t;
+    mpz_gcdext(g.get_mpz_t(), s.get_mpz_t(), t.get_mpz_t(), p.get_mpz_t(), r.get_mpz_t());  // p s + r t = 1
+    hsx::Integer r1;
+    mpz_fdiv_r(r1.get_mpz_t(), s.get_mpz_t(), r.get_mpz_t());  // p r1 = 1 (mod r), 0 < r1 < r
+    const hsx::Integer p1 = (p * r1 - 1) / r;                   // p r1 - p1 r = 1: the left parent p1/r1
+    const Rational left = hsx::make_rational(p1, r1), right = hsx::make_rational(p - p1, r - r1);
+    RC_ASSERT(left <= ax);
+    RC_ASSERT(right >= bx);
+  });
+}

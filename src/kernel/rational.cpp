@@ -216,13 +216,6 @@ std::string decimal_string(const Rational& q, int significant) {
 
 namespace {
 
-/// Simplest rational in the open interval (lo, hi) with 0 <= lo < hi (hi = nullopt: +infinity). If the
-/// smallest integer n > lo is below hi it is the answer (denominator 1, least value). Otherwise (lo, hi) lies in
-/// [f, f + 1] with f = floor(lo), and x = f + 1/y maps it onto the open interval of y, (1/(hi - f), 1/(lo - f))
-/// (the upper end infinite when lo = f); x has the smallest denominator iff y has the smallest numerator, and the
-/// continued-fraction step preserves simplicity (proofs/measures.md, Claim 1.4). Iterative, on the ends'
-/// numerators and denominators in place (lo = a/b, hi = c/d, b and d > 0; no reduction is needed, floors and
-/// comparisons do not depend on it): the partial quotients are collected and folded back at the end.
 Rational simplest_nonnegative_big(const Rational& lo, const std::optional<Rational>& hi);
 
 /// Ends of at most kSmallBits bits take simplest_small: the same steps in 128-bit integers, where no value of the
@@ -249,8 +242,8 @@ Integer from_small(Small v) {
 /// shrink (each step leaves remainders of the previous ones); the folded convergents p/r of the answer are at most
 /// its numerator and denominator, which are at most a + c and b + d: the mediant (a + c)/(b + d) lies strictly
 /// inside, and the answer, a Stern-Brocot ancestor of every fraction inside, has numerator and denominator at most
-/// theirs (unbounded: the answer is an integer f <= a / b + 1). The descent takes at most about 1.44 * 2 * kSmallBits steps (the ends
-/// shrink like Fibonacci numbers): fewer than kSteps.
+/// theirs (unbounded: the answer is an integer f <= a / b + 1). The descent takes at most about 1.44 * kSmallBits
+/// steps (the ends shrink at least like Fibonacci numbers): fewer than kSteps.
 Rational simplest_small(Small a, Small b, Small c, Small d, bool bounded) {
   constexpr int kSteps = 400;
   Small quotients[kSteps];
@@ -276,6 +269,13 @@ Rational simplest_small(Small a, Small b, Small c, Small d, bool bounded) {
   }
 }
 
+/// Simplest rational in the open interval (lo, hi) with 0 <= lo < hi (hi = nullopt: +infinity). If the
+/// smallest integer n > lo is below hi it is the answer (denominator 1, least value). Otherwise (lo, hi) lies in
+/// [f, f + 1] with f = floor(lo), and x = f + 1/y maps it onto the open interval of y, (1/(hi - f), 1/(lo - f))
+/// (the upper end infinite when lo = f); x has the smallest denominator iff y has the smallest numerator, and the
+/// continued-fraction step preserves simplicity (proofs/measures.md, Claim 1.4). Iterative, on the ends'
+/// numerators and denominators in place (lo = a/b, hi = c/d, b and d > 0; no reduction is needed, floors and
+/// comparisons do not depend on it): the partial quotients are collected and folded back at the end.
 Rational simplest_nonnegative(const Rational& lo, const std::optional<Rational>& hi) {
   if (small_enough(lo.get_num()) && small_enough(lo.get_den()) &&
       (!hi || (small_enough(hi->get_num()) && small_enough(hi->get_den()))))
@@ -284,6 +284,7 @@ Rational simplest_nonnegative(const Rational& lo, const std::optional<Rational>&
   return simplest_nonnegative_big(lo, hi);
 }
 
+/// simplest_nonnegative on integers of any size.
 Rational simplest_nonnegative_big(const Rational& lo, const std::optional<Rational>& hi) {
   Integer a = lo.get_num(), b = lo.get_den(), c, d, f, t;
   bool bounded = hi.has_value();

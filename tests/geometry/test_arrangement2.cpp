@@ -168,7 +168,8 @@ void check_location(const Scene2& scene, const Arrangement2& arr) {
       // halfspaces, i among them; -1 in a face.
       const int held = arr.holding_edge(on, i);
       if (where.kind == PointLocation2::Face) RC_ASSERT(held == -1);
-      if (where.kind == PointLocation2::Edge) RC_ASSERT(held == (carries(arr.edges()[where.index], i) ? where.index : -1));
+      if (where.kind == PointLocation2::Edge)
+        RC_ASSERT(held == (carries(arr.edges()[where.index], i) ? where.index : -1));
       if (where.kind == PointLocation2::Vertex && held >= 0) {
         const std::vector<int> two = arr.incident_edges(where.index);
         RC_ASSERT(two.size() == 2u);

@@ -277,7 +277,8 @@ TEST_CASE("simplest_rational_in: inside, and no smaller denominator fits", "[rat
   });
 }
 
-TEST_CASE("simplest_rational_in: long ends, checked against the Stern-Brocot neighbours", "[rational][simplest][property]") {
+TEST_CASE("simplest_rational_in: long ends, checked against the Stern-Brocot neighbours",
+          "[rational][simplest][property]") {
   // Ends of 40 to 180 bits: below and above the 120 bits that the 128-bit descent takes. The answer p/r (r > 1)
   // is the simplest in (a, b) iff it is inside and its two Stern-Brocot parents, the fractions next to it among
   // denominators below r, are not: every fraction strictly between them has denominator at least r.

@@ -81,15 +81,19 @@ CheckResult best_first_against_exact(const Problem& problem, const ExtractResult
   return r;
 }
 
-}  // namespace
+/// Per support: 1 when it lies on the boundary of `labelling`.
+std::vector<char> on_boundary(const Problem& problem, const Labelling& labelling) {
+  std::vector<char> on(problem.support_count(), 0);
+  for_each_boundary_support(problem, labelling, [&](int g) { on[g] = 1; });
+  return on;
+}
 
-CheckResult check_prop51(const Problem& problem, const Labelling& b, const Labelling& b_prime) {
+/// check_prop51 for b, its sample connectivity `conn` and the boundary flags of b' (`on_b_prime`).
+CheckResult prop51_islands(const Problem& problem, const Labelling& b, const SampleConnectivity& conn,
+                           const std::vector<char>& on_b_prime) {
   CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
   const Complex& c = problem.complex();
-  const SampleConnectivity conn = sample_connectivity(problem, b);
-  std::vector<char> on_b(problem.support_count(), 0), on_b_prime(problem.support_count(), 0);
-  for (int g : boundary_supports(problem, b)) on_b[g] = 1;
-  for (int g : boundary_supports(problem, b_prime)) on_b_prime[g] = 1;
+  const std::vector<char> on_b = on_boundary(problem, b);
   for (int island : conn.islands) {
     std::vector<int> supports;
     for (int p : conn.components[island].patches) supports.push_back(c.patches[p].support);
@@ -109,6 +113,12 @@ CheckResult check_prop51(const Problem& problem, const Labelling& b, const Label
   }
   r.witness = std::to_string(conn.islands.size()) + " island(s) checked";
   return r;
+}
+
+}  // namespace
+
+CheckResult check_prop51(const Problem& problem, const Labelling& b, const Labelling& b_prime) {
+  return prop51_islands(problem, b, sample_connectivity(problem, b), on_boundary(problem, b_prime));
 }
 
 Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling) {
@@ -379,10 +389,12 @@ CheckResult check_prop52(const Problem& problem, const ExtractResult& best, cons
 CheckResult check_prop51_on_states(const Problem& problem, const ExtractResult& best, const Labelling& reference) {
   CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
   long checked = 0;
+  const std::vector<char> on_reference = on_boundary(problem, reference);
   for (const Labelling& state : best.expanded) {
-    if (is_sample_connected(problem, state)) continue;
+    const SampleConnectivity conn = sample_connectivity(problem, state);
+    if (conn.sample_connected()) continue;
     ++checked;
-    CheckResult one = check_prop51(problem, state, reference);
+    CheckResult one = prop51_islands(problem, state, conn, on_reference);
     if (one.status == CheckResult::Fail) {
       r = one;
       r.witness = "state " + cells_text(state) + ": " + one.witness;

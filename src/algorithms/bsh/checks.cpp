@@ -81,11 +81,11 @@ CheckResult best_first_against_exact(const Problem& problem, const ExtractResult
   return r;
 }
 
-/// Per support: 1 when it lies on the boundary of `labelling`.
-std::vector<char> on_boundary(const Problem& problem, const Labelling& labelling) {
-  std::vector<char> on(problem.support_count(), 0);
-  for_each_boundary_support(problem, labelling, [&](int g) { on[g] = 1; });
-  return on;
+/// Flags per support: on b.
+std::vector<char> supports_on(const Problem& problem, const Labelling& labelling) {
+  std::vector<char> on_b(problem.support_count(), 0);
+  for (int g : boundary_supports(problem, labelling)) on_b[g] = 1;
+  return on_b;
 }
 
 /// check_prop51 for b, its sample connectivity `conn` and the boundary flags of b' (`on_b_prime`).
@@ -93,7 +93,7 @@ CheckResult prop51_islands(const Problem& problem, const Labelling& b, const Sam
                            const std::vector<char>& on_b_prime) {
   CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
   const Complex& c = problem.complex();
-  const std::vector<char> on_b = on_boundary(problem, b);
+  const std::vector<char> on_b = supports_on(problem, b);
   for (int island : conn.islands) {
     std::vector<int> supports;
     for (int p : conn.components[island].patches) supports.push_back(c.patches[p].support);
@@ -118,7 +118,7 @@ CheckResult prop51_islands(const Problem& problem, const Labelling& b, const Sam
 }  // namespace
 
 CheckResult check_prop51(const Problem& problem, const Labelling& b, const Labelling& b_prime) {
-  return prop51_islands(problem, b, sample_connectivity(problem, b), on_boundary(problem, b_prime));
+  return prop51_islands(problem, b, sample_connectivity(problem, b), supports_on(problem, b_prime));
 }
 
 Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling) {
@@ -165,12 +165,6 @@ CheckResult check_prop41(const Complex& complex, const Labelling& labelling, con
 
 namespace {
 
-/// Flags per support: on b.
-std::vector<char> supports_on(const Problem& problem, const Labelling& labelling) {
-  std::vector<char> on_b(problem.support_count(), 0);
-  for (int g : boundary_supports(problem, labelling)) on_b[g] = 1;
-  return on_b;
-}
 
 std::string genericity_note(const Problem& problem, int junction) {
   const auto& list = problem.non_generic_junctions();
@@ -389,7 +383,7 @@ CheckResult check_prop52(const Problem& problem, const ExtractResult& best, cons
 CheckResult check_prop51_on_states(const Problem& problem, const ExtractResult& best, const Labelling& reference) {
   CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
   long checked = 0;
-  const std::vector<char> on_reference = on_boundary(problem, reference);
+  const std::vector<char> on_reference = supports_on(problem, reference);
   for (const Labelling& state : best.expanded) {
     const SampleConnectivity conn = sample_connectivity(problem, state);
     if (conn.sample_connected()) continue;

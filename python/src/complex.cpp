@@ -115,7 +115,7 @@ void bind_views(py::module_& m) {
       .def_property_readonly("outer", [](const CellView& v) { return v.complex().cells[v.index].outer; },
                              "Touches the domain's boundary: always outside any shape")
       .def_property_readonly("witness",
-                             [](const CellView& v) { return fraction_tuple(v.complex().cells[v.index].witness); },
+                             [](const CellView& v) { return fraction_tuple(v.complex().cells[v.index].witness.get()); },
                              "An exact interior point, as Fractions")
       .def_property_readonly("sides",
                              [](const CellView& v) {

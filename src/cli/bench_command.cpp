@@ -1188,9 +1188,10 @@ void run_arrange_bench(const BenchOptions& o, OutputFiles& files) {
   }
   report.footer = {
       "hsx arrange: hsx::arrange (geometry/arrangement2.hpp and complex/from_arrangement2.hpp: CGAL's insertion "
-      "with a size guard, then vertices, edges, faces with their interior points, sides, samples located, the "
-      "complex; exact lengths and areas are computed on first read, not here); bare CGAL: bare_cgal_arrangement_faces, the same curves inserted into "
-      "the same CGAL arrangement and nothing else; same cells: both count the same bounded faces",
+      "with a size guard, then vertices, edges, faces, sides (from face 0's interior point), samples located, the "
+      "complex; exact lengths, areas and the other interior points are computed on first read, not here); bare "
+      "CGAL: bare_cgal_arrangement_faces, the same curves inserted into the same CGAL arrangement and nothing else; "
+      "same cells: both count the same bounded faces",
       "random scenes: seed 1, up to 3 samples per halfspace (halfsp: halfspaces)"};
   publish(report, o, files);
 }

@@ -43,7 +43,7 @@ void add_solid_options(CLI::App* cmd, SolidSource& source) {
 
 nlohmann::json cell_point(const Complex& c, int k) {
   nlohmann::json p = nlohmann::json::array();
-  for (const Rational& x : c.cells[k].witness) p.push_back(exact_string(x));
+  for (const Rational& x : c.cells[k].witness.get()) p.push_back(exact_string(x));
   return p;
 }
 

@@ -10,8 +10,8 @@ std::vector<char> carry_solid_over(const Arrangement2& old_arrangement, const st
                                    const Arrangement2& refined) {
   std::vector<char> out;
   out.reserve(refined.faces().size());
-  for (const ArrFace2& f : refined.faces()) {
-    const PointLocation2 loc = old_arrangement.locate(f.interior);
+  for (std::size_t f = 0; f < refined.faces().size(); ++f) {
+    const PointLocation2 loc = old_arrangement.locate(refined.face_interiors()->get(f));
     if (loc.kind != PointLocation2::Face)
       throw std::logic_error("carrying a solid to a refinement: a refined cell is not inside an old cell");
     out.push_back(solid.at(static_cast<std::size_t>(loc.index)));
@@ -41,8 +41,8 @@ std::vector<char> carry_to_whole_plane(const Arranged2& from, const std::vector<
   std::vector<char> out;
   out.reserve(to.arrangement.faces().size());
   long carried = 0;
-  for (const ArrFace2& f : to.arrangement.faces()) {
-    const PointLocation2 loc = from.arrangement.locate(f.interior);
+  for (std::size_t f = 0; f < to.arrangement.faces().size(); ++f) {
+    const PointLocation2 loc = from.arrangement.locate(to.arrangement.face_interiors()->get(f));
     const bool in = loc.kind == PointLocation2::Face && solid.at(static_cast<std::size_t>(loc.index));
     out.push_back(in ? 1 : 0);
     carried += in;

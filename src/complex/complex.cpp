@@ -49,7 +49,8 @@ std::vector<std::string> check_complex(const Complex& c) {
   for (int k = 0; k < n_cells; ++k) {
     if (static_cast<int>(c.cells[k].inside.size()) != n_half)
       say("cell " + std::to_string(k) + ": side vector has wrong length");
-    if (!c.cells[k].witness.empty() && static_cast<int>(c.cells[k].witness.size()) != c.dimension)
+    const std::vector<Rational>& witness = c.cells[k].witness.get();
+    if (!witness.empty() && static_cast<int>(witness.size()) != c.dimension)
       say("cell " + std::to_string(k) + ": witness has wrong dimension");
   }
   if (!problems.empty()) return problems;

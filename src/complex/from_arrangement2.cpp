@@ -82,10 +82,15 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
   c.dimension = 2;
   for (const auto& h : scene.halfspaces) c.halfspace_names.push_back(h.name);
   c.cells.reserve(arr.faces().size());
+  const auto witnesses = std::make_shared<const LazyCache<std::vector<Rational>>>(
+      arr.faces().size(), [interiors = arr.face_interiors()](std::size_t f) {
+        const PointQ2& p = interiors->get(f);
+        return std::vector<Rational>{p.x, p.y};
+      });
   for (const ArrFace2& f : arr.faces()) {
     Cell cell;
     cell.outer = f.outer;
-    cell.witness = {f.interior.x, f.interior.y};
+    cell.witness = Lazy<std::vector<Rational>>(witnesses, c.cells.size());
     cell.inside = f.inside;
     cell.measure = LazyMeasure(arr.face_areas(), c.cells.size());
     c.cells.push_back(std::move(cell));

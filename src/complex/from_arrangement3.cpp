@@ -179,7 +179,7 @@ Complex complex_from_arrangement(const Scene3& scene, const Arrangement3& arr) {
   for (const ArrCell3& cell : arr.cells()) {
     Cell out;
     out.outer = cell.outer;
-    out.witness = {cell.interior.x, cell.interior.y, cell.interior.z};
+    out.witness = std::vector<Rational>{cell.interior.x, cell.interior.y, cell.interior.z};
     out.inside = cell.inside;
     if (cell.volume) out.measure = Measure(*cell.volume);
     c.cells.push_back(std::move(out));

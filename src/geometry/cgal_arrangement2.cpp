@@ -597,12 +597,12 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   // --- 2. Vertices (each record gets its index, see Dcel). --------------------------------------------------------
   pieces->vertices.reserve(arr.number_of_vertices());
   pieces->edges.reserve(arr.number_of_edges());
-  InteriorPoints interior_points(pieces->vertices, pieces->edges);
+  const auto interior_points = std::make_shared<InteriorPoints>(pieces->vertices, pieces->edges);
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
     v->set_data(static_cast<int>(pieces->vertices.size()));
     impl->vertices.push_back(v);
     pieces->vertices.push_back({to_point(v->point()), static_cast<int>(v->degree())});
-    interior_points.add_vertex(v->point());
+    interior_points->add_vertex(v->point());
   }
   // --- 3. Faces: bounded ones only; the unbounded face is outside the domain (index -1). --------------------------
   std::vector<FaceHandle> faces;
@@ -652,34 +652,42 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     }
     impl->halfedges.push_back(h);
     pieces->edges.push_back(std::move(edge));
-    interior_points.add_edge(cv);
+    interior_points->add_edge(cv);
   }
   auto forward = [&](Halfedge h) { return h->source()->data() == pieces->edges[h->data()].source; };
 
-  // --- 5. Per face: boundary walks, outer flag, an exact interior point (areas: on request, see below). ----------
+  // --- 5. Per face: boundary walks, outer flag (interior points and areas: on request, see below). ---------------
   pieces->faces.resize(faces.size());
   for (std::size_t fi = 0; fi < faces.size(); ++fi) {
     FaceHandle f = faces[fi];
     ArrFace2& face = pieces->faces[fi];
-    std::vector<Halfedge> walk_halfedges;
     auto walk = [&](CgalArrangement::Ccb_halfedge_const_circulator start) {
       std::vector<std::pair<int, bool>> cycle;
       auto c = start;
       do {
         Halfedge h = c;
-        walk_halfedges.push_back(h);
         cycle.emplace_back(h->data(), forward(h));
+        if (pieces->edges[h->data()].on_box) face.outer = true;
       } while (++c != start);
       face.boundary.push_back(std::move(cycle));
     };
     walk(f->outer_ccb());
     for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end(); ++hole) walk(*hole);
-
-    for (Halfedge h : walk_halfedges)
-      if (pieces->edges[h->data()].on_box) face.outer = true;
-
-    face.interior = interior_points.inside(walk_halfedges);
   }
+  // Interior points, each found on its first read: face f's walks as halfedges (an edge's representative halfedge
+  // runs forward, its twin backward), outer boundary first, then InteriorPoints::inside. The cache owns what it
+  // reads (the CGAL arrangement through impl, the plain data, the enclosures); its calls never overlap, so
+  // InteriorPoints' per-vertex memo needs no lock.
+  out.face_interiors_ = std::make_shared<const LazyCache<PointQ2>>(
+      pieces->faces.size(), [impl = std::shared_ptr<const Impl>(impl), pieces, interior_points](std::size_t f) {
+        std::vector<Halfedge> walk;
+        for (const auto& cycle : pieces->faces[f].boundary)
+          for (const auto& [e, fwd] : cycle) {
+            const Halfedge h = impl->halfedges[static_cast<std::size_t>(e)];
+            walk.push_back(fwd ? h : h->twin());
+          }
+        return interior_points->inside(walk);
+      });
 
   // --- 6. Sides: evaluate one face directly, then flip halfspace bits across edges (breadth first). ---------------
   const std::size_t n_half = scene.halfspaces.size();
@@ -688,7 +696,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     ArrFace2& root = pieces->faces[0];
     root.inside.assign(n_half, 0);
     for (std::size_t i = 0; i < n_half; ++i) {
-      const int side = scene.halfspaces[i].side(root.interior);
+      const int side = scene.halfspaces[i].side(out.face_interiors_->get(0));
       if (side == 0) throw std::logic_error("face interior point lies on a boundary");
       root.inside[i] = side > 0;
     }

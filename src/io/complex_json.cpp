@@ -689,7 +689,9 @@ Cell read_cell(const JsonField& f, std::size_t k, const Names& names, int dimens
     if (w->size() != static_cast<std::size_t>(dimension)) {
       w->fail("expected " + std::to_string(dimension) + " coordinates, got " + std::to_string(w->size()));
     }
-    for (std::size_t i = 0; i < w->size(); ++i) cell.witness.push_back(w->at(i).rational());
+    std::vector<Rational> point;
+    for (std::size_t i = 0; i < w->size(); ++i) point.push_back(w->at(i).rational());
+    cell.witness = std::move(point);
   }
   cell.inside.assign(n_half, 0);
   const JsonField in = f.at("inside");
@@ -722,7 +724,6 @@ void read_cells(const JsonField& cells, const Names& names, ComplexDocument& doc
       ArrFace2& face = doc.faces[k];
       face.outer = cell.outer;
       face.inside = cell.inside;
-      if (cell.witness.size() == 2) face.interior = PointQ2{cell.witness[0], cell.witness[1]};
     } else {
       cell.measure = positive_measure_from_fields(f.at("measure"), budget, c.dimension == 3 ? "cell's volume" : "cell's area");
     }
@@ -1069,7 +1070,7 @@ json cell_json(const Complex& c, std::size_t k) {
   j["id"] = k;
   j["outer"] = cell.outer;
   json w = json::array();
-  for (const Rational& x : cell.witness) w.push_back(exact_string(x));
+  for (const Rational& x : cell.witness.get()) w.push_back(exact_string(x));
   j["witness"] = w;
   json inside = json::array();
   for (std::size_t i = 0; i < cell.inside.size(); ++i)

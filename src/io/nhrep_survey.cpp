@@ -37,7 +37,7 @@ std::string tree_with_names(const nhrep::Tree& tree, int node, const std::vector
 std::string cell_list(const Complex& complex, const std::vector<int>& cells, std::size_t max = 6) {
   std::string s;
   for (std::size_t i = 0; i < cells.size() && i < max; ++i) {
-    const auto& w = complex.cells.at(at(cells[i])).witness;
+    const auto& w = complex.cells.at(at(cells[i])).witness.get();
     s += (i ? ", " : "") + std::to_string(cells[i]) + " at (";
     for (std::size_t d = 0; d < w.size(); ++d) s += (d ? ", " : "") + decimal_string(w[d], 6);
     s += ")";

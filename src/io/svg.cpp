@@ -526,9 +526,9 @@ std::string labels_svg(const Arrangement2& arr, const Complex& c, const View& vi
                   num(0.3 * font_size) + "\" stroke-linejoin=\"round\" paint-order=\"stroke\">\n";
   if (o.show_cell_ids) {
     for (std::size_t f = 0; f < c.cells.size(); ++f) {
-      const auto& w = c.cells[f].witness;
-      const double x = w.size() == 2 ? w[0].get_d() : arr.faces()[f].interior.x.get_d();
-      const double y = w.size() == 2 ? w[1].get_d() : arr.faces()[f].interior.y.get_d();
+      const std::vector<Rational>& w = c.cells[f].witness.get();
+      const PointQ2 p = w.size() == 2 ? PointQ2{w[0], w[1]} : arr.face_interiors()->get(f);
+      const double x = p.x.get_d(), y = p.y.get_d();
       s += "<text class=\"cell-id\" x=\"" + num(view.X(x)) + "\" y=\"" + num(view.Y(y) + shift) +
            "\" fill=\"#333333\">c" + std::to_string(f) + "</text>\n";
     }

@@ -152,7 +152,7 @@ TEST_CASE("csg evaluation on arranged scenes equals the per-cell witness oracle"
     RC_ASSERT(labels.size() == complex.cells.size());
     for (std::size_t k = 0; k < complex.cells.size(); ++k) {
       const Cell& cell = complex.cells[k];
-      const PointQ2 w{cell.witness.at(0), cell.witness.at(1)};
+      const PointQ2 w{cell.witness.get().at(0), cell.witness.get().at(1)};
       const bool expected = oracle(*e, [&](int h) {
         const int side = scene.halfspaces[static_cast<std::size_t>(h)].side(w);
         RC_ASSERT(side != 0);  // a witness is interior to its cell

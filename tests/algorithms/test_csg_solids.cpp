@@ -188,7 +188,7 @@ TEST_CASE("csg solids: the whole-plane scene's cells have every sign vector of t
     RC_ASSERT(not_proven_different(bsh::inside_measure(a_whole.complex, carried),
                                    bsh::inside_measure(a_scene.complex, solid)));
     for (std::size_t k = 0; k < carried.size(); ++k) {
-      const PointLocation2 loc = a_scene.arrangement.locate(a_whole.arrangement.faces()[k].interior);
+      const PointLocation2 loc = a_scene.arrangement.locate(a_whole.arrangement.face_interiors()->get(k));
       const bool inside = loc.kind == PointLocation2::Face && solid[static_cast<std::size_t>(loc.index)];
       RC_ASSERT(static_cast<bool>(carried[k]) == inside);
     }

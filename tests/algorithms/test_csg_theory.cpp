@@ -427,7 +427,7 @@ TEST_CASE("csg theory 3: BSH Fig. 2 - shapes 1-4 describable by A and B, shapes 
       std::vector<char> expected(c.cells.size(), 0);
       for (int cell = 0; cell < static_cast<int>(c.cells.size()); ++cell) {
         const auto& s = c.cells[cell].inside;
-        const bool left = c.cells[cell].witness[0] < 0;
+        const bool left = c.cells[cell].witness.get()[0] < 0;
         const bool centre = s[0] && s[1], arm_l = s[0] && !s[1] && left, b = s[1];
         expected[cell] = (k == 5 ? centre || arm_l : b || arm_l) ? 1 : 0;
       }
@@ -450,8 +450,8 @@ TEST_CASE("csg theory 3: BSH Fig. 2 - shapes 1-4 describable by A and B, shapes 
       CHECK(w.signs == std::vector<char>{1, 0});
       REQUIRE(w.inside_cells.size() == 1);
       REQUIRE(w.outside_cells.size() == 1);
-      CHECK(c.cells[w.inside_cells[0]].witness[0] < 0);
-      CHECK(c.cells[w.outside_cells[0]].witness[0] > 0);
+      CHECK(c.cells[w.inside_cells[0]].witness.get()[0] < 0);
+      CHECK(c.cells[w.outside_cells[0]].witness.get()[0] > 0);
       CHECK(w.inside_cells == d.mixed[0].inside_cells);
       CHECK(w.outside_cells == d.mixed[0].outside_cells);
 

@@ -199,7 +199,7 @@ TEST_CASE("nheval: two towers of different heights: describable, but the short t
   CHECK(p.eval.wrong_outside.empty());
   REQUIRE_FALSE(p.eval.wrong_inside.empty());
   for (int k : p.eval.wrong_inside) {  // exactly the left tower above y = 2
-    const auto& w = p.arranged.complex.cells[static_cast<std::size_t>(k)].witness;
+    const auto& w = p.arranged.complex.cells[static_cast<std::size_t>(k)].witness.get();
     CHECK(w[0] < q("1"));
     CHECK(w[1] > q("2"));
   }
@@ -258,7 +258,7 @@ TEST_CASE("nheval: a wedge bitten by a disk is not describable by its patches' h
   std::vector<char> solid(a.complex.cells.size(), 0);
   for (std::size_t k = 0; k < solid.size(); ++k) {
     const Cell& c = a.complex.cells[k];
-    solid[k] = c.inside[0] && c.inside[1] && !c.inside[2] && c.witness[1] < q("1");
+    solid[k] = c.inside[0] && c.inside[1] && !c.inside[2] && c.witness.get()[1] < q("1");
   }
   const Pipeline p = run_cells(std::move(a), solid);
   require_consistent(p);
@@ -337,8 +337,9 @@ std::vector<char> gen_solid(const Complex& c) {
 std::vector<char> carry(const Arranged2& from, const std::vector<char>& solid, const Arranged2& to,
                         const PointQ2& offset) {
   std::vector<char> out;
-  for (const ArrFace2& f : to.arrangement.faces()) {
-    const PointLocation2 loc = from.arrangement.locate(PointQ2{f.interior.x - offset.x, f.interior.y - offset.y});
+  for (std::size_t f = 0; f < to.arrangement.faces().size(); ++f) {
+    const PointQ2& p = to.arrangement.face_interiors()->get(f);
+    const PointLocation2 loc = from.arrangement.locate(PointQ2{p.x - offset.x, p.y - offset.y});
     RC_ASSERT(loc.kind == PointLocation2::Face);
     out.push_back(solid[static_cast<std::size_t>(loc.index)]);
   }

@@ -69,7 +69,7 @@ TEST_CASE("nhplanar: the pipeline gives the step-by-step tree, names and evaluat
   CHECK(e.missed.size() == direct.wrong_inside.size());
   CHECK(e.added.size() == direct.wrong_outside.size());
   for (std::size_t k = 0; k < e.missed.size(); ++k)
-    CHECK(e.missed[k] == a.complex.cells[static_cast<std::size_t>(direct.wrong_inside[k])].witness);
+    CHECK(e.missed[k] == a.complex.cells[static_cast<std::size_t>(direct.wrong_inside[k])].witness.get());
 }
 
 TEST_CASE("nhplanar: an annulus is diagnosed as united holes, and nested holes fix it", "[nhplanar]") {

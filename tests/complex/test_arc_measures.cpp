@@ -66,8 +66,8 @@ TEST_CASE("witness points are short rationals strictly inside their cells", "[co
   const Complex c = arrange(s).complex;
   REQUIRE(c.cells.size() > 4);
   for (const Cell& cell : c.cells) {
-    REQUIRE(cell.witness.size() == 2);
-    const PointQ2 w{cell.witness[0], cell.witness[1]};
+    REQUIRE(cell.witness.get().size() == 2);
+    const PointQ2 w{cell.witness.get()[0], cell.witness.get()[1]};
     INFO("witness " << exact_string(w.x) << ", " << exact_string(w.y));
     // dyadic midpoints of enclosures had 2^62-sized denominators; the simplest rational has a small one here
     CHECK(w.x.get_den() < 100);

@@ -407,9 +407,8 @@ std::vector<char> random_solid(const Arranged2& a) {
 std::vector<char> carried(const Arranged2& from, const std::vector<char>& solid, const Arranged2& to,
                           const std::function<PointQ2(const PointQ2&)>& move) {
   std::vector<char> out(to.complex.cells.size(), 0);
-  const auto& faces = from.arrangement.faces();
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const PointLocation2 where = to.arrangement.locate(move(faces[f].interior));
+  for (std::size_t f = 0; f < from.arrangement.faces().size(); ++f) {
+    const PointLocation2 where = to.arrangement.locate(move(from.arrangement.face_interiors()->get(f)));
     RC_ASSERT(where.kind == PointLocation2::Face);
     if (solid[f]) out.at(static_cast<std::size_t>(where.index)) = 1;
   }

@@ -131,8 +131,8 @@ void check_structure(const Scene2& scene, const Arranged2& a) {
   RC_ASSERT(c.cells.size() == arr.faces().size());
   // Cells: witness strictly inside, sides by direct evaluation.
   for (const Cell& cell : c.cells) {
-    RC_ASSERT(cell.witness.size() == 2u);
-    const PointQ2 w{cell.witness[0], cell.witness[1]};
+    RC_ASSERT(cell.witness.get().size() == 2u);
+    const PointQ2 w{cell.witness.get()[0], cell.witness.get()[1]};
     for (int i = 0; i < n; ++i) {
       const int side = scene.halfspaces[i].side(w);
       RC_ASSERT(side != 0);

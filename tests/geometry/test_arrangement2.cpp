@@ -12,7 +12,9 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace hsx;
@@ -129,7 +131,7 @@ void check_faces(const Scene2& scene, const Arrangement2& arr) {
   int outer = 0;
   for (int f = 0; f < static_cast<int>(arr.faces().size()); ++f) {
     const ArrFace2& face = arr.faces()[f];
-    const PointQ2& p = face.interior;
+    const PointQ2& p = arr.face_interiors()->get(static_cast<std::size_t>(f));
     RC_ASSERT(scene.domain.min.x < p.x && p.x < scene.domain.max.x);
     RC_ASSERT(scene.domain.min.y < p.y && p.y < scene.domain.max.y);
     const PointLocation2 where = arr.locate(p);
@@ -249,6 +251,34 @@ TEST_CASE("arrangement2: faces agree with direct evaluation on random scenes", "
   rc::prop("interior points locate to their face; sides and outer flags are right", [] {
     const Scene2 scene = *gen_scene(degenerate_options());
     check_faces(scene, Arrangement2::build(scene));
+  });
+}
+
+TEST_CASE("arrangement2: interior points are the same whenever and by whichever thread they are read",
+          "[arrangement2][property]") {
+  rc::prop("four threads in shuffled orders, and a cache outliving its arrangement, give one thread's points", [] {
+    const Scene2 scene = *gen_scene(degenerate_options());
+    const Arrangement2 reference = Arrangement2::build(scene);
+    const std::size_t n = reference.faces().size();
+    std::vector<PointQ2> expected;
+    for (std::size_t f = 0; f < n; ++f) expected.push_back(reference.face_interiors()->get(f));
+    std::shared_ptr<const LazyCache<PointQ2>> interiors = Arrangement2::build(scene).face_interiors();
+    std::vector<std::vector<std::size_t>> orders;  // per thread: the faces sorted by random keys
+    for (int t = 0; t < 4; ++t) {
+      const auto keys = *rc::gen::container<std::vector<int>>(n, rc::gen::arbitrary<int>());
+      std::vector<std::size_t> order(n);
+      for (std::size_t f = 0; f < n; ++f) order[f] = f;
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+      orders.push_back(std::move(order));
+    }
+    std::vector<std::vector<PointQ2>> got(4, std::vector<PointQ2>(n));
+    std::vector<std::thread> threads;
+    for (std::size_t t = 0; t < 4; ++t)
+      threads.emplace_back([&, t] {
+        for (std::size_t f : orders[t]) got[t][f] = interiors->get(f);
+      });
+    for (auto& thread : threads) thread.join();
+    for (std::size_t t = 0; t < 4; ++t) RC_ASSERT(got[t] == expected);
   });
 }
 

@@ -314,7 +314,7 @@ TEST_CASE("random_scene: its arrangement, with the samples placed, is the scene'
     CHECK(placed.faces().size() == fresh.faces().size());
     CHECK(placed.edges().size() == fresh.edges().size());
     for (std::size_t f = 0; f < fresh.faces().size(); ++f) {
-      CHECK(placed.faces()[f].interior == fresh.faces()[f].interior);
+      CHECK(placed.face_interiors()->get(f) == fresh.face_interiors()->get(f));
       CHECK(placed.faces()[f].inside == fresh.faces()[f].inside);
     }
     // arrange(scene, arrangement): the complex, with its geometry, written as arrange(scene) writes it.

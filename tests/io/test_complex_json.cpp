@@ -93,7 +93,7 @@ void require_equal(const Complex& a, const Complex& b) {
   for (std::size_t k = 0; k < a.cells.size(); ++k) {
     INFO("cell " << k);
     REQUIRE(a.cells[k].outer == b.cells[k].outer);
-    REQUIRE(a.cells[k].witness == b.cells[k].witness);
+    REQUIRE(a.cells[k].witness.get() == b.cells[k].witness.get());
     REQUIRE(a.cells[k].inside == b.cells[k].inside);
     REQUIRE(compare(a.cells[k].measure, b.cells[k].measure) == Order::Equal);
   }
@@ -254,8 +254,8 @@ TEST_CASE("a hand-written complex without geometry", "[io][complex_json]") {
   REQUIRE(c.patches.size() == 2);
   CHECK(c.outer_cell_count() == 1);
   CHECK(c.cells[1].inside == std::vector<char>{1, 0});
-  CHECK(c.cells[1].witness == std::vector<Rational>{Rational(1, 2), Rational(0)});
-  CHECK(c.cells[0].witness.empty());
+  CHECK(c.cells[1].witness.get() == std::vector<Rational>{Rational(1, 2), Rational(0)});
+  CHECK(c.cells[0].witness.get().empty());
   CHECK(compare(c.cells[1].measure, Measure(Rational(3, 2))) == Order::Equal);
   CHECK(compare(c.cells[2].measure, Measure::sqrt_of(2)) == Order::Equal);
   CHECK(compare(c.patches[0].measure, Measure(1)) == Order::Equal);
@@ -354,7 +354,7 @@ TEST_CASE("bad complexes are rejected with the JSON path", "[io][complex_json]")
       {"/cells/0/inside", json::array({"A", "A"}), "cells[0].inside[1]: halfspace listed twice"},
       {"/cells/0/inside", "A", "cells[0].inside: expected an array"},
       {"/cells/1/witness", json::array({1}), "cells[1].witness: expected 2 coordinates"},
-      {"/cells/1/witness/0", "x", "cells[1].witness[0]: expected a number"},
+      {"/cells/1/witness/0", "x", "cells[1].witness.get()[0]: expected a number"},
       {"/cells/2/outer", 1, "cells[2].outer: expected true or false"},
       {"/samples/0/patch", 5, "samples[0].patch: patch 5 is out of range"},
       {"/samples/0/halfspace", "A", "samples[0].halfspace: is \"A\" but patch 1 lies on halfspace \"B\""},

@@ -282,8 +282,8 @@ TEST_CASE("labels name each cell at its witness and each patch on the patch", "[
         REQUIRE(id >= 0);
         REQUIRE(static_cast<std::size_t>(id) < c.cells.size());
         ++cells_seen[id];
-        CHECK(std::abs(x - c.cells[id].witness[0].get_d()) < tolerance);
-        CHECK(std::abs(y - c.cells[id].witness[1].get_d()) < tolerance);
+        CHECK(std::abs(x - c.cells[id].witness.get()[0].get_d()) < tolerance);
+        CHECK(std::abs(y - c.cells[id].witness.get()[1].get_d()) < tolerance);
       } else {
         REQUIRE(t.cls == "patch-id");
         REQUIRE(t.text[0] == 'p');

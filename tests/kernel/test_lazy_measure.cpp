@@ -1,4 +1,5 @@
-// Lazy measures: each cache entry computed once, on first read, also when several threads read at once.
+// Lazy values (kernel/lazy.hpp) and measures: each cache entry computed once, on first read, also when several
+// threads read at once.
 #include <hsx/kernel/lazy_measure.hpp>
 
 #include <catch2/catch.hpp>
@@ -61,4 +62,22 @@ TEST_CASE("MeasureCache is read safely by several threads", "[lazy_measure]") {
   for (auto& th : threads) th.join();
   CHECK(wrong == 0);
   for (std::size_t k = 0; k < n; ++k) CHECK(calls[k] == 1);
+}
+
+TEST_CASE("Lazy of another type: empty by default, a known value, or a cache entry", "[lazy_measure]") {
+  hsx::Lazy<std::vector<int>> none;
+  CHECK(none.get().empty());
+  int calls = 0;
+  const auto cache = std::make_shared<const hsx::LazyCache<std::vector<int>>>(2, [&](std::size_t k) {
+    ++calls;
+    return std::vector<int>(k + 1, 7);
+  });
+  const hsx::Lazy<std::vector<int>> second(cache, 1), copy = second;
+  CHECK(calls == 0);
+  CHECK(copy.get() == std::vector<int>{7, 7});
+  CHECK(second.get() == std::vector<int>{7, 7});
+  CHECK(calls == 1);
+  none = std::vector<int>{1};
+  CHECK(none.get() == std::vector<int>{1});
+  CHECK_THROWS_AS(hsx::Lazy<std::vector<int>>(cache, 2), std::out_of_range);
 }

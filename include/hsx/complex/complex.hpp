@@ -39,7 +39,9 @@ namespace hsx {
 
 struct Cell {
   bool outer = false;
-  std::vector<Rational> witness;  ///< exact interior point, `dimension` coordinates
+  /// An exact interior point, `dimension` coordinates (empty when not known, e.g. read from JSON without one);
+  /// computed on first read (2D arrangements). Read it with witness.get().
+  Lazy<std::vector<Rational>> witness;
   std::vector<char> inside;       ///< per halfspace: 1 inside, 0 outside
   LazyMeasure measure;            ///< area (2D) or volume (3D); computed on first read (2D arrangements)
 };

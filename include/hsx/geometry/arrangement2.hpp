@@ -46,7 +46,6 @@ struct ArrEdge2 {
 
 struct ArrFace2 {
   bool outer = false;
-  PointQ2 interior;               ///< an exact rational point strictly inside the face
   std::vector<char> inside;       ///< per halfspace: 1 inside, 0 outside
   /// Boundary walks, each a cycle of (edge, forward) with the face on the left; the first is the outer
   /// boundary, the rest are holes.
@@ -79,8 +78,8 @@ long bare_cgal_arrangement_faces(const Scene2& scene);
 class Arrangement2 {
  public:
   /// Builds the arrangement of every halfspace boundary of `scene` (validated, see validate_and_resolve) with
-  /// the domain box, classifies faces and places samples. Edge lengths and face areas are computed on first
-  /// request (edge_lengths(), face_areas()).
+  /// the domain box, classifies faces and places samples. Edge lengths, face areas and faces' interior points are
+  /// computed on first request (edge_lengths(), face_areas(), face_interiors()).
   /// Throws InputError when a sample lies on a vertex where two boundaries meet, and when the arrangement
   /// outgrows `limits` (checked while CGAL builds it, so refusing costs about what the limit allows). A refusal
   /// from inside CGAL's sweep leaks the sweep's buffers (CGAL frees them only when a sweep completes): about
@@ -104,6 +103,11 @@ class Arrangement2 {
   const std::shared_ptr<const MeasureCache>& edge_lengths() const { return edge_lengths_; }
   /// Exact face areas, entry f for faces()[f] (planar_measures.hpp: enclosed_area), as edge_lengths().
   const std::shared_ptr<const MeasureCache>& face_areas() const { return face_areas_; }
+  /// An exact rational point strictly inside each face, entry f for faces()[f]: on a vertical line through a
+  /// rational x between two vertices of a non-vertical boundary edge of f, a rational y between that edge and the
+  /// next boundary above or below it, both short rationals (few digits). Each computed on its first
+  /// read and kept, as edge_lengths(); the same points whenever and by whichever thread they are read.
+  const std::shared_ptr<const LazyCache<PointQ2>>& face_interiors() const { return face_interiors_; }
   /// For each scene sample, the edge that holds it (an edge carrying the sample's halfspace). A sample on a
   /// degree-2 vertex inside one curve run (a polygon corner, a circle's x-extreme point) is given one of the two
   /// edges.
@@ -146,6 +150,7 @@ class Arrangement2 {
   std::shared_ptr<const Pieces> pieces_ = std::make_shared<const Pieces>();
   std::shared_ptr<const MeasureCache> edge_lengths_ = std::make_shared<const MeasureCache>(0, nullptr);
   std::shared_ptr<const MeasureCache> face_areas_ = std::make_shared<const MeasureCache>(0, nullptr);
+  std::shared_ptr<const LazyCache<PointQ2>> face_interiors_ = std::make_shared<const LazyCache<PointQ2>>(0, nullptr);
   std::vector<int> sample_edges_;
 };
 

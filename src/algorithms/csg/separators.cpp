@@ -57,12 +57,12 @@ void add_radical_axes(const Scene2& scene, std::vector<SeparatorLine>& out) {
 }
 
 void add_witness_bisectors(const Arranged2& arranged, const Describability& mixed, std::vector<SeparatorLine>& out) {
-  const auto& faces = arranged.arrangement.faces();
+  const LazyCache<PointQ2>& interiors = *arranged.arrangement.face_interiors();
   for (const auto& term : mixed.mixed)
     for (int i : term.inside_cells)
       for (int o : term.outside_cells) {
-        const PointQ2& p = faces[i].interior;
-        const PointQ2& q = faces[o].interior;
+        const PointQ2& p = interiors.get(static_cast<std::size_t>(i));
+        const PointQ2& q = interiors.get(static_cast<std::size_t>(o));
         const PointQ2 n{q.x - p.x, q.y - p.y};
         const PointQ2 m{(p.x + q.x) / 2, (p.y + q.y) / 2};
         out.push_back({n, n.x * m.x + n.y * m.y});

@@ -135,8 +135,8 @@ CellEvaluation evaluate_on_cells(const BuildResult& result, const BuildOptions& 
   CellEvaluation out;
   out.evaluation = evaluate_tree(result, complex, solid);
   out.cells = complex.cells.size();
-  for (int c : out.evaluation.wrong_inside) out.missed.push_back(complex.cells.at(at(c)).witness);
-  for (int c : out.evaluation.wrong_outside) out.added.push_back(complex.cells.at(at(c)).witness);
+  for (int c : out.evaluation.wrong_inside) out.missed.push_back(complex.cells.at(at(c)).witness.get());
+  for (int c : out.evaluation.wrong_outside) out.added.push_back(complex.cells.at(at(c)).witness.get());
   if (out.evaluation.verdict == Verdict::DescribableButFails) {
     const auto& pieces = result.graph.surface.pieces;
     const bool holes = std::any_of(pieces.begin(), pieces.end(), [](const BoundaryPiece& p) { return p.hole; });

@@ -1,6 +1,7 @@
 #include <hsx/complex/from_arrangement2.hpp>
 
 #include <algorithm>
+#include <array>
 #include <memory>
 
 namespace hsx {
@@ -18,15 +19,15 @@ struct Chain {
 std::vector<Chain> chains_of(const Arrangement2& arr) {
   const auto& edges = arr.edges();
   const auto& vertices = arr.vertices();
-  std::vector<std::vector<int>> incident(vertices.size());
-  for (int e = 0; e < static_cast<int>(edges.size()); ++e) {
-    incident[edges[e].source].push_back(e);
-    incident[edges[e].target].push_back(e);
-  }
+  // Per vertex of degree 2: its two edges (runs continue only through those).
+  std::vector<std::array<int, 2>> pair(vertices.size(), {-1, -1});
+  for (int e = 0; e < static_cast<int>(edges.size()); ++e)
+    for (int v : {edges[e].source, edges[e].target})
+      if (vertices[v].degree == 2) pair[v][pair[v][0] < 0 ? 0 : 1] = e;
   // The other patch edge through v continuing edge e, or -1 when the run ends at v.
   auto continuation = [&](int e, int v) {
-    if (incident[v].size() != 2) return -1;
-    const int other = incident[v][0] == e ? incident[v][1] : incident[v][0];
+    if (vertices[v].degree != 2) return -1;
+    const int other = pair[v][0] == e ? pair[v][1] : pair[v][0];
     if (!patch_edge(edges[other]) || edges[other].halfspaces != edges[e].halfspaces) return -1;
     return other;
   };
@@ -106,19 +107,24 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
   c.patches.reserve(patch_count);
   c.supports.reserve(chains.size());
   patches_of_chain.reserve(chains.size());
+  // Junctions: the chains' end vertices, numbered in the order the chains first reach them.
+  int junction_count = 0;
+  for (const Chain& chain : chains)
+    for (int v : chain.ends) {
+      int& junction = junction_of_vertex[static_cast<std::size_t>(v)];
+      if (junction < 0) junction = junction_count++;
+    }
+  c.junctions.resize(static_cast<std::size_t>(junction_count));
+  for (std::size_t v = 0; v < junction_of_vertex.size(); ++v)
+    if (const int j = junction_of_vertex[v]; j >= 0)
+      c.junctions[static_cast<std::size_t>(j)].piece = static_cast<int>(v);
   for (int k = 0; k < static_cast<int>(chains.size()); ++k) {
     const Chain& chain = chains[k];
     const ArrEdge2& e0 = edges[chain.edges.front()];
     for (int e : chain.edges) chain_of_edge[e] = k;
     std::vector<int> junctions;
-    for (int v : chain.ends) {
-      int& junction = junction_of_vertex[static_cast<std::size_t>(v)];
-      if (junction < 0) {
-        junction = static_cast<int>(c.junctions.size());
-        c.junctions.push_back(Junction{{}, v});
-      }
-      junctions.push_back(junction);
-    }
+    junctions.reserve(chain.ends.size());
+    for (int v : chain.ends) junctions.push_back(junction_of_vertex[static_cast<std::size_t>(v)]);
     const int support = static_cast<int>(c.supports.size());
     c.supports.emplace_back();
     patches_of_chain.emplace_back();

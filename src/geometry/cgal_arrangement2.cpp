@@ -420,26 +420,10 @@ struct YAtX0 {
 /// every decision, and every point, is the one exact comparisons give.
 class InteriorPoints {
  public:
-  /// `vertices` and `edges` are filled alongside add_vertex and add_edge (same order).
+  /// `vertices` and `edges`: the arrangement's, complete before the first call of inside() (each vertex's and
+  /// edge's enclosure is taken on its first use: most faces are never asked for a point).
   InteriorPoints(const std::vector<ArrVertex2>& vertices, const std::vector<ArrEdge2>& edges)
       : vertices_(vertices), edges_(edges) {}
-  void add_vertex(const CgalPoint& p) {
-    const CoordNT& x = p.x();
-    Enclosure e = to_interval_nt(x.a0());
-    if (x.is_extended()) e += to_interval_nt(x.a1()) * CGAL::sqrt(to_interval_nt(x.root()));
-    x_.push_back(e);
-  }
-  void add_edge(const XCurve& cv) {
-    const ArrEdge2& e = edges_[curves_.size()];
-    auto enclose = [](const Rational& q) { return to_interval_nt(q); };
-    if (e.shape == EdgeShape2::Arc) {
-      const bool upper = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
-      const Enclosure radius = enclose(e.radius);
-      curves_.push_back({true, upper, enclose(e.center.x), enclose(e.center.y), radius * radius});
-    } else {
-      curves_.push_back({false, false, enclose(e.line_a), enclose(e.line_b), enclose(e.line_c)});
-    }
-  }
 
   /// A rational point strictly inside the face whose boundary halfedges (outer boundary first) are `walk`.
   PointQ2 inside(const std::vector<Halfedge>& walk) const {
@@ -456,7 +440,7 @@ class InteriorPoints {
     const Enclosure x0_approx = to_interval_nt(x0);
     const OneRoot x0_exact(x0);
     auto compare_to_x0 = [&](int v) {
-      const int c = order(x_[static_cast<std::size_t>(v)], x0_approx);
+      const int c = order(x_enclosure(v), x0_approx);
       return c != 0 ? c : compare(x_of(v), x0_exact);
     };
     // y0: strictly between the base and the nearest other boundary edge above it (below it) at x0, where the face
@@ -489,6 +473,35 @@ class InteriorPoints {
     return (h->direction() == CGAL::ARR_LEFT_TO_RIGHT ? h->target() : h->source())->data();
   }
   const OneRoot& x_of(int v) const { return vertices_[static_cast<std::size_t>(v)].point.x; }
+  /// Vertex v's x enclosed in doubles, computed on its first use.
+  const Enclosure& x_enclosure(int v) const {
+    if (x_.size() < vertices_.size()) x_.resize(vertices_.size());
+    std::optional<Enclosure>& e = x_[static_cast<std::size_t>(v)];
+    if (!e) {
+      const OneRoot& x = x_of(v);
+      e = to_interval_nt(x.a0);
+      if (!x.is_rational()) *e += to_interval_nt(x.a1) * CGAL::sqrt(to_interval_nt(x.root));
+    }
+    return *e;
+  }
+  /// The curve data of h's edge enclosed in doubles (see CurveEnclosure), computed on its first use.
+  const CurveEnclosure& curve_enclosure(Halfedge h) const {
+    if (curves_.size() < edges_.size()) curves_.resize(edges_.size());
+    std::optional<CurveEnclosure>& c = curves_[static_cast<std::size_t>(h->data())];
+    if (!c) {
+      const ArrEdge2& e = edges_[static_cast<std::size_t>(h->data())];
+      const XCurve& cv = h->curve();
+      auto enclose = [](const Rational& q) { return to_interval_nt(q); };
+      if (e.shape == EdgeShape2::Arc) {
+        const bool upper = (cv.orientation() == CGAL::COUNTERCLOCKWISE) != cv.is_directed_right();
+        const Enclosure radius = enclose(e.radius);
+        c = CurveEnclosure{true, upper, enclose(e.center.x), enclose(e.center.y), radius * radius};
+      } else {
+        c = CurveEnclosure{false, false, enclose(e.line_a), enclose(e.line_b), enclose(e.line_c)};
+      }
+    }
+    return *c;
+  }
   /// first_enclosure(x_of(v)), computed on its first use (most vertices serve two or more faces).
   const FirstEnclosure& first_x(int v) const {
     if (first_x_.size() < vertices_.size()) first_x_.resize(vertices_.size());
@@ -500,13 +513,13 @@ class InteriorPoints {
   /// Exact comparison of vertices u and w by x.
   int compare_x(int u, int w) const {
     if (u == w) return 0;
-    const int c = order(x_[static_cast<std::size_t>(u)], x_[static_cast<std::size_t>(w)]);
+    const int c = order(x_enclosure(u), x_enclosure(w));
     return c != 0 ? c : compare(x_of(u), x_of(w));
   }
 
   /// The enclosure of h's y at x0 (h non-vertical, x0 in its closed x-range).
   YAtX0 y_at_x0(Halfedge h, const Enclosure& x0) const {
-    const CurveEnclosure& c = curves_[static_cast<std::size_t>(h->data())];
+    const CurveEnclosure& c = curve_enclosure(h);
     Enclosure y;
     if (c.arc) {
       const Enclosure dx = x0 - c.p;
@@ -529,8 +542,8 @@ class InteriorPoints {
 
   const std::vector<ArrVertex2>& vertices_;
   const std::vector<ArrEdge2>& edges_;
-  std::vector<Enclosure> x_;              // per vertex: its x
-  std::vector<CurveEnclosure> curves_;    // per edge
+  mutable std::vector<std::optional<Enclosure>> x_;            // per vertex: see x_enclosure
+  mutable std::vector<std::optional<CurveEnclosure>> curves_;  // per edge: see curve_enclosure
   mutable std::vector<std::optional<FirstEnclosure>> first_x_;  // per vertex: see first_x
 };
 
@@ -597,12 +610,10 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   // --- 2. Vertices (each record gets its index, see Dcel). --------------------------------------------------------
   pieces->vertices.reserve(arr.number_of_vertices());
   pieces->edges.reserve(arr.number_of_edges());
-  const auto interior_points = std::make_shared<InteriorPoints>(pieces->vertices, pieces->edges);
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
     v->set_data(static_cast<int>(pieces->vertices.size()));
     impl->vertices.push_back(v);
     pieces->vertices.push_back({to_point(v->point()), static_cast<int>(v->degree())});
-    interior_points->add_vertex(v->point());
   }
   // --- 3. Faces: bounded ones only; the unbounded face is outside the domain (index -1). --------------------------
   std::vector<FaceHandle> faces;
@@ -652,7 +663,6 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     }
     impl->halfedges.push_back(h);
     pieces->edges.push_back(std::move(edge));
-    interior_points->add_edge(cv);
   }
   auto forward = [&](Halfedge h) { return h->source()->data() == pieces->edges[h->data()].source; };
 
@@ -677,7 +687,8 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   // Interior points, each found on its first read: face f's walks as halfedges (an edge's representative halfedge
   // runs forward, its twin backward), outer boundary first, then InteriorPoints::inside. The cache owns what it
   // reads (the CGAL arrangement through impl, the plain data, the enclosures); its calls never overlap, so
-  // InteriorPoints' per-vertex memo needs no lock.
+  // InteriorPoints' per-vertex and per-edge memos need no lock.
+  const auto interior_points = std::make_shared<InteriorPoints>(pieces->vertices, pieces->edges);
   out.face_interiors_ = std::make_shared<const LazyCache<PointQ2>>(
       pieces->faces.size(), [impl = std::shared_ptr<const Impl>(impl), pieces, interior_points](std::size_t f) {
         std::vector<Halfedge> walk;

@@ -354,7 +354,7 @@ TEST_CASE("bad complexes are rejected with the JSON path", "[io][complex_json]")
       {"/cells/0/inside", json::array({"A", "A"}), "cells[0].inside[1]: halfspace listed twice"},
       {"/cells/0/inside", "A", "cells[0].inside: expected an array"},
       {"/cells/1/witness", json::array({1}), "cells[1].witness: expected 2 coordinates"},
-      {"/cells/1/witness/0", "x", "cells[1].witness.get()[0]: expected a number"},
+      {"/cells/1/witness/0", "x", "cells[1].witness[0]: expected a number"},
       {"/cells/2/outer", 1, "cells[2].outer: expected true or false"},
       {"/samples/0/patch", 5, "samples[0].patch: patch 5 is out of range"},
       {"/samples/0/halfspace", "A", "samples[0].halfspace: is \"A\" but patch 1 lies on halfspace \"B\""},

@@ -81,19 +81,12 @@ CheckResult best_first_against_exact(const Problem& problem, const ExtractResult
   return r;
 }
 
-/// Flags per support: on b.
-std::vector<char> supports_on(const Problem& problem, const Labelling& labelling) {
-  std::vector<char> on_b(problem.support_count(), 0);
-  for (int g : boundary_supports(problem, labelling)) on_b[g] = 1;
-  return on_b;
-}
-
 /// check_prop51 for b, its sample connectivity `conn` and the boundary flags of b' (`on_b_prime`).
 CheckResult prop51_islands(const Problem& problem, const Labelling& b, const SampleConnectivity& conn,
                            const std::vector<char>& on_b_prime) {
   CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
   const Complex& c = problem.complex();
-  const std::vector<char> on_b = supports_on(problem, b);
+  const std::vector<char> on_b = boundary_support_flags(problem, b);
   for (int island : conn.islands) {
     std::vector<int> supports;
     for (int p : conn.components[island].patches) supports.push_back(c.patches[p].support);
@@ -118,7 +111,7 @@ CheckResult prop51_islands(const Problem& problem, const Labelling& b, const Sam
 }  // namespace
 
 CheckResult check_prop51(const Problem& problem, const Labelling& b, const Labelling& b_prime) {
-  return prop51_islands(problem, b, sample_connectivity(problem, b), supports_on(problem, b_prime));
+  return prop51_islands(problem, b, sample_connectivity(problem, b), boundary_support_flags(problem, b_prime));
 }
 
 Complex with_one_sample_per_boundary_patch(const Complex& complex, const Labelling& labelling) {
@@ -176,7 +169,7 @@ std::string genericity_note(const Problem& problem, int junction) {
 CheckResult manifold_parity2(const Problem& problem, const Labelling& labelling) {
   CheckResult r{"Sec. 3.1 (orientation-preserving => manifold; junction parity)", CheckResult::Pass, ""};
   const Complex& c = problem.complex();
-  const std::vector<char> on_b = supports_on(problem, labelling);
+  const std::vector<char> on_b = boundary_support_flags(problem, labelling);
   std::map<int, int> ends;  // junction -> boundary support ends there
   for (int g = 0; g < problem.support_count(); ++g) {
     if (!on_b[g]) continue;
@@ -230,7 +223,7 @@ CheckResult manifold3(const Problem& problem, const Labelling& labelling) {
     r.witness = "the complex carries no junction sheets or corners (built elsewhere, e.g. read from JSON)";
     return r;
   }
-  const std::vector<char> on_b = supports_on(problem, labelling);
+  const std::vector<char> on_b = boundary_support_flags(problem, labelling);
   int junctions = 0, corners = 0;
   for (int j = 0; j < static_cast<int>(c.junctions.size()); ++j) {
     const auto& sheets = c.junctions[static_cast<std::size_t>(j)].sheets;
@@ -383,7 +376,7 @@ CheckResult check_prop52(const Problem& problem, const ExtractResult& best, cons
 CheckResult check_prop51_on_states(const Problem& problem, const ExtractResult& best, const Labelling& reference) {
   CheckResult r{"Prop. 5.1 (removable sets)", CheckResult::Pass, ""};
   long checked = 0;
-  const std::vector<char> on_reference = supports_on(problem, reference);
+  const std::vector<char> on_reference = boundary_support_flags(problem, reference);
   for (const Labelling& state : best.expanded) {
     const SampleConnectivity conn = sample_connectivity(problem, state);
     if (conn.sample_connected()) continue;

@@ -167,6 +167,12 @@ std::vector<int> boundary_supports(const Problem& problem, const Labelling& labe
   return out;
 }
 
+std::vector<char> boundary_support_flags(const Problem& problem, const Labelling& labelling) {
+  std::vector<char> on_b(static_cast<std::size_t>(problem.support_count()), 0);
+  for_each_boundary_support(problem, labelling, [&](int g) { on_b[static_cast<std::size_t>(g)] = 1; });
+  return on_b;
+}
+
 bool is_orientation_preserving(const Problem& problem, const Labelling& labelling, std::string* why) {
   const Complex& c = problem.complex();
   for (int k = 0; k < problem.cell_count(); ++k)
@@ -292,9 +298,7 @@ bool is_sample_connected(const Problem& problem, const Labelling& labelling) {
 std::vector<std::vector<int>> removable_sets(const Problem& problem, const Labelling& labelling,
                                              const SampleConnectivity& connectivity) {
   const Complex& c = problem.complex();
-  const std::vector<int> on_b_list = boundary_supports(problem, labelling);
-  std::vector<char> on_b(problem.support_count(), 0);
-  for (int g : on_b_list) on_b[g] = 1;
+  const std::vector<char> on_b = boundary_support_flags(problem, labelling);
   std::set<std::vector<int>> seen;
   std::vector<std::vector<int>> out;
   auto add = [&](std::vector<int> set) {

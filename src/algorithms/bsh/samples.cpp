@@ -82,6 +82,28 @@ ExtractResult run(const Complex& sampled, const SampleGenOptions& options, Metho
   return extract(problem, extract_options);
 }
 
+/// Fig. 12's next sample: the largest patch of b \ b' (b: `target`'s boundary, b': `found`'s; both labellings of
+/// `problem`) that holds no sample yet (not in `sampled`), among the patches b runs along with their halfspace's
+/// orientation (a sample on a coincident patch used reversed would forbid the target's own orientation,
+/// problem.hpp); the first of equally large ones. -1 when there is none.
+int largest_unsampled_patch(const Problem& problem, const Labelling& target, const Labelling& found,
+                            const std::vector<int>& sampled, const CompareOptions& compare_options) {
+  const Complex& complex = problem.complex();
+  const std::vector<char> on_found = boundary_support_flags(problem, found);
+  int pick = -1;
+  for (int g : boundary_supports(problem, target)) {
+    if (on_found[static_cast<std::size_t>(g)]) continue;
+    for (int p : problem.supports()[g].patches) {
+      if (std::find(sampled.begin(), sampled.end(), p) != sampled.end()) continue;
+      if (!target[complex.patches[p].inside_cell] || target[complex.patches[p].outside_cell]) continue;
+      if (pick < 0 ||
+          compare(complex.patches[p].measure, complex.patches[pick].measure, compare_options) == Order::Greater)
+        pick = p;
+    }
+  }
+  return pick;
+}
+
 }  // namespace
 
 std::vector<int> initial_samples(const Complex& complex, const Labelling& target, const CompareOptions& compare) {
@@ -111,23 +133,7 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
       result.reproduced = true;
       return result;
     }
-    // The largest sample-free patch of b \ b' (Fig. 12).
-    std::vector<char> on_found(target_problem.support_count(), 0);
-    for (int g : boundary_supports(target_problem, found.labelling)) on_found[g] = 1;
-    int pick = -1;
-    for (int g : boundary_supports(target_problem, target)) {
-      if (on_found[g]) continue;
-      for (int p : target_problem.supports()[g].patches) {
-        if (std::find(result.sample_patches.begin(), result.sample_patches.end(), p) != result.sample_patches.end())
-          continue;
-        // Only a patch the target runs along with its halfspace's orientation: a sample on a coincident patch
-        // used reversed would forbid the target's own orientation (problem.hpp).
-        if (!target[complex.patches[p].inside_cell] || target[complex.patches[p].outside_cell]) continue;
-        if (pick < 0 || compare(complex.patches[p].measure, complex.patches[pick].measure, options.compare) ==
-                            Order::Greater)
-          pick = p;
-      }
-    }
+    int pick = largest_unsampled_patch(target_problem, target, found.labelling, result.sample_patches, options.compare);
     if (pick < 0 && options.search != Method::BestFirst && options.fallback_states > 0) {
       // Every patch of b \ b' has a sample, so the target covers more samples than b': the search missed the
       // optimum. Redo this round with the complete search.
@@ -143,20 +149,7 @@ SampleGenResult generate_samples(const Complex& complex, const Labelling& target
           result.reproduced = true;
           return result;
         }
-        std::fill(on_found.begin(), on_found.end(), 0);
-        for (int g : boundary_supports(target_problem, found.labelling)) on_found[g] = 1;
-        for (int g : boundary_supports(target_problem, target)) {
-          if (on_found[g]) continue;
-          for (int p : target_problem.supports()[g].patches) {
-            if (std::find(result.sample_patches.begin(), result.sample_patches.end(), p) !=
-                result.sample_patches.end())
-              continue;
-            if (!target[complex.patches[p].inside_cell] || target[complex.patches[p].outside_cell]) continue;
-            if (pick < 0 || compare(complex.patches[p].measure, complex.patches[pick].measure, options.compare) ==
-                                Order::Greater)
-              pick = p;
-          }
-        }
+        pick = largest_unsampled_patch(target_problem, target, found.labelling, result.sample_patches, options.compare);
       }
     }
     if (pick < 0) {

@@ -106,6 +106,8 @@ class Problem {
 
 /// Supports on the boundary of `labelling`, ascending.
 std::vector<int> boundary_supports(const Problem& problem, const Labelling& labelling);
+/// The same as flags: entry g (one per support of `problem`) is 1 when support g is on `labelling`'s boundary.
+std::vector<char> boundary_support_flags(const Problem& problem, const Labelling& labelling);
 /// Calls f(g) for every support g on the boundary of `labelling`, ascending: boundary_supports without making the
 /// list (searches walk thousands of boundaries).
 template <class F>

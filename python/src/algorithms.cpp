@@ -134,6 +134,7 @@ py::dict stats_dict(const bsh::SearchStats& s) {
   py::dict d;
   d["graph_cuts"] = s.graph_cuts;
   d["uncertified_cuts"] = s.uncertified_cuts;
+  d["reused_cuts"] = s.reused_cuts;
   d["states_expanded"] = s.states_expanded;
   d["states_created"] = s.states_created;
   d["max_queue"] = s.max_queue;

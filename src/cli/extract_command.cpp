@@ -97,7 +97,8 @@ std::string summary(const LoadedInput& in, const bsh::Problem& problem, const bs
     const int patch = oriented_patch(in.complex(), g, r.labelling);
     out << " " << in.complex().halfspace_names[in.complex().patches[patch].halfspace] << "#" << patch;
   }
-  out << "\nstats " << r.stats.graph_cuts << " graph cuts (" << r.stats.uncertified_cuts << " uncertified), "
+  out << "\nstats " << r.stats.graph_cuts << " graph cuts (" << r.stats.uncertified_cuts << " uncertified, "
+      << r.stats.reused_cuts << " more reused), "
       << r.stats.states_expanded << " states expanded, " << r.stats.states_created << " created";
   if (r.stats.labellings_enumerated) out << ", " << r.stats.labellings_enumerated << " labellings enumerated";
   out << ", " << r.stats.seconds << " s\n";

@@ -193,6 +193,7 @@ nlohmann::json result_to_json(const bsh::Problem& problem, const bsh::ExtractRes
   j["tied"] = tied;
   nlohmann::json stats{{"graph_cuts", r.stats.graph_cuts},
                        {"uncertified_cuts", r.stats.uncertified_cuts},
+                       {"reused_cuts", r.stats.reused_cuts},
                        {"states_expanded", r.stats.states_expanded},
                        {"states_created", r.stats.states_created},
                        {"max_queue", r.stats.max_queue},

@@ -246,6 +246,7 @@ TEST_CASE("bsh property 1: best-first = brute force (Prop. 5.2), same boundary u
     RC_CLASSIFY(!generic, "non-generic");
     RC_CLASSIFY(!generic && compare(search.energy, bf.energy) == Order::Greater, "search missed the optimum");
     RC_CLASSIFY(search.stats.states_expanded > search.ties.count, "searched past the root");
+    RC_CLASSIFY(search.stats.reused_cuts > 0, "reused a cut");
     RC_CLASSIFY(bf.optimal.size() > 1u, "tie");
     // hsx's default certifies non-generic cases with the oracle: then it is exact everywhere.
     check_against_oracle(problem, generic ? search : best_first(problem), bf, true);
@@ -368,6 +369,51 @@ TEST_CASE("bsh property 2b: the warm-started cut is the exact optimum (small) an
     for (auto& f : k.forced) f = static_cast<signed char>(*rc::gen::inRange(-6, 2) < 0 ? -1 : *rc::gen::inRange(0, 2));
     for (auto& r : k.removed) r = static_cast<char>(*rc::gen::inRange(0, 8) == 0);
     check_warm_start_against_zero_flow(problem, k);
+  });
+}
+
+TEST_CASE("bsh property 2c: a cut whose boundary avoids more removed supports is their cut too (proofs/bsh.md 8 (e))",
+          "[bsh][property][graphcut]") {
+  // The lemma behind best-first's reuse of cuts (KnownCuts in extract.cpp): removed set R, its certified cut b,
+  // and R' = R plus supports that are not on b: graph_cut under R' returns b again, certified, with b's energy.
+  rc::prop("graph_cut(R') = graph_cut(R) when R is in R' and b(R) avoids R'", [] {
+    SceneGenOptions o = small_scenes();
+    o.max_halfspaces = 12;
+    o.max_samples = 12;
+    const Scene2 scene = *gen_scene(o);
+    const Complex complex = complex_of(scene);
+    const Problem problem(complex);
+    CutConstraints k;
+    k.removed.assign(problem.support_count(), 0);
+    for (auto& r : k.removed) r = static_cast<char>(*rc::gen::inRange(0, 8) == 0);
+    if (*rc::gen::inRange(0, 3) == 0) {  // sometimes forced cells too: a tie enumeration's searches have them
+      k.forced.assign(problem.cell_count(), -1);
+      k.forced[*rc::gen::inRange(0, problem.cell_count())] = static_cast<signed char>(*rc::gen::inRange(0, 2));
+    }
+    const CutResult cut = graph_cut(problem, k);
+    RC_PRE(cut.energy.missing_samples >= 0 && cut.certified);
+    const std::vector<char> on_b = boundary_support_flags(problem, cut.labelling);
+    CutConstraints more = k;
+    int added = 0;
+    for (int g = 0; g < problem.support_count(); ++g)
+      if (!on_b[g] && !more.removed[g] && *rc::gen::inRange(0, 3) == 0) {
+        more.removed[g] = 1;
+        ++added;
+      }
+    RC_CLASSIFY(added == 0, "nothing added");
+    const CutResult again = graph_cut(problem, more);
+    RC_ASSERT(again.labelling == cut.labelling);
+    RC_ASSERT(again.energy.missing_samples == cut.energy.missing_samples);
+    const Order order = compare(again.energy, cut.energy);
+    RC_ASSERT(order != Order::Less);
+    RC_ASSERT(order != Order::Greater);
+    RC_ASSERT(again.certified);
+    // And the converse that makes the lemma's condition necessary: removing a support of b changes the cut.
+    const auto first_on_b = std::find(on_b.begin(), on_b.end(), 1);
+    if (first_on_b != on_b.end()) {
+      more.removed[first_on_b - on_b.begin()] = 1;
+      RC_ASSERT(graph_cut(problem, more).labelling != cut.labelling);
+    }
   });
 }
 

@@ -15,7 +15,7 @@
 //                  (the shape's side and the other) and "triangles" (the patch's arrangement triangles: the
 //                  boundary mesh is extract's --obj/--ply/--off, io/mesh_export.hpp)
 //    "inside_cells": [ids], "removed_patches": [ids], "steps": [[patch ids]...] (beam), "tied": [[cell ids]...],
-//    "stats": {"graph_cuts", "uncertified_cuts", "states_expanded", "states_created", "max_queue",
+//    "stats": {"graph_cuts", "uncertified_cuts", "reused_cuts", "states_expanded", "states_created", "max_queue",
 //              "labellings_enumerated", "seconds",
 //              "branch_and_bound" (exact only): {"nodes", "nodes_created", "pruned_by_bound", "pruned_by_islands",
 //                "island_branches", "certified_bounds", "lower_bound", "gap", "max_gap"}}}   bounds and gaps as

@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <limits>
 #include <optional>
@@ -138,6 +139,81 @@ class SearchContext {
   std::optional<CutResult> best_feasible_;
 };
 
+/// The certified cuts one search has made, asked before each new cut whether one of them already answers it.
+/// A child's constraints only add removed supports, and a removed support only makes arcs infinite. So when the cut
+/// of a removed set R (the smallest minimum cut, the source side graph_cut returns) has none of a larger removed set
+/// R' on its boundary, it is the smallest minimum cut under R' as well (proofs/bsh.md entry 8 (e)): the same
+/// labelling, energy and certificate that graph_cut would return. The forced labels are the search's, the same for
+/// every cut it makes.
+class KnownCuts {
+ public:
+  explicit KnownCuts(int supports) : words_((static_cast<std::size_t>(supports) + 63) / 64), query_(words_) {}
+
+  /// Records the cut of the next archive state (states are added in archive order): made under removed set
+  /// `removed` (ascending), a child of archive state `parent` (-1 for the root). An uncertified cut is never
+  /// offered as an answer.
+  void add(const Problem& problem, int parent, const std::vector<int>& removed, const CutResult& cut) {
+    const int k = static_cast<int>(usable_.size());
+    removed_.resize(removed_.size() + words_, 0);
+    boundary_.resize(boundary_.size() + words_, 0);
+    for (int g : removed) set(removed_, k, g);
+    if (cut.certified) for_each_boundary_support(problem, cut.labelling, [&](int g) { set(boundary_, k, g); });
+    usable_.push_back(cut.certified ? 1 : 0);
+    first_child_.push_back(-1);
+    next_sibling_.push_back(-1);
+    if (parent >= 0) {
+      next_sibling_[k] = first_child_[parent];
+      first_child_[parent] = k;
+    }
+  }
+
+  /// An archive state whose cut is the cut under removed set `removed` (ascending), or -1. Only a state whose
+  /// removed set lies in `removed` can answer, and a state's removed set contains its parent's: those states form
+  /// a subtree of the search tree that holds the root, walked from the root. Which state answers does not matter
+  /// (they all hold the same cut).
+  int answering(const std::vector<int>& removed) {
+    if (usable_.empty()) return -1;
+    std::fill(query_.begin(), query_.end(), 0);
+    for (int g : removed) query_[g / 64] |= std::uint64_t{1} << (g % 64);
+    if (!removed_within(0)) return -1;
+    stack_.assign(1, 0);
+    while (!stack_.empty()) {
+      const int k = stack_.back();
+      stack_.pop_back();
+      if (usable_[k] && boundary_avoids(k)) return k;
+      for (int child = first_child_[k]; child >= 0; child = next_sibling_[child])
+        if (removed_within(child)) stack_.push_back(child);
+    }
+    return -1;
+  }
+
+ private:
+  // Each state's supports as `words_` 64-bit words, all states in one array (state k at k * words_): the walk
+  // reads a few words per state, and one array keeps them together (a bitset object per state scattered them).
+  void set(std::vector<std::uint64_t>& bits, int k, int g) const {
+    bits[static_cast<std::size_t>(k) * words_ + static_cast<std::size_t>(g) / 64] |= std::uint64_t{1} << (g % 64);
+  }
+  bool removed_within(int k) const {  // state k's removed set lies in the query
+    const std::uint64_t* w = removed_.data() + static_cast<std::size_t>(k) * words_;
+    for (std::size_t i = 0; i < words_; ++i)
+      if (w[i] & ~query_[i]) return false;
+    return true;
+  }
+  bool boundary_avoids(int k) const {  // state k's boundary has no support of the query
+    const std::uint64_t* w = boundary_.data() + static_cast<std::size_t>(k) * words_;
+    for (std::size_t i = 0; i < words_; ++i)
+      if (w[i] & query_[i]) return false;
+    return true;
+  }
+
+  std::size_t words_;
+  std::vector<std::uint64_t> removed_, boundary_;  ///< per state: its removed supports; its cut's boundary supports
+  std::vector<char> usable_;                       ///< per state: its cut is certified
+  std::vector<int> first_child_, next_sibling_;    ///< the search tree: per state, its last child; the one before
+  std::vector<std::uint64_t> query_;               ///< scratch: the removed set asked about
+  std::vector<int> stack_;                         ///< scratch for the walk
+};
+
 /// Deterministic total preference between states: certified energy first, then the removed set, then labels.
 bool before(const State& a, const State& b, const CompareOptions& options) {
   const Order o = compare(a.cut.energy, b.cut.energy, options);
@@ -263,6 +339,8 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   std::unordered_set<std::vector<int>, boost::hash<std::vector<int>>> visited{base_removed};
   State root{base_removed, ctx.cut(base_removed, forced), -1};
   if (root.cut.energy.missing_samples < 0) return out;  // the constraints admit no labelling
+  KnownCuts known(problem.support_count());
+  known.add(problem, -1, root.removed, root.cut);
   out.archive.push_back(std::move(root));
   Frontier queue(problem, out.archive, cmp);
   queue.push(0);
@@ -294,9 +372,12 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
       std::vector<int> removed = merged(state.removed, set);
       if (!visited.insert(removed).second) continue;
       if (ctx.limit_reached()) return out;
-      CutResult cut = ctx.cut(removed, forced);
+      const int answer = known.answering(removed);
+      if (answer >= 0) ++ctx.stats().reused_cuts;
+      CutResult cut = answer >= 0 ? out.archive[answer].cut : ctx.cut(removed, forced);
       if (cut.energy.missing_samples < 0) continue;
       if (is_sample_connected(problem, cut.labelling)) ctx.offer_feasible(cut);
+      known.add(problem, current, removed, cut);
       out.archive.push_back(State{std::move(removed), std::move(cut), current});
       queue.push(static_cast<int>(out.archive.size()) - 1);
       ++ctx.stats().states_created;

@@ -95,6 +95,9 @@ struct Ties {
 struct SearchStats {
   long graph_cuts = 0;
   long uncertified_cuts = 0;
+  /// Searches: states whose cut an earlier cut of the same search provably is (proofs/bsh.md entry 8 (e)), taken
+  /// from it instead of made again (not counted in graph_cuts)
+  long reused_cuts = 0;
   long states_expanded = 0;
   long states_created = 0;
   long max_queue = 0;

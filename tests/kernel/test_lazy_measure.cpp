@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <memory>
 #include <stdexcept>
 #include <thread>
@@ -80,4 +81,35 @@ TEST_CASE("Lazy of another type: empty by default, a known value, or a cache ent
   none = std::vector<int>{1};
   CHECK(none.get() == std::vector<int>{1});
   CHECK_THROWS_AS(hsx::Lazy<std::vector<int>>(cache, 2), std::out_of_range);
+}
+
+TEST_CASE("LazyCache: threads that ask for the same entries at once compute each once, never two at a time",
+          "[lazy_measure]") {
+  // The guarantees of LazyCache::get that a lost lock would break: entry k is computed once although four
+  // threads ask for it together, and calls of compute never overlap. Each call sleeps, so that without the lock
+  // the threads would meet inside it.
+  constexpr std::size_t n = 24;
+  std::vector<std::atomic<int>> calls(n);
+  for (auto& c : calls) c = 0;
+  std::atomic<int> inside{0}, overlaps{0};
+  const auto cache = std::make_shared<const hsx::LazyCache<long>>(n, [&](std::size_t k) {
+    if (inside.fetch_add(1) != 0) ++overlaps;
+    std::this_thread::sleep_for(std::chrono::microseconds(300));
+    ++calls[k];
+    inside.fetch_sub(1);
+    return static_cast<long>(k * k);
+  });
+  std::atomic<int> ready{0}, wrong{0};
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&] {
+      ++ready;
+      while (ready.load() < 4) std::this_thread::yield();  // start together
+      for (std::size_t k = 0; k < n; ++k)
+        if (cache->get(k) != static_cast<long>(k * k)) ++wrong;
+    });
+  for (auto& th : threads) th.join();
+  CHECK(wrong == 0);
+  CHECK(overlaps == 0);
+  for (std::size_t k = 0; k < n; ++k) CHECK(calls[k] == 1);
 }

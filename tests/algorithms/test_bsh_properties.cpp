@@ -339,6 +339,25 @@ void check_warm_start_against_zero_flow(const Problem& problem, CutConstraints c
   RC_ASSERT(order == Order::Equal || (order == Order::Tie && !(warm.certified && cold.certified)));
 }
 
+namespace {
+
+/// The complex of a random scene of small_scenes() with up to `halfspaces` halfspaces and `samples` samples.
+Complex gen_larger_complex(int halfspaces, int samples) {
+  SceneGenOptions o = small_scenes();
+  o.max_halfspaces = halfspaces;
+  o.max_samples = samples;
+  return complex_of(*gen_scene(o));
+}
+
+/// Random removed supports (CutConstraints::removed): each support with probability 1/8.
+std::vector<char> gen_removed(const Problem& problem) {
+  std::vector<char> removed(problem.support_count(), 0);
+  for (auto& r : removed) r = static_cast<char>(*rc::gen::inRange(0, 8) == 0);
+  return removed;
+}
+
+}  // namespace
+
 TEST_CASE("bsh property 2b: the warm-started cut is the exact optimum (small) and the zero-flow cut (larger)",
           "[bsh][property][graphcut]") {
   rc::prop("small scenes: warm-started cut = relaxed oracle, certified on straight scenes", [] {
@@ -355,19 +374,14 @@ TEST_CASE("bsh property 2b: the warm-started cut is the exact optimum (small) an
     check_warm_start_against_zero_flow(problem, {});
   });
   rc::prop("larger scenes, with forced cells and removed supports: warm start = zero flow", [] {
-    SceneGenOptions o = small_scenes();
-    o.max_halfspaces = 14;
-    o.max_samples = 20;
-    const Scene2 scene = *gen_scene(o);
-    const Complex complex = complex_of(scene);
+    const Complex complex = gen_larger_complex(14, 20);
     const Problem problem(complex);
     RC_CLASSIFY(problem.cell_count() > 30, "more than 30 cells");
     check_warm_start_against_zero_flow(problem, {});
     CutConstraints k;
     k.forced.assign(problem.cell_count(), -1);
-    k.removed.assign(problem.support_count(), 0);
+    k.removed = gen_removed(problem);
     for (auto& f : k.forced) f = static_cast<signed char>(*rc::gen::inRange(-6, 2) < 0 ? -1 : *rc::gen::inRange(0, 2));
-    for (auto& r : k.removed) r = static_cast<char>(*rc::gen::inRange(0, 8) == 0);
     check_warm_start_against_zero_flow(problem, k);
   });
 }
@@ -377,15 +391,10 @@ TEST_CASE("bsh property 2c: a cut whose boundary avoids more removed supports is
   // The lemma behind best-first's reuse of cuts (KnownCuts in extract.cpp): removed set R, its certified cut b,
   // and R' = R plus supports that are not on b: graph_cut under R' returns b again, certified, with b's energy.
   rc::prop("graph_cut(R') = graph_cut(R) when R is in R' and b(R) avoids R'", [] {
-    SceneGenOptions o = small_scenes();
-    o.max_halfspaces = 12;
-    o.max_samples = 12;
-    const Scene2 scene = *gen_scene(o);
-    const Complex complex = complex_of(scene);
+    const Complex complex = gen_larger_complex(12, 12);
     const Problem problem(complex);
     CutConstraints k;
-    k.removed.assign(problem.support_count(), 0);
-    for (auto& r : k.removed) r = static_cast<char>(*rc::gen::inRange(0, 8) == 0);
+    k.removed = gen_removed(problem);
     if (*rc::gen::inRange(0, 3) == 0) {  // sometimes forced cells too: a tie enumeration's searches have them
       k.forced.assign(problem.cell_count(), -1);
       k.forced[*rc::gen::inRange(0, problem.cell_count())] = static_cast<signed char>(*rc::gen::inRange(0, 2));

@@ -150,14 +150,18 @@ class KnownCuts {
   explicit KnownCuts(int supports) : words_((static_cast<std::size_t>(supports) + 63) / 64), query_(words_) {}
 
   /// Records the cut of the next archive state (states are added in archive order): made under removed set
-  /// `removed` (ascending), a child of archive state `parent` (-1 for the root). An uncertified cut is never
-  /// offered as an answer.
-  void add(const Problem& problem, int parent, const std::vector<int>& removed, const CutResult& cut) {
+  /// `removed` (ascending), a child of archive state `parent` (-1 for the root); `answer`: the state whose cut it
+  /// took (answering), whose boundary words are copied, or -1. An uncertified cut is never offered as an answer.
+  void add(const Problem& problem, int parent, const std::vector<int>& removed, const CutResult& cut, int answer) {
     const int k = static_cast<int>(usable_.size());
     removed_.resize(removed_.size() + words_, 0);
     boundary_.resize(boundary_.size() + words_, 0);
     for (int g : removed) set(removed_, k, g);
-    if (cut.certified) for_each_boundary_support(problem, cut.labelling, [&](int g) { set(boundary_, k, g); });
+    if (answer >= 0)
+      std::copy_n(boundary_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(answer) * words_), words_,
+                  boundary_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(k) * words_));
+    else if (cut.certified)
+      for_each_boundary_support(problem, cut.labelling, [&](int g) { set(boundary_, k, g); });
     usable_.push_back(cut.certified ? 1 : 0);
     first_child_.push_back(-1);
     next_sibling_.push_back(-1);
@@ -340,7 +344,7 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
   State root{base_removed, ctx.cut(base_removed, forced), -1};
   if (root.cut.energy.missing_samples < 0) return out;  // the constraints admit no labelling
   KnownCuts known(problem.support_count());
-  known.add(problem, -1, root.removed, root.cut);
+  known.add(problem, -1, root.removed, root.cut, -1);
   out.archive.push_back(std::move(root));
   Frontier queue(problem, out.archive, cmp);
   queue.push(0);
@@ -377,7 +381,7 @@ SearchOutcome search(SearchContext& ctx, const std::vector<int>& base_removed,
       CutResult cut = answer >= 0 ? out.archive[answer].cut : ctx.cut(removed, forced);
       if (cut.energy.missing_samples < 0) continue;
       if (is_sample_connected(problem, cut.labelling)) ctx.offer_feasible(cut);
-      known.add(problem, current, removed, cut);
+      known.add(problem, current, removed, cut, answer);
       out.archive.push_back(State{std::move(removed), std::move(cut), current});
       queue.push(static_cast<int>(out.archive.size()) - 1);
       ++ctx.stats().states_created;

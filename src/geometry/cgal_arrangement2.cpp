@@ -17,6 +17,7 @@
 #include <array>
 #include <deque>
 #include <map>
+#include <new>
 #include <set>
 #include <sstream>
 
@@ -555,6 +556,7 @@ struct Arrangement2::Impl {
   std::vector<Halfedge> halfedges;           // per edge index: its representative halfedge
   std::vector<VertexHandle> vertices;        // per vertex index: its record
   std::vector<std::vector<int>> on_boundary;  // per halfspace: the edges (not on the box) that carry it
+  bool abandoned = false;                      // see build(): never destroyed when true
 
   /// Exact point location (walking along a vertical line).
   PointLocation2 locate(const CgalPoint& p) const {
@@ -597,14 +599,27 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   Arrangement2 out;
   out.domain_ = scene.domain;
   out.halfspace_count_ = static_cast<int>(scene.halfspaces.size());
-  auto impl = std::make_shared<Impl>();
+  // CGAL's insertion is not safe against a failed allocation: after std::bad_alloc in the middle of the sweep,
+  // destroying the half-built arrangement crashed (SIGSEGV in its destructor, in about 1 of 5 runs of
+  // tests/hostile/cases/limits.cases "out of memory is a clean error" under `ulimit -v 150000`). So an arrangement
+  // whose insertion ran out of memory is abandoned, never destroyed: its memory is lost, and the caller reports that
+  // the input needs more memory. SizeGuard's refusal is thrown after a completed face split, when the arrangement is
+  // whole; such an arrangement is destroyed as usual (campaigns refuse scenes and go on).
+  auto impl = std::shared_ptr<Impl>(new Impl, [](Impl* built) {
+    if (!built->abandoned) delete built;
+  });
   CgalArrangement& arr = impl->arr;
   auto pieces = std::make_shared<Pieces>();
 
   // --- 1. Curves: the box, then every halfspace boundary, each distinct curve once (see DistinctCurves). --------
   const DistinctCurves curves = distinct_curves(scene);
   SizeGuard guard(arr, limits, out.halfspace_count_, curves.cells_at_least);
-  CGAL::insert(arr, curves.curves.begin(), curves.curves.end());
+  try {
+    CGAL::insert(arr, curves.curves.begin(), curves.curves.end());
+  } catch (const std::bad_alloc&) {
+    impl->abandoned = true;
+    throw;
+  }
   guard.detach();
 
   // --- 2. Vertices (each record gets its index, see Dcel). --------------------------------------------------------

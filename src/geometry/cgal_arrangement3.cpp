@@ -45,6 +45,7 @@
 #include <functional>
 #include <mutex>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <unordered_map>
 
@@ -129,7 +130,7 @@ int worker_count(int requested) {
 
 /// Runs work(i, worker) for i in [0, n) on `threads` threads (worker in [0, threads) names the thread, for
 /// per-thread caches); rethrows the exception of the lowest failing i. Results written per i do not depend on the
-/// thread count.
+/// thread count; when the system refuses a thread, the ones started (at least the calling one) do all the work.
 void parallel_for(int n, int threads, const std::function<void(int, int)>& work) {
   threads = std::max(1, std::min(threads, n));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(std::max(n, 0)));
@@ -144,7 +145,13 @@ void parallel_for(int n, int threads, const std::function<void(int, int)>& work)
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
+  for (int t = 1; t < threads; ++t) {
+    try {
+      pool.emplace_back(run, t);
+    } catch (const std::system_error&) {
+      break;  // the system refused a thread (memory for its stack, a process limit): fewer threads share the work
+    }
+  }
   run(0);
   for (auto& t : pool) t.join();
   for (auto& e : errors)

@@ -11,9 +11,10 @@
 //   installs the handlers should treat std::bad_alloc from hsx the same way: drop everything of that call.
 // - Unwinding after std::bad_alloc may itself allocate (a destructor that walks a large document with a stack of
 //   its own, an error message being built). When memory is exhausted those allocations fail too, and an exception
-//   thrown during unwinding ends the process in std::terminate. install_out_of_memory_reserve() keeps a block
-//   aside that the first failed allocation (operator new or GMP) gives back before throwing, so that the unwinding
-//   which follows has room; later failures throw as usual.
+//   thrown during unwinding ends the process in std::terminate. install_out_of_memory_reserve() maps address
+//   space from the system (not from the allocator, whose freed blocks stay in its own pools where the unwinding
+//   cannot always use them) that the first failed allocation (operator new or GMP) unmaps before throwing, so that
+//   the unwinding which follows has room; later failures throw as usual.
 #pragma once
 
 #include <cstddef>
@@ -25,9 +26,9 @@ namespace hsx {
 /// std::malloc/realloc/free, as GMP's defaults do.
 void install_gmp_allocation_handlers();
 
-/// Sets aside `bytes` of memory, released by the first allocation that fails after this call (through operator new
-/// or, once install_gmp_allocation_handlers() ran, GMP), just before that allocation throws std::bad_alloc: the
-/// stack unwinding that follows can then allocate. Installs a std::new_handler (replacing any other). Call it once,
+/// Maps `bytes` of address space from the system (mmap; none when that fails or `bytes` is 0), unmapped by the first
+/// allocation that fails after this call (through operator new or, once install_gmp_allocation_handlers() ran, GMP),
+/// just before that allocation throws std::bad_alloc: the stack unwinding that follows can then allocate. Installs a std::new_handler (replacing any other). Call it once,
 /// at the start of a program that ends its run on std::bad_alloc; later calls replace the reserve.
 void install_out_of_memory_reserve(std::size_t bytes);
 

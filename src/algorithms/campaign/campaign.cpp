@@ -15,8 +15,10 @@
 #include <exception>
 #include <limits>
 #include <mutex>
+#include <new>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <thread>
 #include <type_traits>
 
@@ -602,6 +604,8 @@ SceneRecord check_scene_since(const CampaignSettings& s, const Scene& scene, std
     r.checks = check_arranged(s, scene, *arranged, intended, left, cancel);
   } catch (const CatalogueMismatch&) {
     throw;  // the catalogue does not match check_all: a bug of this file, not of the scene
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory ends the run (exit 2): it says nothing about the input
   } catch (const std::exception& e) {
     r.outcome = SceneOutcome::Error;
     r.note = std::string("the library threw: ") + e.what();
@@ -666,6 +670,8 @@ int halfspaces_drawn(const CampaignSettings& s, std::uint64_t index) {
   bare.max_samples = 0;
   try {
     return static_cast<int>(random_scene(bare, s.seed, index).scene.halfspaces.size());
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory ends the run (exit 2): it says nothing about the input
   } catch (const std::exception&) {
     return 0;
   }
@@ -682,6 +688,8 @@ SceneRecord run_scene3(const CampaignSettings& s, std::uint64_t index, const std
                                &generated);
   } catch (const InputError& e) {
     return not_generated(s, index, SceneOutcome::Refused, std::string("generating it: ") + e.what(), generated);
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory ends the run (exit 2): it says nothing about the input
   } catch (const std::exception& e) {
     return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what(), generated);
   }
@@ -715,6 +723,8 @@ std::optional<Arranged2> generated_arrangement(const CampaignSettings& s, const 
   if (!generated.arrangement || !admits_defaults(s.limits)) return std::nullopt;
   try {
     return arrange(generated.scene, *generated.arrangement);
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory ends the run (exit 2): it says nothing about the input
   } catch (const std::exception&) {
     return std::nullopt;
   }
@@ -737,6 +747,8 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
                              : std::string("choosing its samples (under the default arrangement limits, which the "
                                            "campaign's do not change): ") + e.what(),
                          halfspaces_drawn(s, index));
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory ends the run (exit 2): it says nothing about the input
   } catch (const std::exception& e) {
     return not_generated(s, index, SceneOutcome::Error, std::string("the generator threw: ") + e.what(),
                          halfspaces_drawn(s, index));
@@ -791,7 +803,17 @@ void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 0; t < jobs; ++t) pool.emplace_back(work);
+  for (int t = 0; t < jobs; ++t) {
+    try {
+      pool.emplace_back(work);
+    } catch (const std::system_error&) {
+      break;  // the system refused a thread (memory for its stack, a process limit): fewer threads, same records
+    }
+  }
+  if (pool.empty()) {  // not even one: this thread runs them (nothing has been started or written yet)
+    for (std::uint64_t i : indices) sink(run_scene(settings, i, cancel));
+    return;
+  }
   std::exception_ptr sink_error;
   while (true) {
     std::unique_lock<std::mutex> lock(m);

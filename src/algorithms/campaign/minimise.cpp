@@ -8,6 +8,7 @@
 #include <chrono>
 #include <functional>
 #include <map>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <type_traits>
@@ -124,6 +125,8 @@ struct Reducer {
       arranged = arranged_for(eval, candidate);
     } catch (const InputError&) {
       return std::nullopt;  // refused by the limits (or a sample the arrangement refuses): does not fail
+    } catch (const std::bad_alloc&) {
+      throw;  // out of memory ends the run (exit 2): it says nothing about the input
     } catch (const std::exception& e) {
       return error_record(eval, index, e.what());
     }
@@ -144,6 +147,8 @@ struct Reducer {
     if (out_of_budget()) return false;
     try {
       validate_and_resolve(candidate);
+    } catch (const std::bad_alloc&) {
+      throw;  // out of memory ends the run (exit 2): it says nothing about the input
     } catch (const std::exception&) {
       return false;  // not a valid scene: not a step
     }
@@ -222,6 +227,8 @@ struct Reducer {
       Shape s;
       try {
         s.complex = arranged_for(eval, scene).complex;
+      } catch (const std::bad_alloc&) {
+        throw;  // out of memory ends the run (exit 2): it says nothing about the input
       } catch (const std::exception&) {
         result.reproduced = false;  // the original no longer arranges (other limits): nothing to carry
         return false;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <new>
 #include <stdexcept>
 
 namespace hsx::nhrep {
@@ -40,6 +41,8 @@ PipelineRun run_pipeline_on(const std::function<BoundarySurface()>& boundary, co
     o.evaluated = true;
     for (const std::string& p : o.eval.violations) o.problems.push_back("evaluation: " + p);
     if (!o.eval.describable && o.eval.correct) o.problems.push_back("evaluation: correct but not describable");
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory ends the run (exit 2): it says nothing about the input
   } catch (const std::exception& e) {
     o.problems.push_back(std::string("error: ") + e.what());
   }

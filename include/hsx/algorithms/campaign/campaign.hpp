@@ -286,7 +286,8 @@ SceneRecord check_scene(const CampaignSettings& settings, const Scene3& scene, A
 /// Runs the scenes `indices` on `jobs` threads (>= 1) and calls `sink` with each record, on the calling thread,
 /// in the order of `indices`, as soon as it and every record before it are done (at most 512 x jobs records
 /// wait for their turn). An exception from `sink` stops the run (the threads finish their current scene) and is
-/// rethrown. Throws InputError for invalid settings or jobs < 1.
+/// rethrown. Throws InputError for invalid settings or jobs < 1. When the system refuses a thread (memory for its
+/// stack, a process limit), the threads started do the work (none: the calling thread does); the records are the same.
 /// - `cancel`: run_scene's, for every scene (empty: none). Cancelling does not stop run_scenes by itself: the sink
 ///   decides (it throws to stop, e.g. the Python module's campaign iterator on Ctrl-C), and the scenes in progress
 ///   then end at their next check of `cancel` instead of running to their end.

@@ -28,6 +28,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <new>
 #include <sstream>
 
 namespace hsx::cli {
@@ -571,6 +572,8 @@ int run_corpus(const CorpusOptions& o) {
         case csg::ProgramOutcome::BhcFailed: ++bhc_failed; break;
         case csg::ProgramOutcome::ConversionFailed: ++round_trip_failed; break;
       }
+    } catch (const std::bad_alloc&) {
+      throw;  // out of memory ends the run (exit 2): it says nothing about the program
     } catch (const std::exception& e) {
       ++errors;
       row.failure = std::string("error: ") + e.what();

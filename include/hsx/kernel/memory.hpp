@@ -28,7 +28,8 @@ void install_gmp_allocation_handlers();
 
 /// Maps `bytes` of address space from the system (mmap; none when that fails or `bytes` is 0), unmapped by the first
 /// allocation that fails after this call (through operator new or, once install_gmp_allocation_handlers() ran, GMP),
-/// just before that allocation throws std::bad_alloc: the stack unwinding that follows can then allocate. Installs a std::new_handler (replacing any other). Call it once,
+/// just before that allocation throws std::bad_alloc: the stack unwinding that follows can then allocate. Installs a
+/// std::new_handler (replacing any other). Call it once,
 /// at the start of a program that ends its run on std::bad_alloc; later calls replace the reserve.
 void install_out_of_memory_reserve(std::size_t bytes);
 

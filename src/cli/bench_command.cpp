@@ -474,18 +474,19 @@ void check_random_scenes(const std::string& prefix, int scenes, const std::vecto
     if (h < 1) throw InputError(prefix + "-halfspaces: every size must be at least 1");
 }
 
-/// The certified cut (warm-started and from the zero flow) and the two double max flows of one problem, timed.
+/// The certified cut (warm-started and from the zero flow) and the two double max flows of one problem, timed
+/// alternately.
 void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& repeat, BenchRow& row) {
   row.sizes = {problem.cell_count(), patches};
   bsh::CutResult cut, cold_cut;
   bsh::CutConstraints cold;
   cold.warm_start = false;
-  StageResult certified, zero_flow, bk, ek;
-  certified.timing = time_repeatedly([&] { cut = bsh::graph_cut(problem, {}); }, repeat);
-  zero_flow.timing = time_repeatedly([&] { cold_cut = bsh::graph_cut(problem, cold); }, repeat);
-  bk.timing = time_repeatedly([&] { double_cut(problem, true); }, repeat);
-  ek.timing = time_repeatedly([&] { double_cut(problem, false); }, repeat);
-  row.stages = {certified, zero_flow, bk, ek};
+  const auto timings = time_alternately({[&] { cut = bsh::graph_cut(problem, {}); },
+                                         [&] { cold_cut = bsh::graph_cut(problem, cold); },
+                                         [&] { double_cut(problem, true); }, [&] { double_cut(problem, false); }},
+                                        repeat);
+  row.stages.resize(timings.size());
+  for (std::size_t k = 0; k < timings.size(); ++k) row.stages[k].timing = timings[k];
   const auto verdict = [](const bsh::CutResult& r) { return r.certified ? "yes" : "no: " + r.certificate_note; };
   row.notes = {verdict(cut), verdict(cold_cut), cut.labelling == cold_cut.labelling ? "yes" : "NO"};
 }
@@ -547,7 +548,8 @@ void run_cut_bench(const BenchOptions& o, OutputFiles& files) {
                    (o.cut_inputs.empty() ? std::string() : " and " + std::to_string(o.cut_inputs.size()) +
                                                                " given input(s)") +
                    "; ratios to the double Boykov-Kolmogorov "
-                   "max flow on the same graph, each built from the problem inside the timing"};
+                   "max flow on the same graph, each built from the problem inside the timing; the four stages "
+                   "alternate (rounds of one run of each), so a change of load falls on all of them"};
   publish(report, o, files);
 }
 
@@ -1142,7 +1144,7 @@ Scene2 bench_random_scene(int halfspaces, int index) {
   return random_scene(settings, 1, static_cast<std::uint64_t>(index)).scene;
 }
 
-/// One scene: hsx::arrange (arrangement and complex) and bare_cgal_arrangement_faces, each timed repeatedly.
+/// One scene: hsx::arrange (arrangement and complex) and bare_cgal_arrangement_faces, timed alternately.
 BenchRow bench_arrange_scene(const std::string& name, const Scene2& scene, const BenchOptions& o,
                              const RepeatOptions& repeat) {
   BenchRow row;
@@ -1156,11 +1158,12 @@ BenchRow bench_arrange_scene(const std::string& name, const Scene2& scene, const
   }
   row.sizes = {static_cast<long>(scene.halfspaces.size()), static_cast<long>(arranged.complex.cells.size()),
                static_cast<long>(arranged.arrangement.edges().size())};
-  StageResult hsx_stage, cgal_stage;
-  hsx_stage.timing = time_repeatedly([&] { arrange(scene, o.limits); }, repeat);
   long faces = 0;
-  cgal_stage.timing = time_repeatedly([&] { faces = bare_cgal_arrangement_faces(scene); }, repeat);
-  row.stages = {hsx_stage, cgal_stage};
+  const auto timings =
+      time_alternately({[&] { arrange(scene, o.limits); }, [&] { faces = bare_cgal_arrangement_faces(scene); }}, repeat);
+  row.stages = {StageResult{}, StageResult{}};
+  row.stages[0].timing = timings[0];
+  row.stages[1].timing = timings[1];
   row.notes = {faces == static_cast<long>(arranged.complex.cells.size()) ? "yes" : "NO"};
   return row;
 }
@@ -1193,7 +1196,8 @@ void run_arrange_bench(const BenchOptions& o, OutputFiles& files) {
       "complex; exact lengths, areas and the other interior points are computed on first read, not here); bare "
       "CGAL: bare_cgal_arrangement_faces, the same curves inserted into the same CGAL arrangement and nothing else; "
       "same cells: both count the same bounded faces",
-      "random scenes: seed 1, up to 3 samples per halfspace (halfsp: halfspaces)"};
+      "random scenes: seed 1, up to 3 samples per halfspace (halfsp: halfspaces); the two stages alternate "
+      "(rounds of one run of each), so a change of load falls on both"};
   publish(report, o, files);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <memory>
+#include <stdexcept>
 
 namespace hsx {
 namespace {
@@ -65,13 +66,20 @@ std::vector<Chain> chains_of(const Arrangement2& arr) {
 
 /// The chains' lengths (sums of their edges' lengths), each computed on first read.
 std::shared_ptr<const MeasureCache> chain_lengths(const Arrangement2& arr, const std::vector<Chain>& chains) {
-  std::vector<std::vector<int>> chain_edges;
-  chain_edges.reserve(chains.size());
-  for (const Chain& chain : chains) chain_edges.push_back(chain.edges);
+  // Every chain's edges in one table: chain k's are edges[first[k] .. first[k + 1]).
+  std::vector<int> edges;
+  std::vector<std::size_t> first{0};
+  first.reserve(chains.size() + 1);
+  for (const Chain& chain : chains) {
+    edges.insert(edges.end(), chain.edges.begin(), chain.edges.end());
+    first.push_back(edges.size());
+  }
   return std::make_shared<const MeasureCache>(
-      chains.size(), [edge_lengths = arr.edge_lengths(), chain_edges = std::move(chain_edges)](std::size_t k) {
+      chains.size(),
+      [edge_lengths = arr.edge_lengths(), edges = std::move(edges), first = std::move(first)](std::size_t k) {
         Measure length;
-        for (int e : chain_edges[k]) length += edge_lengths->get(static_cast<std::size_t>(e));
+        for (std::size_t i = first[k]; i < first[k + 1]; ++i)
+          length += edge_lengths->get(static_cast<std::size_t>(edges[i]));
         return length;
       });
 }
@@ -82,6 +90,24 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
   Complex c;
   c.dimension = 2;
   for (const auto& h : scene.halfspaces) c.halfspace_names.push_back(h.name);
+  const auto& edges = arr.edges();
+  std::vector<Chain> chains = chains_of(arr);  // non-const: each chain's edges move into its last patch
+  // Chain k gives one patch per halfspace of its edges, numbered from first_patch[k] in chain order.
+  std::vector<std::size_t> first_patch(chains.size() + 1, 0);
+  std::vector<int> chain_starting_at(edges.size(), -1);
+  std::vector<int> patch_halfspace;  // per patch
+  for (std::size_t k = 0; k < chains.size(); ++k) {
+    const int e0 = chains[k].edges.front();
+    chain_starting_at[static_cast<std::size_t>(e0)] = static_cast<int>(k);
+    const auto& halfspaces = edges[static_cast<std::size_t>(e0)].halfspaces;
+    patch_halfspace.insert(patch_halfspace.end(), halfspaces.begin(), halfspaces.end());
+    first_patch[k + 1] = patch_halfspace.size();
+  }
+  const std::size_t patch_count = patch_halfspace.size();
+  // Per patch: whether the face left of its chain's first edge lies inside the patch's halfspace (2: not seen).
+  // Read while each face's sides are copied into its cell, so the faces' side tables are read in order, once.
+  std::vector<char> left_inside(patch_count, 2);
+
   c.cells.reserve(arr.faces().size());
   const auto witnesses = std::make_shared<const LazyCache<std::vector<Rational>>>(
       arr.faces().size(), [interiors = arr.face_interiors()](std::size_t f) {
@@ -95,15 +121,18 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
     cell.inside = f.inside;
     cell.measure = LazyMeasure(arr.face_areas(), c.cells.size());
     c.cells.push_back(std::move(cell));
+    for (const auto& cycle : f.boundary)
+      for (const auto& [e, forward] : cycle) {
+        const int k = forward ? chain_starting_at[static_cast<std::size_t>(e)] : -1;
+        if (k < 0) continue;
+        for (std::size_t p = first_patch[static_cast<std::size_t>(k)]; p < first_patch[static_cast<std::size_t>(k) + 1]; ++p)
+          left_inside[p] = f.inside[static_cast<std::size_t>(patch_halfspace[p])];
+      }
   }
-  const auto& edges = arr.edges();
   std::vector<int> junction_of_vertex(arr.vertices().size(), -1);
   std::vector<int> chain_of_edge(edges.size(), -1);
   std::vector<std::vector<int>> patches_of_chain;
-  const std::vector<Chain> chains = chains_of(arr);
   const auto lengths = chain_lengths(arr, chains);
-  std::size_t patch_count = 0;
-  for (const Chain& chain : chains) patch_count += edges[chain.edges.front()].halfspaces.size();
   c.patches.reserve(patch_count);
   c.supports.reserve(chains.size());
   patches_of_chain.reserve(chains.size());
@@ -115,11 +144,19 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
       if (junction < 0) junction = junction_count++;
     }
   c.junctions.resize(static_cast<std::size_t>(junction_count));
+  {
+    std::vector<std::size_t> ending(static_cast<std::size_t>(junction_count), 0);  // patches ending at each junction
+    for (const Chain& chain : chains)
+      for (int v : chain.ends)
+        ending[static_cast<std::size_t>(junction_of_vertex[static_cast<std::size_t>(v)])] +=
+            edges[chain.edges.front()].halfspaces.size();
+    for (std::size_t j = 0; j < ending.size(); ++j) c.junctions[j].patches.reserve(ending[j]);
+  }
   for (std::size_t v = 0; v < junction_of_vertex.size(); ++v)
     if (const int j = junction_of_vertex[v]; j >= 0)
       c.junctions[static_cast<std::size_t>(j)].piece = static_cast<int>(v);
   for (int k = 0; k < static_cast<int>(chains.size()); ++k) {
-    const Chain& chain = chains[k];
+    Chain& chain = chains[k];
     const ArrEdge2& e0 = edges[chain.edges.front()];
     for (int e : chain.edges) chain_of_edge[e] = k;
     std::vector<int> junctions;
@@ -128,21 +165,22 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
     const int support = static_cast<int>(c.supports.size());
     c.supports.emplace_back();
     patches_of_chain.emplace_back();
-    for (int h : e0.halfspaces) {
-      Patch p;
-      p.halfspace = h;
-      const bool left_inside = c.cells.at(e0.left_face).inside[h];
-      p.inside_cell = left_inside ? e0.left_face : e0.right_face;
-      p.outside_cell = left_inside ? e0.right_face : e0.left_face;
-      p.measure = LazyMeasure(lengths, static_cast<std::size_t>(k));
-      p.support = support;
-      p.junctions = junctions;
-      p.pieces = chain.edges;
+    for (std::size_t i = 0; i < e0.halfspaces.size(); ++i) {
       const int id = static_cast<int>(c.patches.size());
+      const char left = left_inside[static_cast<std::size_t>(id)];
+      if (left == 2) throw std::logic_error("complex_from_arrangement: a patch edge with no face on its left");
       c.supports[support].push_back(id);
       patches_of_chain[k].push_back(id);
       for (int j : junctions) c.junctions[j].patches.push_back(id);
-      c.patches.push_back(std::move(p));
+      Patch& p = c.patches.emplace_back();  // reserved above
+      p.halfspace = e0.halfspaces[i];
+      p.inside_cell = left ? e0.left_face : e0.right_face;
+      p.outside_cell = left ? e0.right_face : e0.left_face;
+      p.measure = LazyMeasure(lengths, static_cast<std::size_t>(k));
+      p.support = support;
+      const bool last = i + 1 == e0.halfspaces.size();  // the chain's last patch takes its lists, the others copy
+      p.junctions = last ? std::move(junctions) : junctions;
+      p.pieces = last ? std::move(chain.edges) : chain.edges;
     }
   }
   for (auto& j : c.junctions) {

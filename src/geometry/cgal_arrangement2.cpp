@@ -44,12 +44,14 @@ using PointLocation = CGAL::Arr_walk_along_line_point_location<CgalArrangement>;
 
 constexpr int kBoxCurve = -1;  // curve data of the domain box's sides
 
-OneRoot to_one_root(const CoordNT& c) {
-  if (!c.is_extended()) return OneRoot(c.a0());
-  return OneRoot(c.a0(), c.a1(), c.root());
+/// Sets `out`, a zero OneRoot, to c, in place (moving a Rational would allocate: gmpxx re-initialises the source).
+void assign_zero_one_root(OneRoot& out, const CoordNT& c) {
+  out.a0 = c.a0();
+  if (!c.is_extended()) return;
+  out.a1 = c.a1();
+  out.root = c.root();
+  out.normalise();
 }
-
-OneRootPoint to_point(const CgalPoint& p) { return OneRootPoint(to_one_root(p.x()), to_one_root(p.y())); }
 
 CoordNT to_coord(const OneRoot& r) {
   if (r.is_rational()) return CoordNT(r.a0);
@@ -628,7 +630,9 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
     v->set_data(static_cast<int>(pieces->vertices.size()));
     impl->vertices.push_back(v);
-    pieces->vertices.push_back({to_point(v->point()), static_cast<int>(v->degree())});
+    ArrVertex2& vertex = pieces->vertices.emplace_back();  // degree: counted from the edges below
+    assign_zero_one_root(vertex.point.x, v->point().x());
+    assign_zero_one_root(vertex.point.y, v->point().y());
   }
   // --- 3. Faces: bounded ones only; the unbounded face is outside the domain (index -1). --------------------------
   std::vector<FaceHandle> faces;
@@ -643,11 +647,12 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     e->set_data(id);
     e->twin()->set_data(id);
     Halfedge h = e;
-    ArrEdge2 edge;
+    ArrEdge2& edge = pieces->edges.emplace_back();  // filled in place (reserved above): no Rational moved
     edge.source = h->source()->data();
     edge.target = h->target()->data();
-    edge.left_face = h->face()->data();
-    edge.right_face = h->twin()->face()->data();
+    ++pieces->vertices[static_cast<std::size_t>(edge.source)].degree;  // no loops: arcs are x-monotone
+    ++pieces->vertices[static_cast<std::size_t>(edge.target)].degree;
+    // left_face and right_face: from the faces' walks (step 5); they stay -1 beside the unbounded face.
     if (!curve_matches_ends(h))
       throw std::logic_error("CGAL left an arrangement edge whose curve does not end at its vertices");
     for (auto it = h->curve().data().begin(); it != h->curve().data().end(); ++it)
@@ -677,9 +682,9 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       edge.ccw = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == same_as_curve;
     }
     impl->halfedges.push_back(h);
-    pieces->edges.push_back(std::move(edge));
   }
-  auto forward = [&](Halfedge h) { return h->source()->data() == pieces->edges[h->data()].source; };
+  // Whether h is its edge's representative halfedge (runs source -> target).
+  auto forward = [&](Halfedge h) { return h == impl->halfedges[static_cast<std::size_t>(h->data())]; };
 
   // --- 5. Per face: boundary walks, outer flag (interior points and areas: on request, see below). ---------------
   pieces->faces.resize(faces.size());
@@ -691,8 +696,11 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       auto c = start;
       do {
         Halfedge h = c;
-        cycle.emplace_back(h->data(), forward(h));
-        if (pieces->edges[h->data()].on_box) face.outer = true;
+        const bool fwd = forward(h);
+        ArrEdge2& edge = pieces->edges[static_cast<std::size_t>(h->data())];
+        cycle.emplace_back(h->data(), fwd);
+        (fwd ? edge.left_face : edge.right_face) = static_cast<int>(fi);
+        if (edge.on_box) face.outer = true;
       } while (++c != start);
       face.boundary.push_back(std::move(cycle));
     };

@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <sys/resource.h>
 #include <sys/types.h>
@@ -26,6 +27,16 @@ double quantile(const std::vector<double>& sorted, double p) {
 
 double steady_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// std::invalid_argument, naming `caller`, when `options` break the bounds of the conventions.
+void check_options(const char* caller, const RepeatOptions& options) {
+  const std::string name(caller);
+  if (options.min_repetitions < 1) throw std::invalid_argument(name + ": min_repetitions must be >= 1");
+  if (options.max_repetitions < options.min_repetitions)
+    throw std::invalid_argument(name + ": max_repetitions must be >= min_repetitions");
+  if (!std::isfinite(options.min_seconds) || options.min_seconds < 0)
+    throw std::invalid_argument(name + ": min_seconds must be finite and >= 0");
 }
 
 }  // namespace
@@ -50,11 +61,7 @@ TimingSummary summarize_times(const std::vector<double>& seconds) {
 
 TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOptions& options,
                               const std::function<void()>& prepare) {
-  if (options.min_repetitions < 1) throw std::invalid_argument("time_repeatedly: min_repetitions must be >= 1");
-  if (options.max_repetitions < options.min_repetitions)
-    throw std::invalid_argument("time_repeatedly: max_repetitions must be >= min_repetitions");
-  if (!std::isfinite(options.min_seconds) || options.min_seconds < 0)
-    throw std::invalid_argument("time_repeatedly: min_seconds must be finite and >= 0");
+  check_options("time_repeatedly", options);
   const std::function<double()> clock = options.clock ? options.clock : std::function<double()>(steady_seconds);
   std::vector<double> runs;
   double total = 0;
@@ -68,6 +75,33 @@ TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOpti
     total += seconds;
   }
   return summarize_times(runs);
+}
+
+std::vector<TimingSummary> time_alternately(const std::vector<std::function<void()>>& runs,
+                                            const RepeatOptions& options) {
+  if (runs.empty()) throw std::invalid_argument("time_alternately: no work to time");
+  check_options("time_alternately", options);
+  const std::function<double()> clock = options.clock ? options.clock : std::function<double()>(steady_seconds);
+  std::vector<std::vector<double>> seconds(runs.size());
+  std::vector<double> totals(runs.size(), 0.0);
+  auto more = [&] {
+    const int rounds = static_cast<int>(seconds.front().size());
+    if (rounds >= options.max_repetitions) return false;
+    if (rounds < options.min_repetitions) return true;
+    return *std::min_element(totals.begin(), totals.end()) < options.min_seconds;
+  };
+  while (more())
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+      const double start = clock();
+      runs[k]();
+      const double elapsed = std::max(0.0, clock() - start);
+      seconds[k].push_back(elapsed);
+      totals[k] += elapsed;
+    }
+  std::vector<TimingSummary> out;
+  out.reserve(runs.size());
+  for (const auto& s : seconds) out.push_back(summarize_times(s));
+  return out;
 }
 
 std::optional<long> peak_memory_of(const std::function<void()>& run) {

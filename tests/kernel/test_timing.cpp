@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace hsx;
@@ -110,6 +111,70 @@ TEST_CASE("time_repeatedly: a minimum count and a minimum total time", "[kernel]
     options.min_seconds = -1;
     CHECK_THROWS_AS(time_repeatedly(work, options), std::invalid_argument);
     CHECK(runs == 0);
+  }
+}
+
+TEST_CASE("time_alternately: rounds of every piece, until each meets the bounds", "[kernel][timing]") {
+  double now = 0;
+  std::string order;
+  RepeatOptions options;
+  options.clock = [&] { return now; };
+  auto piece = [&](char name, double seconds) {
+    return [&, name, seconds] {
+      order += name;
+      now += seconds;
+    };
+  };
+  SECTION("the pieces alternate; the one with the least total time decides when to stop") {
+    options.min_repetitions = 2;
+    options.min_seconds = 0.1;
+    const auto t = time_alternately({piece('a', 0.01), piece('b', 0.04)}, options);
+    REQUIRE(t.size() == 2);
+    CHECK(t[0].repetitions == t[1].repetitions);
+    CHECK(t[0].repetitions >= 10);  // a needs 10 runs of 0.01 s, so b runs 10 times too
+    CHECK(t[0].repetitions <= 11);
+    CHECK(t[0].median == Approx(0.01));
+    CHECK(t[1].median == Approx(0.04));
+    std::string expected;
+    for (int k = 0; k < t[0].repetitions; ++k) expected += "ab";
+    CHECK(order == expected);
+    CHECK(t[1].runs.size() == static_cast<std::size_t>(t[1].repetitions));
+  }
+  SECTION("the count decides when every piece is slow") {
+    options.min_repetitions = 4;
+    options.min_seconds = 0.01;
+    const auto t = time_alternately({piece('a', 1), piece('b', 2), piece('c', 3)}, options);
+    CHECK(order == "abcabcabcabc");
+    CHECK(t[2].total == Approx(12));
+  }
+  SECTION("the cap stops rounds of work that takes no time") {
+    options.min_repetitions = 1;
+    options.max_repetitions = 6;
+    options.min_seconds = 1;
+    const auto t = time_alternately({piece('a', 0), piece('b', 0)}, options);
+    CHECK(t[0].repetitions == 6);
+    CHECK(order.size() == 12);
+  }
+  SECTION("no work and bad options") {
+    CHECK_THROWS_AS(time_alternately({}, options), std::invalid_argument);
+    options.min_repetitions = 0;
+    CHECK_THROWS_AS(time_alternately({piece('a', 1)}, options), std::invalid_argument);
+    options.min_repetitions = 3;
+    options.max_repetitions = 2;
+    CHECK_THROWS_AS(time_alternately({piece('a', 1)}, options), std::invalid_argument);
+    options.max_repetitions = 3;
+    options.min_seconds = std::nan("");
+    CHECK_THROWS_AS(time_alternately({piece('a', 1)}, options), std::invalid_argument);
+    CHECK(order.empty());
+  }
+  SECTION("an exception from a piece propagates") {
+    options.min_repetitions = 3;
+    int calls = 0;
+    auto failing = [&] {
+      if (++calls == 2) throw std::runtime_error("boom");
+    };
+    CHECK_THROWS_AS(time_alternately({piece('a', 1), failing}, options), std::runtime_error);
+    CHECK(order == "aa");
   }
 }
 

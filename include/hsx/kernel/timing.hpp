@@ -3,7 +3,7 @@
 // Conventions (owned here):
 // - Times are wall-clock seconds from a monotone clock (std::chrono::steady_clock unless one is injected).
 // - A measurement repeats the work at least `min_repetitions` times AND until the timed runs add up to at least
-//   `min_seconds`, never more than `max_repetitions` times. Each run is timed on its own; an optional `prepare`
+//   `min_seconds`, never more than `max_repetitions` times (time_alternately: each piece of work, in rounds). Each run is timed on its own; an optional `prepare`
 //   step runs before each run, untimed (e.g. copying an input that the work consumes).
 // - Summaries: median and quartiles by linear interpolation between order statistics (the "type 7" rule of R and
 //   NumPy's default), min, max and total. Timings are not reproducible; nothing exact depends on them.
@@ -43,6 +43,15 @@ TimingSummary summarize_times(const std::vector<double>& seconds);
 /// `options` break the bounds above.
 TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOptions& options = {},
                               const std::function<void()>& prepare = {});
+
+/// Times several pieces of work side by side: rounds of one run of each, in the order given, repeated until every
+/// piece meets the conventions' bounds (at least `min_repetitions` runs and `min_seconds` in total each; at most
+/// `max_repetitions` rounds). Every piece gets the same number of runs, and a change of the machine's load during
+/// the measurement falls on all of them alike (a ratio of their medians compares runs made at the same times).
+/// Returns one summary per piece, in the order of `runs`. Exceptions propagate; std::invalid_argument when `runs`
+/// is empty or `options` break the bounds.
+std::vector<TimingSummary> time_alternately(const std::vector<std::function<void()>>& runs,
+                                            const RepeatOptions& options = {});
 
 /// Runs `run` once in a forked child process and returns the child's peak resident set size in bytes (see the
 /// conventions), or nullopt when the child did not finish normally (`run` threw, the child crashed or was killed)

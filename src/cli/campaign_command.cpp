@@ -8,6 +8,7 @@
 #include <hsx/io/campaign_files.hpp>
 #include <hsx/io/scene_json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <iomanip>
@@ -234,8 +235,9 @@ Kept decode_record(const std::string& text) {
 /// of `todo`: here on `jobs` threads, or under mpirun (`mpi` set) split over the ranks, every record reaching rank
 /// 0's sink (cli/distribute.hpp). A failed scene is minimised on the thread that receives the records, one at a
 /// time (failures are rare), on the rank that ran it; it depends only on the scene, so the bytes are the same for
-/// any number of jobs and processes.
-void run_all(const campaign::CampaignSettings& settings, const std::vector<std::uint64_t>& todo, int jobs,
+/// any number of jobs and processes. Returns how many threads ran the scenes here (campaign::run_scenes; under mpirun,
+/// on this rank).
+int run_all(const campaign::CampaignSettings& settings, const std::vector<std::uint64_t>& todo, int jobs,
              const MpiRun* mpi, const std::optional<campaign::MinimiseOptions>& minimise,
              const std::function<void(Kept&&)>& sink) {
   const auto keep = [&](campaign::SceneRecord&& r) {
@@ -259,12 +261,17 @@ void run_all(const campaign::CampaignSettings& settings, const std::vector<std::
     return k;
   };
   if (!mpi) return campaign::run_scenes(settings, todo, jobs, [&](campaign::SceneRecord&& r) { sink(keep(std::move(r))); });
+  int threads = jobs;
   mpi->distribute(
       todo,
       [&](const std::vector<std::uint64_t>& mine, const std::function<void(std::string&&)>& out) {
-        campaign::run_scenes(settings, mine, jobs, [&](campaign::SceneRecord&& r) { out(encode_record(keep(std::move(r)))); });
+        const int used = campaign::run_scenes(settings, mine, jobs, [&](campaign::SceneRecord&& r) {
+          out(encode_record(keep(std::move(r))));
+        });
+        if (mine.size() > 1) threads = std::min(threads, used);  // one scene runs on the calling thread anyway
       },
       [&](std::string&& message) { sink(decode_record(message)); });
+  return threads;
 }
 
 /// hsx campaign --out OUT --merge DIR...: io's merge_campaigns, then the table and the exit status of a run.
@@ -354,7 +361,7 @@ int run_campaign(const CampaignCommandOptions& o) {
     minimise.emplace();
     minimise->max_steps = o.minimise_steps;
   }
-  run_all(settings, todo, o.jobs, mpi ? &*mpi : nullptr, minimise, [&](Kept&& k) {
+  const int threads = run_all(settings, todo, o.jobs, mpi ? &*mpi : nullptr, minimise, [&](Kept&& k) {
     if (folder) folder->append(k.record, k.minimised, k.minimised3);
     summary.add(k.record);
     report(k.record);
@@ -367,6 +374,9 @@ int run_campaign(const CampaignCommandOptions& o) {
             << " s (" << std::setprecision(1) << (seconds > 0 ? todo.size() / seconds : 0) << " scenes/s, " << o.jobs
             << " job" << (o.jobs == 1 ? "" : "s") << (mpi ? " per process, " + std::to_string(mpi->size()) + " MPI processes" : "")
             << ")\n";
+  if (threads < o.jobs && todo.size() > 1)
+    std::cerr << "hsx campaign: the system started " << threads << " of the " << o.jobs << " threads asked for"
+              << (mpi ? " (on rank 0)" : "") << "; the records are the same\n";
   return summary.failed_scenes > 0 ? kCheckFailed : 0;
 }
 

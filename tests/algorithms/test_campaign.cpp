@@ -62,9 +62,12 @@ CampaignSettings small_settings() {
   return s;
 }
 
-std::vector<SceneRecord> run_all(const CampaignSettings& s, const std::vector<std::uint64_t>& indices, int jobs) {
+/// The records of run_scenes, in order; `threads`, when given, receives how many threads it says ran them.
+std::vector<SceneRecord> run_all(const CampaignSettings& s, const std::vector<std::uint64_t>& indices, int jobs,
+                                 int* threads = nullptr) {
   std::vector<SceneRecord> out;
-  run_scenes(s, indices, jobs, [&](SceneRecord&& r) { out.push_back(std::move(r)); });
+  const int used = run_scenes(s, indices, jobs, [&](SceneRecord&& r) { out.push_back(std::move(r)); });
+  if (threads) *threads = used;
   return out;
 }
 
@@ -190,8 +193,15 @@ TEST_CASE("campaign: the records do not depend on the number of threads", "[camp
   const std::vector<SceneRecord> one = run_all(s, indices, 1);
   REQUIRE(one.size() == indices.size());
   for (std::size_t k = 0; k < one.size(); ++k) CHECK(one[k].index == indices[k]);
-  CHECK(run_all(s, indices, 2) == one);
-  CHECK(run_all(s, indices, 3) == one);
+  int threads = 0;
+  CHECK(run_all(s, indices, 2, &threads) == one);
+  CHECK(threads == 2);
+  CHECK(run_all(s, indices, 3, &threads) == one);
+  CHECK(threads == 3);
+  run_all(s, indices, 1, &threads);
+  CHECK(threads == 1);
+  run_all(s, {indices.front()}, 4, &threads);  // one scene: the calling thread runs it
+  CHECK(threads == 1);
   // An exception from the sink stops the run and reaches the caller.
   int seen = 0;
   CHECK_THROWS_AS(run_scenes(s, indices, 2,
@@ -236,7 +246,9 @@ TEST_CASE("campaign: threads the system refuses leave the records unchanged", "[
     ::setrlimit(RLIMIT_AS, &limit);
     int status = 3;
     try {
-      status = run_all(s, indices, 64) == one ? 0 : 1;
+      int threads = 0;
+      const bool same = run_all(s, indices, 64, &threads) == one;
+      status = !same ? 1 : threads >= 1 && threads < 64 ? 0 : 5;  // 5: it claims threads it did not start
     } catch (const std::bad_alloc&) {
       status = 2;
     } catch (...) {

@@ -759,14 +759,14 @@ SceneRecord run_scene(const CampaignSettings& s, std::uint64_t index, const std:
   return r;
 }
 
-void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_t>& indices, int jobs,
-                const std::function<void(SceneRecord&&)>& sink, const std::function<bool()>& cancel) {
+int run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_t>& indices, int jobs,
+               const std::function<void(SceneRecord&&)>& sink, const std::function<bool()>& cancel) {
   validate(settings);
   if (jobs < 1) throw InputError("--jobs: at least 1");
   const std::size_t n = indices.size();
   if (jobs == 1 || n <= 1) {
     for (std::uint64_t i : indices) sink(run_scene(settings, i, cancel));
-    return;
+    return 1;
   }
   // Positions [written, written + window) may be worked on; position p waits in slots[p % window]. The window is
   // wide so that one slow scene (seconds, against milliseconds for most) does not stop the other threads until it
@@ -812,7 +812,7 @@ void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_
   }
   if (pool.empty()) {  // not even one: this thread runs them (nothing has been started or written yet)
     for (std::uint64_t i : indices) sink(run_scene(settings, i, cancel));
-    return;
+    return 1;
   }
   std::exception_ptr sink_error;
   while (true) {
@@ -837,6 +837,7 @@ void run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_
   for (std::thread& t : pool) t.join();
   if (sink_error) std::rethrow_exception(sink_error);
   if (worker_error) std::rethrow_exception(worker_error);
+  return static_cast<int>(pool.size());
 }
 
 std::vector<std::uint64_t> shard_indices(std::uint64_t start, std::uint64_t count, std::uint64_t shard,

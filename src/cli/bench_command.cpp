@@ -474,6 +474,13 @@ void check_random_scenes(const std::string& prefix, int scenes, const std::vecto
     if (h < 1) throw InputError(prefix + "-halfspaces: every size must be at least 1");
 }
 
+/// One measured stage per summary, in order.
+std::vector<StageResult> stages_of(const std::vector<TimingSummary>& timings) {
+  std::vector<StageResult> stages(timings.size());
+  for (std::size_t k = 0; k < timings.size(); ++k) stages[k].timing = timings[k];
+  return stages;
+}
+
 /// The certified cut (warm-started and from the zero flow) and the two double max flows of one problem, timed
 /// alternately.
 void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& repeat, BenchRow& row) {
@@ -485,8 +492,7 @@ void time_cuts(const bsh::Problem& problem, long patches, const RepeatOptions& r
                                          [&] { cold_cut = bsh::graph_cut(problem, cold); },
                                          [&] { double_cut(problem, true); }, [&] { double_cut(problem, false); }},
                                         repeat);
-  row.stages.resize(timings.size());
-  for (std::size_t k = 0; k < timings.size(); ++k) row.stages[k].timing = timings[k];
+  row.stages = stages_of(timings);
   const auto verdict = [](const bsh::CutResult& r) { return r.certified ? "yes" : "no: " + r.certificate_note; };
   row.notes = {verdict(cut), verdict(cold_cut), cut.labelling == cold_cut.labelling ? "yes" : "NO"};
 }
@@ -1161,9 +1167,7 @@ BenchRow bench_arrange_scene(const std::string& name, const Scene2& scene, const
   long faces = 0;
   const auto timings =
       time_alternately({[&] { arrange(scene, o.limits); }, [&] { faces = bare_cgal_arrangement_faces(scene); }}, repeat);
-  row.stages = {StageResult{}, StageResult{}};
-  row.stages[0].timing = timings[0];
-  row.stages[1].timing = timings[1];
+  row.stages = stages_of(timings);
   row.notes = {faces == static_cast<long>(arranged.complex.cells.size()) ? "yes" : "NO"};
   return row;
 }

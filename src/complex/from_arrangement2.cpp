@@ -146,10 +146,10 @@ Complex complex_from_arrangement(const Scene2& scene, const Arrangement2& arr) {
   c.junctions.resize(static_cast<std::size_t>(junction_count));
   {
     std::vector<std::size_t> ending(static_cast<std::size_t>(junction_count), 0);  // patches ending at each junction
-    for (const Chain& chain : chains)
-      for (int v : chain.ends)
+    for (std::size_t k = 0; k < chains.size(); ++k)
+      for (int v : chains[k].ends)
         ending[static_cast<std::size_t>(junction_of_vertex[static_cast<std::size_t>(v)])] +=
-            edges[chain.edges.front()].halfspaces.size();
+            first_patch[k + 1] - first_patch[k];
     for (std::size_t j = 0; j < ending.size(); ++j) c.junctions[j].patches.reserve(ending[j]);
   }
   for (std::size_t v = 0; v < junction_of_vertex.size(); ++v)

@@ -630,7 +630,7 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
     v->set_data(static_cast<int>(pieces->vertices.size()));
     impl->vertices.push_back(v);
-    ArrVertex2& vertex = pieces->vertices.emplace_back();  // degree: counted from the edges below
+    ArrVertex2& vertex = pieces->vertices.emplace_back();  // degree: counted from the edges (step 4)
     assign_zero_one_root(vertex.point.x, v->point().x());
     assign_zero_one_root(vertex.point.y, v->point().y());
   }
@@ -641,18 +641,55 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
     if (!f->is_unbounded()) faces.push_back(f);
   }
 
-  // --- 4. Edges, oriented as CGAL's representative halfedge. ------------------------------------------------------
+  // --- 4. Edges: indices here (each edge oriented as CGAL's representative halfedge), records after step 5. ------
+  impl->halfedges.reserve(arr.number_of_edges());
   for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e) {
-    const int id = static_cast<int>(pieces->edges.size());
+    const int id = static_cast<int>(impl->halfedges.size());
     e->set_data(id);
     e->twin()->set_data(id);
-    Halfedge h = e;
+    impl->halfedges.push_back(e);
+  }
+  // Whether h is its edge's representative halfedge (runs source -> target).
+  auto forward = [&](Halfedge h) { return h == impl->halfedges[static_cast<std::size_t>(h->data())]; };
+
+  // --- 5. Per face: boundary walks; each edge's faces, in a small table of their own (the edge records are filled
+  // in order below: writing into them here, at random, was a cache miss per edge). --------------------------------
+  const std::size_t edge_count = impl->halfedges.size();
+  std::vector<std::array<int, 2>> edge_faces(edge_count, {-1, -1});  // left, right
+  pieces->faces.resize(faces.size());
+  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
+    FaceHandle f = faces[fi];
+    ArrFace2& face = pieces->faces[fi];
+    auto walk = [&](CgalArrangement::Ccb_halfedge_const_circulator start) {
+      std::vector<std::pair<int, bool>> cycle;
+      auto c = start;
+      do {
+        Halfedge h = c;
+        const bool fwd = forward(h);
+        cycle.emplace_back(h->data(), fwd);
+        edge_faces[static_cast<std::size_t>(h->data())][fwd ? 0 : 1] = static_cast<int>(fi);
+      } while (++c != start);
+      face.boundary.push_back(std::move(cycle));
+    };
+    walk(f->outer_ccb());
+    for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end(); ++hole) walk(*hole);
+  }
+
+  // Step 4 continued: the edge records, in order; `flips` lists each edge's halfspaces again, flat, for step 6. Then
+  // the vertices' degrees, and the outer faces (those with an edge on the box).
+  std::vector<int> flips_begin(edge_count + 1, 0), flips;
+  flips.reserve(edge_count);
+  std::vector<char> box_edge(edge_count, 0);
+  std::vector<int> degrees(pieces->vertices.size(), 0);  // counted here, copied into the vertices after the loop
+  for (std::size_t id = 0; id < edge_count; ++id) {
+    const Halfedge h = impl->halfedges[id];
     ArrEdge2& edge = pieces->edges.emplace_back();  // filled in place (reserved above): no Rational moved
     edge.source = h->source()->data();
     edge.target = h->target()->data();
-    ++pieces->vertices[static_cast<std::size_t>(edge.source)].degree;  // no loops: arcs are x-monotone
-    ++pieces->vertices[static_cast<std::size_t>(edge.target)].degree;
-    // left_face and right_face: from the faces' walks (step 5); they stay -1 beside the unbounded face.
+    ++degrees[static_cast<std::size_t>(edge.source)];  // no loops: arcs are x-monotone
+    ++degrees[static_cast<std::size_t>(edge.target)];
+    edge.left_face = edge_faces[id][0];  // -1 beside the unbounded face
+    edge.right_face = edge_faces[id][1];
     if (!curve_matches_ends(h))
       throw std::logic_error("CGAL left an arrangement edge whose curve does not end at its vertices");
     for (auto it = h->curve().data().begin(); it != h->curve().data().end(); ++it)
@@ -664,6 +701,9 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       }
     std::sort(edge.halfspaces.begin(), edge.halfspaces.end());
     edge.halfspaces.erase(std::unique(edge.halfspaces.begin(), edge.halfspaces.end()), edge.halfspaces.end());
+    flips.insert(flips.end(), edge.halfspaces.begin(), edge.halfspaces.end());
+    flips_begin[id + 1] = static_cast<int>(flips.size());
+    box_edge[id] = edge.on_box;
     const XCurve& cv = h->curve();
     if (cv.is_linear()) {
       const auto line = cv.supporting_line();
@@ -681,32 +721,13 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       const bool same_as_curve = halfedge_directed_right == cv.is_directed_right();
       edge.ccw = (cv.orientation() == CGAL::COUNTERCLOCKWISE) == same_as_curve;
     }
-    impl->halfedges.push_back(h);
   }
-  // Whether h is its edge's representative halfedge (runs source -> target).
-  auto forward = [&](Halfedge h) { return h == impl->halfedges[static_cast<std::size_t>(h->data())]; };
+  for (std::size_t v = 0; v < degrees.size(); ++v) pieces->vertices[v].degree = degrees[v];
+  for (ArrFace2& face : pieces->faces)
+    for (const auto& cycle : face.boundary)
+      for (const auto& step : cycle)
+        if (box_edge[static_cast<std::size_t>(step.first)]) face.outer = true;
 
-  // --- 5. Per face: boundary walks, outer flag (interior points and areas: on request, see below). ---------------
-  pieces->faces.resize(faces.size());
-  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
-    FaceHandle f = faces[fi];
-    ArrFace2& face = pieces->faces[fi];
-    auto walk = [&](CgalArrangement::Ccb_halfedge_const_circulator start) {
-      std::vector<std::pair<int, bool>> cycle;
-      auto c = start;
-      do {
-        Halfedge h = c;
-        const bool fwd = forward(h);
-        ArrEdge2& edge = pieces->edges[static_cast<std::size_t>(h->data())];
-        cycle.emplace_back(h->data(), fwd);
-        (fwd ? edge.left_face : edge.right_face) = static_cast<int>(fi);
-        if (edge.on_box) face.outer = true;
-      } while (++c != start);
-      face.boundary.push_back(std::move(cycle));
-    };
-    walk(f->outer_ccb());
-    for (auto hole = f->inner_ccbs_begin(); hole != f->inner_ccbs_end(); ++hole) walk(*hole);
-  }
   // Interior points, each found on its first read: face f's walks as halfedges (an edge's representative halfedge
   // runs forward, its twin backward), outer boundary first, then InteriorPoints::inside. The cache owns what it
   // reads (the CGAL arrangement through impl, the plain data, the enclosures); its calls never overlap, so
@@ -741,12 +762,11 @@ Arrangement2 Arrangement2::build(const Scene2& scene, const ArrangementLimits& l
       queue.pop_front();
       for (const auto& cycle : pieces->faces[fi].boundary)
         for (const auto& [ei, fwd] : cycle) {
-          const ArrEdge2& e = pieces->edges[ei];
-          const int other = fwd ? e.right_face : e.left_face;
+          const int other = edge_faces[static_cast<std::size_t>(ei)][fwd ? 1 : 0];
           if (other < 0 || seen[other]) continue;
           seen[other] = 1;
           pieces->faces[other].inside = pieces->faces[fi].inside;
-          for (int i : e.halfspaces) pieces->faces[other].inside[i] ^= 1;
+          for (int k = flips_begin[ei]; k < flips_begin[ei + 1]; ++k) pieces->faces[other].inside[flips[k]] ^= 1;
           queue.push_back(other);
         }
     }

@@ -22,6 +22,7 @@
 // (floating shells, locate) take their candidates from an AABB tree of the refined triangles (TriangleIndex).
 #include <hsx/geometry/arrangement3.hpp>
 #include "geometry/components.hpp"
+#include "kernel/threads.hpp"
 
 // Constraints that cross inside one plane are split by CDT_2 at their exact crossing (Epeck): exact, so every
 // triple point is the same rational point in each plane's triangulation. CGAL warns on stderr that
@@ -45,7 +46,6 @@
 #include <functional>
 #include <mutex>
 #include <stdexcept>
-#include <system_error>
 #include <thread>
 #include <unordered_map>
 
@@ -144,14 +144,8 @@ void parallel_for(int n, int threads, const std::function<void(int, int)>& work)
       }
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) {
-    try {
-      pool.emplace_back(run, t);
-    } catch (const std::system_error&) {
-      break;  // the system refused a thread (memory for its stack, a process limit): fewer threads share the work
-    }
-  }
+  // A thread the system refuses leaves fewer threads to share the work.
+  std::vector<std::thread> pool = start_threads(1, threads, [&run](int worker) { run(worker); });
   run(0);
   for (auto& t : pool) t.join();
   for (auto& e : errors)

@@ -59,28 +59,14 @@ TimingSummary summarize_times(const std::vector<double>& seconds) {
   return t;
 }
 
-TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOptions& options,
-                              const std::function<void()>& prepare) {
-  check_options("time_repeatedly", options);
-  const std::function<double()> clock = options.clock ? options.clock : std::function<double()>(steady_seconds);
-  std::vector<double> runs;
-  double total = 0;
-  while (static_cast<int>(runs.size()) < options.max_repetitions &&
-         (static_cast<int>(runs.size()) < options.min_repetitions || total < options.min_seconds)) {
-    if (prepare) prepare();
-    const double start = clock();
-    run();
-    const double seconds = std::max(0.0, clock() - start);
-    runs.push_back(seconds);
-    total += seconds;
-  }
-  return summarize_times(runs);
-}
+namespace {
 
-std::vector<TimingSummary> time_alternately(const std::vector<std::function<void()>>& runs,
-                                            const RepeatOptions& options) {
-  if (runs.empty()) throw std::invalid_argument("time_alternately: no work to time");
-  check_options("time_alternately", options);
+/// Rounds of one run of each piece of `runs` (each after `prepare`, if given, untimed) until the conventions'
+/// bounds are met for every piece; one summary per piece. `caller` names the public function in errors.
+std::vector<TimingSummary> time_rounds(const char* caller, const std::vector<std::function<void()>>& runs,
+                                       const std::function<void()>& prepare, const RepeatOptions& options) {
+  if (runs.empty()) throw std::invalid_argument(std::string(caller) + ": no work to time");
+  check_options(caller, options);
   const std::function<double()> clock = options.clock ? options.clock : std::function<double()>(steady_seconds);
   std::vector<std::vector<double>> seconds(runs.size());
   std::vector<double> totals(runs.size(), 0.0);
@@ -92,6 +78,7 @@ std::vector<TimingSummary> time_alternately(const std::vector<std::function<void
   };
   while (more())
     for (std::size_t k = 0; k < runs.size(); ++k) {
+      if (prepare) prepare();
       const double start = clock();
       runs[k]();
       const double elapsed = std::max(0.0, clock() - start);
@@ -102,6 +89,18 @@ std::vector<TimingSummary> time_alternately(const std::vector<std::function<void
   out.reserve(runs.size());
   for (const auto& s : seconds) out.push_back(summarize_times(s));
   return out;
+}
+
+}  // namespace
+
+TimingSummary time_repeatedly(const std::function<void()>& run, const RepeatOptions& options,
+                              const std::function<void()>& prepare) {
+  return time_rounds("time_repeatedly", {run}, prepare, options).front();
+}
+
+std::vector<TimingSummary> time_alternately(const std::vector<std::function<void()>>& runs,
+                                            const RepeatOptions& options) {
+  return time_rounds("time_alternately", runs, {}, options);
 }
 
 std::optional<long> peak_memory_of(const std::function<void()>& run) {

@@ -7,6 +7,7 @@
 #include <hsx/algorithms/campaign/scene_checks.hpp>
 #include <hsx/complex/carry_solid2.hpp>
 #include <hsx/complex/from_arrangement2.hpp>
+#include "kernel/threads.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,7 +19,6 @@
 #include <new>
 #include <sstream>
 #include <stdexcept>
-#include <system_error>
 #include <thread>
 #include <type_traits>
 
@@ -802,14 +802,8 @@ int run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_t
       cv.notify_all();
     }
   };
-  std::vector<std::thread> pool;
-  for (int t = 0; t < jobs; ++t) {
-    try {
-      pool.emplace_back(work);
-    } catch (const std::system_error&) {
-      break;  // the system refused a thread (memory for its stack, a process limit): fewer threads, same records
-    }
-  }
+  // A thread the system refuses leaves fewer threads: the same records.
+  std::vector<std::thread> pool = start_threads(0, jobs, [&work](int) { work(); });
   if (pool.empty()) {  // not even one: this thread runs them (nothing has been started or written yet)
     for (std::uint64_t i : indices) sink(run_scene(settings, i, cancel));
     return 1;

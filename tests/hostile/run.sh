@@ -64,7 +64,8 @@ run_case() {
   local got start=$SECONDS
   local bound=(-k 2 "$time_limit")
   [ -z "$kill_with" ] || bound=(--preserve-status -k 2 -s "${kill_with% *}" "${kill_with#* }")
-  (cd "$tmp" && ulimit -v "$memory" && exec timeout "${bound[@]}" "$hsx" "${words[@]}") \
+  (cd "$tmp" && ulimit -v "$memory" && { [ -z "$stack" ] || ulimit -s "$stack"; } &&
+    exec env "${envs[@]}" timeout "${bound[@]}" "$hsx" "${words[@]}") \
     </dev/null >"$tmp.out" 2>"$tmp.err"
   got=$?
   ((SECONDS - start < 3)) || echo "slow: $file: $name: $((SECONDS - start)) s"
@@ -99,8 +100,8 @@ run_case() {
 
 new_case() {
   run_case
-  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 skip_as_root=0 kill_with=""
-  stderr_parts=() stdout_parts=() setups=() creates=() afters=()
+  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 stack="" skip_as_root=0 kill_with=""
+  stderr_parts=() stdout_parts=() setups=() creates=() afters=() envs=()
   tmp=""
   [ -n "$name" ] || return 0
   cases=$((cases + 1))
@@ -138,6 +139,8 @@ for file in "$@"; do
       after) afters+=("$value") ;;
       time) time_limit="$value" ;;
       memory) memory="$value" ;;
+      stack) stack="$value" ;;
+      env) envs+=("$value") ;;
       skip-as-root) skip_as_root=1 ;;
       kill) kill_with="$value" ;;
       *) echo "FAIL $file:$lineno: unknown key '$key'"; failed=$((failed + 1)) ;;

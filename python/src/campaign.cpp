@@ -17,6 +17,9 @@
 #include <deque>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
+#include <string>
+#include <system_error>
 #include <thread>
 
 namespace hsxpy {
@@ -90,30 +93,40 @@ class CampaignRun {
   }
 
  private:
+  /// Starts the worker. When the system refuses the thread (no memory for its stack, a process limit), nothing
+  /// has started: RuntimeError, and the next call tries again.
   void start() {
+    try {
+      worker_ = std::thread([this] { work(); });
+    } catch (const std::system_error& e) {
+      throw std::runtime_error(std::string("hsx.campaign: the system refused the campaign's thread (") + e.what() +
+                               "); nothing has run");
+    }
     started_ = true;
-    worker_ = std::thread([this] {
-      std::exception_ptr error;
-      try {
-        campaign::run_scenes(settings_, indices_, jobs_, [this](campaign::SceneRecord&& r) {
-          std::unique_lock<std::mutex> lock(mutex_);
-          space_cv_.wait(lock, [&] { return queue_.size() < capacity_ || stop_; });
-          if (stop_) throw StopRequested{};
-          queue_.push_back(std::move(r));
-          lock.unlock();
-          ready_cv_.notify_all();
-        }, [this] { return cancel_.load(std::memory_order_relaxed); });
-      } catch (const StopRequested&) {
-      } catch (...) {
-        error = std::current_exception();
-      }
-      {
-        std::lock_guard<std::mutex> lock(mutex_);
-        done_ = true;
-        if (!stop_) error_ = error;
-      }
-      ready_cv_.notify_all();
-    });
+  }
+
+  /// The worker thread: run_scenes, its records into the queue.
+  void work() {
+    std::exception_ptr error;
+    try {
+      campaign::run_scenes(settings_, indices_, jobs_, [this](campaign::SceneRecord&& r) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        space_cv_.wait(lock, [&] { return queue_.size() < capacity_ || stop_; });
+        if (stop_) throw StopRequested{};
+        queue_.push_back(std::move(r));
+        lock.unlock();
+        ready_cv_.notify_all();
+      }, [this] { return cancel_.load(std::memory_order_relaxed); });
+    } catch (const StopRequested&) {
+    } catch (...) {
+      error = std::current_exception();
+    }
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+      if (!stop_) error_ = error;
+    }
+    ready_cv_.notify_all();
   }
 
   const campaign::CampaignSettings settings_;

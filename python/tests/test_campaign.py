@@ -1,10 +1,13 @@
 """Campaigns from Python (hsx.campaign, hsx.campaign_checks): the records equal `hsx campaign --out`'s
 results.jsonl lines, come in index order and are the same for any number of jobs; bad settings are InputError;
-Ctrl-C stops a campaign with KeyboardInterrupt; failing scenes come back as hsx.Scene."""
+Ctrl-C stops a campaign with KeyboardInterrupt; failing scenes come back as hsx.Scene; a worker thread the system
+refuses is a RuntimeError, and the next call tries again."""
 import json
 import os
+import resource
 import signal
 import subprocess
+import sys
 import threading
 import time
 
@@ -194,3 +197,36 @@ def test_sample_policy_intended_equals_the_cli(hsx_program, tmp_path):
     assert uniform.checks["prop61"][0] == "skipped" and not uniform.intended
     with pytest.raises(hsx.InputError):
         hsx.campaign(seed=5, count=1, sample_policy="random")
+
+
+REFUSED_THREAD = r"""
+import resource, sys
+import hsx
+run = hsx.campaign(seed=3, count=2, checks="existence")
+# Each new thread reserves this process's stack limit (1 GiB, set before it started); the address space may grow
+# by 256 MiB only: the campaign's thread cannot start.
+with open("/proc/self/status") as status:
+    in_use = next(int(line.split()[1]) for line in status if line.startswith("VmSize:")) * 1024
+soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+resource.setrlimit(resource.RLIMIT_AS, (in_use + (256 << 20), hard))
+try:
+    next(run)
+    sys.exit("the thread started")
+except RuntimeError as e:
+    print("refused:", e)
+resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
+print("then:", [r.index for r in run])
+"""
+
+
+def test_a_refused_thread_is_an_error_and_the_next_call_starts_it():
+    # Before, the refused thread left the iterator marked as started: the next call waited for records forever.
+    def big_stacks():
+        resource.setrlimit(resource.RLIMIT_STACK, (1 << 30, resource.getrlimit(resource.RLIMIT_STACK)[1]))
+
+    env = dict(os.environ, MALLOC_ARENA_MAX="1")  # glibc's malloc: no arena of its own for the new thread
+    p = subprocess.run([sys.executable, "-c", REFUSED_THREAD], capture_output=True, text=True, env=env,
+                       preexec_fn=big_stacks, timeout=60)
+    assert p.returncode == 0, p.stderr + p.stdout
+    assert "refused: hsx.campaign: the system refused the campaign's thread" in p.stdout
+    assert "then: [0, 1]" in p.stdout

@@ -18,6 +18,8 @@
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <string>
+#include <system_error>
 #include <thread>
 #include <utility>
 #endif
@@ -217,7 +219,7 @@ void MpiRun::distribute(const std::vector<std::uint64_t>& indices, const LineWor
     std::lock_guard<std::mutex> lock(mutex);
     return dispenser.next();
   };
-  std::thread worker([&] {
+  const auto work_chunks = [&] {
     try {
       for (;;) {
         const Chunk c = take_chunk();
@@ -234,7 +236,13 @@ void MpiRun::distribute(const std::vector<std::uint64_t>& indices, const LineWor
       failure = std::current_exception();
       wake.notify_one();
     }
-  });
+  };
+  std::thread worker;
+  try {
+    worker = std::thread(work_chunks);
+  } catch (const std::system_error& e) {  // other ranks wait for answers: stop them all, as any failure here does
+    abort_run(std::string("the system refused rank 0's worker thread (") + e.what() + ")", rank_);
+  }
   std::map<std::uint64_t, std::string> waiting;  // lines by position, until every earlier one is there
   std::uint64_t next = 0;
   int done_ranks = 0;  // ranks told that nothing is left (each asks once more after its last chunk)

@@ -15,8 +15,14 @@
 // hsx::arrange's complex took 30-41 ms with the default and 11-16 ms without decay, and a campaign of 300 scenes
 // 2.51-2.58 s against 2.18-2.50 s. The price is a resident size at its high-water mark (that campaign: 28 MB
 // instead of 23-24 MB); the address space used is the same (jemalloc retains its mappings either way).
+// Freed extents may also be split for requests up to 1024 times smaller (lg_extent_max_active_fit 10; jemalloc's
+// default is 64 times): without purging, freed memory is only useful if it can be reused, and with the default a
+// loop alternating hsx::arrange at 10,000 cells with other work kept carving fresh pages instead, its resident size
+// growing by 6.6 MB per arrangement (81 -> 247 MB over 25) with a thousand page faults each. Measured (docs/
+// limits.md, session 23): that loop stays at 84-87 MB with almost no faults; a campaign of 200 scenes of 24-32
+// halfspaces peaks at 31 MB instead of 74 MB.
 extern "C" {
-const char* malloc_conf = "dirty_decay_ms:-1,muzzy_decay_ms:-1";
+const char* malloc_conf = "dirty_decay_ms:-1,muzzy_decay_ms:-1,lg_extent_max_active_fit:10";
 }
 #endif
 

@@ -1031,21 +1031,25 @@ std::vector<std::string> file_lines(const std::string& path) {
   return lines;
 }
 
-/// --campaign-mpi: the row's scenes run by two processes, timed (each run's folder made afresh, untimed):
-/// `hsx campaign --jobs 2` and `mpirun -np 2 hsx campaign --jobs 1`; both stages and, in `row.notes`, MPI's time
-/// over the threads' and whether both processes' records are `reference`'s bytes (the in-process run on one
-/// thread; not compared when a scene of it timed out).
+/// --campaign-mpi: the row's scenes run by two processes, timed side by side (time_alternately: a round is one
+/// run of each, so the machine's drift, which reaches a quarter within minutes here, falls on both alike):
+/// `hsx campaign --jobs 2` and `mpirun -np 2 hsx campaign --jobs 1`, each run into a folder of its own; both stages
+/// and, in `row.notes`, MPI's time over the threads' and whether both processes' last records are `reference`'s
+/// bytes (the in-process run on one thread; not compared when a scene of it timed out).
 void time_campaign_processes(int halfspaces, const std::string& checks, const BenchOptions& o,
                              const RepeatOptions& repeat, const std::vector<std::string>& reference, BenchRow& row) {
   const TemporaryFolder scratch("hsx-bench");
-  std::vector<std::string> records[2];
-  for (bool mpi : {false, true}) {
-    const std::string out = scratch.file(mpi ? "mpi" : "threads");
-    const std::string command = campaign_process_command(halfspaces, checks, o, mpi ? 1 : 2, mpi, out);
+  std::string last_out[2];  // the folder of each command's latest run
+  int runs_made = 0;
+  std::vector<std::function<void()>> runs;
+  for (bool mpi : {false, true})
+    runs.push_back([&, mpi] {
+      last_out[mpi] = scratch.file((mpi ? "mpi-" : "threads-") + std::to_string(runs_made++));
+      run_campaign_process(campaign_process_command(halfspaces, checks, o, mpi ? 1 : 2, mpi, last_out[mpi]));
+    });
+  for (TimingSummary& timing : time_alternately(runs, repeat)) {
     StageResult stage;
-    stage.timing = time_repeatedly([&] { run_campaign_process(command); }, repeat,
-                                   [&] { std::filesystem::remove_all(out); });
-    records[mpi] = file_lines(out + "/results.jsonl");
+    stage.timing = std::move(timing);
     row.stages.push_back(stage);
   }
   const double threads = row.stages[2].timing->median, mpi = row.stages[3].timing->median;
@@ -1053,7 +1057,9 @@ void time_campaign_processes(int halfspaces, const std::string& checks, const Be
   const bool timed_out = std::any_of(reference.begin(), reference.end(), [](const std::string& line) {
     return line.find("\"timed_out\":true") != std::string::npos;
   });
-  row.notes.push_back(timed_out ? "-" : records[0] == reference && records[1] == reference ? "yes" : "NO");
+  const bool same = file_lines(last_out[0] + "/results.jsonl") == reference &&
+                    file_lines(last_out[1] + "/results.jsonl") == reference;
+  row.notes.push_back(timed_out ? "-" : same ? "yes" : "NO");
 }
 
 BenchRow bench_campaign(int halfspaces, const std::string& checks, const BenchOptions& o,
@@ -1134,8 +1140,8 @@ void run_campaign_bench(const BenchOptions& o, OutputFiles& files) {
       "issue 15's goals: >= 100 scenes/s per core at 8 halfspaces, >= 1.9x on 2 cores; MPI against threads is two "
       "processes: time `mpirun -np 2 hsx campaign ... --jobs 1` against `hsx campaign ... --jobs 2` "
       "(docs/campaigns-cluster.md); --campaign-mpi does so: proc jobs 2 and mpirun 2 are those two commands as "
-      "processes (start-up included, --no-minimise), mpi/thread the ratio of their medians, mpi same: both "
-      "processes' records are jobs 1's bytes"};
+      "processes (start-up included, --no-minimise), run alternately, mpi/thread the ratio of their medians, mpi "
+      "same: both processes' records are jobs 1's bytes"};
   publish(report, o, files);
 }
 

@@ -74,9 +74,10 @@ status=$?
 [[ "$(ls "$TMP/foreign")" == notes.txt && "$(cat "$TMP/foreign/notes.txt")" == mine ]] && pass ||
   fail "the foreign folder was changed: $(ls "$TMP/foreign")"
 
-# hsx bench --campaign --campaign-mpi: the two process stages run, and their records are one thread's bytes.
+# hsx bench --campaign --campaign-mpi: the two process stages run in alternating rounds (two here, each run into a
+# folder of its own), and their records are one thread's bytes.
 "$HSX" bench --campaign --campaign-halfspaces 4 --campaign-scenes 6 --campaign-checks existence,beam1,uniqueness \
-  --campaign-time-limit 0 --campaign-max-states 200 --campaign-mpi --repetitions 1 --min-time 0 \
+  --campaign-time-limit 0 --campaign-max-states 200 --campaign-mpi --repetitions 2 --min-time 0 \
   --json "$TMP/bench.json" >"$TMP/bench.txt" 2>&1
 [[ $? == 0 ]] && pass || fail "bench --campaign-mpi failed: $(cat "$TMP/bench.txt")"
 python3 - "$TMP/bench.json" <<'PY' && pass || fail "bench --campaign-mpi: $(cat "$TMP/bench.txt")"
@@ -84,6 +85,8 @@ import json, sys
 row = json.load(open(sys.argv[1]))["rows"][0]
 assert row["mpi same"] == "yes", row
 assert float(row["mpi/thread"]) > 0, row
+stages = {s["stage"]: s for s in row["stages"]}
+assert stages["proc jobs 2"]["repetitions"] == 2 and stages["mpirun 2"]["repetitions"] == 2, row
 PY
 
 testlib_finish

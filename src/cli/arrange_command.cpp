@@ -173,8 +173,8 @@ void run_arrange(const ArrangeOptions& options) {
   out.put(options.ply_path, std::move(ply_text));
   out.put(options.obj_path, std::move(obj.obj));
   out.put(mtl_path, std::move(obj.mtl));
+  if (!options.quiet && options.json_path != "-" && export_path != "-") out.print(summary_text(in));
   out.commit();
-  if (!options.quiet && options.json_path != "-" && export_path != "-") std::cout << summary_text(in);
 }
 
 }  // namespace
@@ -209,7 +209,8 @@ void add_arrange_command(CLI::App& app) {
                   "--weight-scale rounded to integers, plus outer_cells and exact measures (io/labelling.hpp); "
                   "grade its answer with hsx grade INPUT LABELS")
       ->expected(2)
-      ->type_name("FORMAT FILE");
+      ->type_name("FORMAT FILE")
+      ->check(output_path());
   cmd->add_option("--weight-scale", options->weight_scale,
                   "bsh-graphcut: integer weight = round(measure x this), at least 1 (default 1000000)");
   cmd->add_flag("-q,--quiet", options->quiet, "do not print the summary");

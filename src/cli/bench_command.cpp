@@ -274,14 +274,14 @@ nlohmann::json report_json(const Report& report) {
           {"footer", report.footer}};
 }
 
-/// Prints the table and writes the requested files (all rendered before anything is written).
+/// Prints the table and writes the requested files (all rendered before anything is written, all or none).
 void publish(const Report& report, const BenchOptions& o, OutputFiles& files) {
   const std::string csv = o.csv_path.empty() ? "" : csv_text(report);
   const std::string json = o.json_path.empty() ? "" : report_json(report).dump(2) + "\n";
   files.put(o.csv_path, csv);
   files.put(o.json_path, json);
+  files.print(table_text(report));
   files.commit();
-  std::cout << table_text(report);
 }
 
 RepeatOptions repeat_options(const BenchOptions& o) {

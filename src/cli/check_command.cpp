@@ -46,8 +46,8 @@ int run_check(const CheckCommandOptions& o) {
   out.put(o.json_path, nlohmann::json{{"format", "hsx-check/1"}, {"input", o.input}, {"passed", !failed}, {"complete", complete},
                                       {"checks", json}}
                             .dump(2) + "\n");
+  out.print(table.str());
   out.commit();
-  std::cout << table.str();
   return failed ? kCheckFailed : 0;
 }
 

@@ -23,12 +23,41 @@ void run_with_status(CLI::App* cmd, std::shared_ptr<Options> options, int (*run)
   });
 }
 
+/// The name of output_path()'s validator: it marks an option as an output (refuse_outputs_over_inputs).
+inline constexpr const char* kOutputPathValidator = "output-path";
+
 /// For output-file options: a path, never an empty one ("-" is standard output; io/files.hpp has the policy for
-/// links, devices and FIFOs). An empty path is a parse error (exit 2), not an option silently ignored.
+/// links, devices and FIFOs). An empty path is a parse error (exit 2), not an option silently ignored. Every option
+/// that names an output file carries it: it is how refuse_outputs_over_inputs tells outputs from inputs.
 inline CLI::Validator output_path() {
   return CLI::Validator([](std::string& s) { return s.empty() ? std::string("an empty path") : std::string(); },
-                        "PATH");
+                        "PATH", kOutputPathValidator);
 }
+
+/// Refuses (InputError, so exit 2) a command line whose output would replace one of the run's own inputs: the value
+/// of an output option (one checked by output_path()) that is, through any spelling, hard link or symbolic link, the
+/// same existing regular file as the value of any other option or positional argument of the parsed subcommands
+/// (a scene, a shape, a mesh, a program to run). `app` is the parsed top-level app; main.cpp calls it once the
+/// command line is parsed, before any command runs. Paths an output derives from another (an .obj's .mtl, the files
+/// of --decomposed PREFIX) are not options and are not compared.
+void refuse_outputs_over_inputs(CLI::App& app);
+
+/// The same refusal for an input that is not an option's value (a file a command finds in a folder it was given):
+/// throws InputError when `output` (the value of `output_option`; "" or "-" never) is the same existing regular
+/// file as `input`, which `input_name` names in the message.
+void refuse_output_over_input(const std::string& output_option, const std::string& output,
+                              const std::string& input_name, const std::string& input);
+
+/// Makes a standard descriptor (0, 1, 2) that the program was started without point at a stand-in that refuses
+/// its use (/dev/null opened the other way round: reading standard input or writing standard output then fails with
+/// "Bad file descriptor"). Without it the first file the program opens would take the free number, and what it
+/// prints would go into that file, an output. main.cpp calls it first.
+void occupy_closed_standard_descriptors();
+
+/// The reason standard output could not be written, or "" when everything the program printed was written. Flushes
+/// it first. main.cpp asks after the command ran: a full disk or a closed descriptor behind standard output is then
+/// reported (exit 2) instead of being a silent success.
+std::string standard_output_error();
 
 /// For seconds: a finite number >= 0 ("nan", "inf" and negatives are refused).
 inline CLI::Validator seconds() {

@@ -124,21 +124,23 @@ int run_describe(const DescribeOptions& o) {
                                         {"mixed_terms", mixed_terms_json(in.complex(), d)}}
                                  .dump(2) + "\n");
   out.put(o.svg_path, svg_text);
-  out.commit();
+  std::ostringstream report;
   if (o.json_path != "-") {
-    std::cout << (d.describable ? "describable" : "not describable") << " by the " << in.complex().halfspace_count()
-              << " halfspaces (" << d.terms << " canonical intersection terms, " << d.mixed.size() << " mixed)\n";
+    report << (d.describable ? "describable" : "not describable") << " by the " << in.complex().halfspace_count()
+           << " halfspaces (" << d.terms << " canonical intersection terms, " << d.mixed.size() << " mixed)\n";
     for (const auto& t : d.mixed) {
-      std::cout << "  mixed term";
+      report << "  mixed term";
       for (int i = 0; i < in.complex().halfspace_count(); ++i)
-        std::cout << " " << (t.signs[i] ? "" : "~") << in.complex().halfspace_names[i];
-      std::cout << ": inside cells";
-      for (int k : t.inside_cells) std::cout << " " << k;
-      std::cout << ", outside cells";
-      for (int k : t.outside_cells) std::cout << " " << k;
-      std::cout << "\n";
+        report << " " << (t.signs[i] ? "" : "~") << in.complex().halfspace_names[i];
+      report << ": inside cells";
+      for (int k : t.inside_cells) report << " " << k;
+      report << ", outside cells";
+      for (int k : t.outside_cells) report << " " << k;
+      report << "\n";
     }
   }
+  out.print(report.str());
+  out.commit();
   return d.describable ? 0 : 3;
 }
 
@@ -241,7 +243,7 @@ std::string plane_text(const csg::SeparatorPlane& p) {
 }
 
 /// One line per round: the mixed terms before, the candidates, the trials that separated and did not, the chosen.
-void print_plane_rounds(const csg::SeparatedSolid3& s) {
+void print_plane_rounds(const csg::SeparatedSolid3& s, std::ostream& out) {
   for (std::size_t k = 0; k < s.rounds.size(); ++k) {
     const csg::PlaneRound& r = s.rounds[k];
     int separated = 0, rejected = 0;
@@ -251,25 +253,25 @@ void print_plane_rounds(const csg::SeparatedSolid3& s) {
       rejected += t.arranged ? 0 : 1;
       if (t.chosen) chosen = &t;
     }
-    std::cout << "round " << k + 1 << ": " << r.mixed_terms << " mixed terms (" << r.mixed_cells << " cells), "
-              << r.candidates << " candidate planes, " << r.predicted << " predicted to separate, "
-              << r.trials.size() << " arranged: " << separated << " separated, "
-              << r.trials.size() - static_cast<std::size_t>(separated) - static_cast<std::size_t>(rejected)
-              << " did not, " << rejected << " rejected";
+    out << "round " << k + 1 << ": " << r.mixed_terms << " mixed terms (" << r.mixed_cells << " cells), "
+        << r.candidates << " candidate planes, " << r.predicted << " predicted to separate, "
+        << r.trials.size() << " arranged: " << separated << " separated, "
+        << r.trials.size() - static_cast<std::size_t>(separated) - static_cast<std::size_t>(rejected)
+        << " did not, " << rejected << " rejected";
     if (chosen)
-      std::cout << "; added sep" << k << " " << plane_text(chosen->plane) << " -> " << chosen->mixed_terms
-                << " mixed terms";
-    std::cout << "\n";
+      out << "; added sep" << k << " " << plane_text(chosen->plane) << " -> " << chosen->mixed_terms
+          << " mixed terms";
+    out << "\n";
   }
-  std::cout << "added " << s.separators << " separating plane(s)\n";
+  out << "added " << s.separators << " separating plane(s)\n";
 }
 
-void print_tree_summary(const csg::BhcResult& r, const Complex& complex) {
-  std::cout << "tree " << csg::to_text(*r.tree, complex.halfspace_names) << "\n"
-            << "verified on every cell: " << (r.verified ? "yes" : "NO") << "\n"
-            << "depth " << r.stats.depth << ", internal nodes " << r.stats.internal_nodes << ", leaves "
-            << r.stats.leaves << ", duplicated halfspaces " << r.stats.duplicated_halfspaces << ", factored "
-            << r.factored << ", partitions " << r.partitions << "\n";
+void print_tree_summary(const csg::BhcResult& r, const Complex& complex, std::ostream& out) {
+  out << "tree " << csg::to_text(*r.tree, complex.halfspace_names) << "\n"
+      << "verified on every cell: " << (r.verified ? "yes" : "NO") << "\n"
+      << "depth " << r.stats.depth << ", internal nodes " << r.stats.internal_nodes << ", leaves "
+      << r.stats.leaves << ", duplicated halfspaces " << r.stats.duplicated_halfspaces << ", factored "
+      << r.factored << ", partitions " << r.partitions << "\n";
 }
 
 int run_csg(const CsgOptions& o) {
@@ -331,31 +333,33 @@ int run_csg(const CsgOptions& o) {
   if (!o.json_path.empty()) out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.svg_path, svg_text);
   if (write_scad) out.put(o.openscad_path, scad_text);
-  out.commit();
   if (!o.openscad_path.empty() && !write_scad)
     std::cerr << "hsx: --openscad: " << o.openscad_path << " not written: there is no verified tree\n";
+  std::ostringstream report;
   if (o.json_path != "-") {
-    if (t.separated) std::cout << "added " << t.separated->separators << " separating half-plane(s)\n";
-    if (t.separated3) print_plane_rounds(*t.separated3);
+    if (t.separated) report << "added " << t.separated->separators << " separating half-plane(s)\n";
+    if (t.separated3) print_plane_rounds(*t.separated3, report);
     if (r.describable) {
-      print_tree_summary(r, complex);
+      print_tree_summary(r, complex, report);
     } else {
-      std::cout << "not describable: BHC stopped at a canonical intersection term holding inside cells";
-      for (int k : r.witness.inside_cells) std::cout << " " << k;
-      std::cout << " and outside cells";
-      for (int k : r.witness.outside_cells) std::cout << " " << k;
+      report << "not describable: BHC stopped at a canonical intersection term holding inside cells";
+      for (int k : r.witness.inside_cells) report << " " << k;
+      report << " and outside cells";
+      for (int k : r.witness.outside_cells) report << " " << k;
       if (t.separated)
-        std::cout << " (" << separators_outcome(*t.separated, o.max_separators) << ")";
+        report << " (" << separators_outcome(*t.separated, o.max_separators) << ")";
       else if (t.separated3)
-        std::cout << " (" << separators3_outcome(*t.separated3, o.max_separators) << ")";
+        report << " (" << separators3_outcome(*t.separated3, o.max_separators) << ")";
       else if (in.scene || in.scene3)
-        std::cout << " (try --separators)";
-      std::cout << "\n";
+        report << " (try --separators)";
+      report << "\n";
     }
-    std::cout << measure_name << " " << area.decimal_string(30);
-    if (auto e = area.exact_string()) std::cout << " = " << *e;
-    std::cout << "\n";
+    report << measure_name << " " << area.decimal_string(30);
+    if (auto e = area.exact_string()) report << " = " << *e;
+    report << "\n";
   }
+  out.print(report.str());
+  out.commit();
   if (t.has_verified_tree()) return 0;
   return r.describable ? 1 : 3;
 }
@@ -424,15 +428,17 @@ int run_convert(const ConvertOptions& o) {
     summary["volume"] = measure_to_json(bsh::inside_measure(c, report3->oriented_solid));
   }
   out.put(o.json_path, summary.dump(2) + "\n");
-  out.commit();
-  std::cout << "wrote " << o.out_path << ": " << samples.sample_patches.size() << " samples (lower bound "
-            << samples.initial << ", upper bound " << samples.upper_bound << ", " << samples.rounds
-            << " extraction rounds); hsx extract gives the solid back: yes\n";
+  std::ostringstream printed;
+  printed << "wrote " << o.out_path << ": " << samples.sample_patches.size() << " samples (lower bound "
+          << samples.initial << ", upper bound " << samples.upper_bound << ", " << samples.rounds
+          << " extraction rounds); hsx extract gives the solid back: yes\n";
   if (!flipped.empty()) {
-    std::cout << "complemented (the solid runs along them reversed):";
-    for (const std::string& n : flipped) std::cout << " " << n;
-    std::cout << "\n";
+    printed << "complemented (the solid runs along them reversed):";
+    for (const std::string& n : flipped) printed << " " << n;
+    printed << "\n";
   }
+  out.print(printed.str());
+  out.commit();
   return 0;
 }
 
@@ -490,14 +496,16 @@ int run_samples(const SamplesOptions& o) {
   }
   out.put(o.json_path, j.dump(2) + "\n");
   out.put(o.out_path, scene_text);
-  out.commit();
-  std::cout << r.sample_patches.size() << " samples (lower bound " << r.initial << ", upper bound " << r.upper_bound
-            << ", " << r.rounds << " rounds, reproduced: " << (r.reproduced ? "yes" : "NO") << ")";
-  if (minimum >= 0) std::cout << "; true minimum " << minimum << " (greedy excess " << r.sample_patches.size() - minimum << ")";
-  std::cout << "\n";
+  std::ostringstream report;
+  report << r.sample_patches.size() << " samples (lower bound " << r.initial << ", upper bound " << r.upper_bound
+         << ", " << r.rounds << " rounds, reproduced: " << (r.reproduced ? "yes" : "NO") << ")";
+  if (minimum >= 0) report << "; true minimum " << minimum << " (greedy excess " << r.sample_patches.size() - minimum << ")";
+  report << "\n";
   if (round_trip)
-    std::cout << "wrote " << o.out_path << "; hsx extract gives the target back: " << (*round_trip ? "yes" : "NO")
-              << "\n";
+    report << "wrote " << o.out_path << "; hsx extract gives the target back: " << (*round_trip ? "yes" : "NO")
+           << "\n";
+  out.print(report.str());
+  out.commit();
   return r.reproduced && round_trip.value_or(true) ? 0 : 3;
 }
 
@@ -598,8 +606,8 @@ int run_corpus(const CorpusOptions& o) {
     out.put(o.json_path, nlohmann::json{{"format", "hsx-corpus/1"}, {"programs", list}}.dump(1) + "\n");
   }
   if (rows.empty()) throw InputError("corpus: " + o.file + " has no program in the lines asked for");
+  out.print(std::string(ok == static_cast<long>(rows.size()) ? "all" : "NOT all") + " programs passed\n");
   out.commit();
-  std::cout << (ok == static_cast<long>(rows.size()) ? "all" : "NOT all") << " programs passed\n";
   return ok == static_cast<long>(rows.size()) ? 0 : 3;
 }
 

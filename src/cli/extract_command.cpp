@@ -321,8 +321,8 @@ void run_extract(const ExtractCommandOptions& o) {
   out.put(mtl_path, std::move(mesh.mtl));
   out.put(o.ply_path, std::move(mesh.ply));
   out.put(o.off_path, std::move(mesh.off));
+  if (!o.quiet && o.json_path != "-") out.print(summary(in, problem, result, o));
   out.commit();
-  if (!o.quiet && o.json_path != "-") std::cout << summary(in, problem, result, o);
 }
 
 }  // namespace

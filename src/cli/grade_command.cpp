@@ -219,12 +219,15 @@ int run_grade(const GradeCommandOptions& o) {
     out.put(o.json_path, nlohmann::json{{"format", "hsx-grade/1"}, {"input", o.input}, {"verdict", "no answer"},
                                         {"complex_id", complex_identity(in.complex())}, {"run", run_json(o, *run)}}
                              .dump(2) + "\n");
+    if (!o.quiet && o.json_path != "-") {
+      std::ostringstream report;
+      report << "ran " << o.run_command << ": " << run->problem << " (" << run->seconds << " s)\n"
+             << (run->output_tail.empty() ? "" : "its output ends:\n" + run->output_tail +
+                                                   (run->output_tail.back() == '\n' ? "" : "\n"))
+             << "verdict no answer\n";
+      out.print(report.str());
+    }
     out.commit();
-    if (!o.quiet && o.json_path != "-")
-      std::cout << "ran " << o.run_command << ": " << run->problem << " (" << run->seconds << " s)\n"
-                << (run->output_tail.empty() ? "" : "its output ends:\n" + run->output_tail +
-                                                      (run->output_tail.back() == '\n' ? "" : "\n"))
-                << "verdict no answer\n";
     return kNotOptimal;
   }
   const bsh::Problem problem(in.complex());
@@ -233,11 +236,13 @@ int run_grade(const GradeCommandOptions& o) {
   nlohmann::json j = grade_json(o, in.complex(), theirs->format, g, d);
   if (run) j["run"] = run_json(o, *run);
   out.put(o.json_path, j.dump(2) + "\n");
-  out.commit();
   if (!o.quiet && o.json_path != "-") {
-    if (run) std::cout << "ran " << o.run_command << " in " << run->seconds << " s\n";
-    std::cout << summary(o, in.complex(), theirs->format, g, d);
+    std::ostringstream report;
+    if (run) report << "ran " << o.run_command << " in " << run->seconds << " s\n";
+    report << summary(o, in.complex(), theirs->format, g, d);
+    out.print(report.str());
   }
+  out.commit();
   const std::string v = verdict(g);
   return v == "optimal" ? 0 : v == "undecided" ? kUndecided : kNotOptimal;
 }

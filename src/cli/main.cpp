@@ -26,23 +26,10 @@ const char* malloc_conf = "dirty_decay_ms:-1,muzzy_decay_ms:-1,lg_extent_max_act
 }
 #endif
 
-int main(int argc, char** argv) {
-  hsx::remove_temporary_outputs_on_signals();
-  hsx::install_gmp_allocation_handlers();
-  hsx::install_out_of_memory_reserve(std::size_t{16} << 20);  // room to unwind and report "out of memory"
-  CLI::App app{"hsx: exact arrangements, BSH shapes and halfspace CSG, with certified answers"};
-  app.set_version_flag("--version", std::string("hsx ") + HSX_VERSION);
-  app.require_subcommand(1);
-  hsx::cli::add_arrange_command(app);
-  hsx::cli::add_extract_command(app);
-  hsx::cli::add_check_command(app);
-  hsx::cli::add_grade_command(app);
-  hsx::cli::add_csg_commands(app);
-  hsx::cli::add_nhtree_command(app);
-  hsx::cli::add_nhsurvey_command(app);
-  hsx::cli::add_reference_command(app);
-  hsx::cli::add_campaign_command(app);
-  hsx::cli::add_bench_command(app);
+namespace {
+
+/// Parses the command line and runs its command; the exit code.
+int run_program(CLI::App& app, int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
@@ -64,4 +51,39 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  hsx::cli::occupy_closed_standard_descriptors();
+  hsx::remove_temporary_outputs_on_signals();
+  hsx::install_gmp_allocation_handlers();
+  hsx::install_out_of_memory_reserve(std::size_t{16} << 20);  // room to unwind and report "out of memory"
+  CLI::App app{"hsx: exact arrangements, BSH shapes and halfspace CSG, with certified answers"};
+  app.set_version_flag("--version", std::string("hsx ") + HSX_VERSION);
+  app.require_subcommand(1);
+  hsx::cli::add_arrange_command(app);
+  hsx::cli::add_extract_command(app);
+  hsx::cli::add_check_command(app);
+  hsx::cli::add_grade_command(app);
+  hsx::cli::add_csg_commands(app);
+  hsx::cli::add_nhtree_command(app);
+  hsx::cli::add_nhsurvey_command(app);
+  hsx::cli::add_reference_command(app);
+  hsx::cli::add_campaign_command(app);
+  hsx::cli::add_bench_command(app);
+  // Once the whole command line is parsed, before any command runs: no output may replace one of the inputs.
+  app.parse_complete_callback([&app] { hsx::cli::refuse_outputs_over_inputs(app); });
+  int code = run_program(app, argc, argv);
+  // What was printed must have arrived: a full disk or a closed descriptor behind standard output is an error (exit
+  // 2 instead of a success; a run that already failed keeps its code, a check's 3 or 4 too).
+  if (code != 1 && code != 2) {
+    const std::string error = hsx::cli::standard_output_error();
+    if (!error.empty()) {
+      std::cerr << "hsx: error: cannot write standard output: " << error << "\n";
+      if (code == 0) code = 2;
+    }
+  }
+  return code;
 }

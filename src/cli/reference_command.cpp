@@ -23,10 +23,12 @@ struct ReferenceOptions {
 };
 
 int run_reference(const ReferenceOptions& o) {
-  OutputFiles out;
-  out.expect(o.json_path, "--json");
   const std::filesystem::path folder(o.folder);
   if (!std::filesystem::is_directory(folder)) throw InputError(o.folder + ": not a folder");
+  for (const char* file : {"reference-result.grid", "config.json"})
+    refuse_output_over_input("--json", o.json_path, "FOLDER's", (folder / file).string());
+  OutputFiles out;
+  out.expect(o.json_path, "--json");
   const BshReference reference = read_bsh_reference_file((folder / "reference-result.grid").string());
   const LoadedInput in = load_input((folder / "config.json").string(), o.limits);
   std::vector<char> ours;
@@ -41,7 +43,7 @@ int run_reference(const ReferenceOptions& o) {
   const std::string name = folder.filename().empty() ? folder.parent_path().filename().string()
                                                      : folder.filename().string();
   const BshReferenceComparison comparison = compare_bsh_reference(reference, *in.arranged3, ours);
-  std::cout << bsh_reference_table(comparison, name);
+  out.print(bsh_reference_table(comparison, name));
   if (!o.json_path.empty()) out.put(o.json_path, bsh_reference_to_json(comparison, name).dump(1) + "\n");
   out.commit();
   return 0;

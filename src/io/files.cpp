@@ -21,7 +21,7 @@
 namespace hsx {
 namespace {
 
-// ---- temporary files removed on SIGINT / SIGTERM / SIGHUP -------------------------------------------------------
+// ---- temporary files removed on SIGINT / SIGTERM / SIGHUP / SIGPIPE ---------------------------------------------
 // A fixed table the signal handler can read without allocating: a slot holds a NUL-terminated path while `live`.
 
 constexpr std::size_t kSlots = 64;
@@ -193,6 +193,7 @@ void discard_temporary(Target& t) {
 
 struct OutputFiles::Impl {
   std::vector<Target> targets;
+  std::optional<std::string> report;  ///< for standard output (print)
   std::map<std::string, std::size_t> by_path;
   std::map<std::string, std::string> identities;  ///< identity -> option that expected it
 };
@@ -229,6 +230,11 @@ void OutputFiles::put(const std::string& path, std::string content) {
   t.has_content = true;
 }
 
+void OutputFiles::print(const std::string& text) {
+  if (!impl_->report) impl_->report.emplace();
+  *impl_->report += text;
+}
+
 void OutputFiles::commit() {
   std::vector<Target>& targets = impl_->targets;
   const auto cleanup_and_fail = [&](const Target& t, const std::string& why) {
@@ -261,7 +267,21 @@ void OutputFiles::commit() {
       if (!std::cout) cleanup_and_fail(t, "standard output failed");
     }
   }
-  // 2. The renames.
+  // 2. The report, the last step that can fail before anything is renamed.
+  if (impl_->report) {
+    errno = 0;
+    std::cout << *impl_->report;
+    std::cout.flush();
+    const int error = errno;
+    if (!std::cout) {
+      for (Target& u : targets) discard_temporary(u);
+      impl_->report.reset();
+      throw OutputError("cannot write standard output: " +
+                        (error != 0 ? reason(error) : std::string("an earlier write to it failed")));
+    }
+    impl_->report.reset();
+  }
+  // 3. The renames.
   for (Target& t : targets) {
     if (t.kind != Kind::Replace) continue;
     if (!t.has_content) {
@@ -290,7 +310,7 @@ void remove_temporary_outputs_on_signals() {
   struct sigaction action {};
   action.sa_handler = remove_temporaries_and_die;
   sigemptyset(&action.sa_mask);
-  for (int s : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(s, &action, nullptr);
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) ::sigaction(s, &action, nullptr);
 }
 
 std::string read_file(const std::string& path, std::size_t max_bytes) {

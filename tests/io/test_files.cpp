@@ -1,6 +1,7 @@
 // The output policy of io/files.hpp, on real files in a temporary folder: regular files replaced atomically (mode
 // kept), links followed, devices and FIFOs written in place, directories and missing folders refused, a run's
-// outputs all or none, temporary files gone after a failure or a SIGTERM; reading never blocks on a FIFO.
+// outputs all or none (the printed report included), temporary files gone after a failure, a SIGTERM or a SIGPIPE;
+// reading never blocks on a FIFO.
 #include <hsx/io/files.hpp>
 
 #include <catch2/catch.hpp>
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <dirent.h>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -142,6 +144,83 @@ TEST_CASE("files: a run's outputs are written all or none", "[files]") {
   out.commit();
   CHECK(slurp(dir / "old.json") == "replaced");
   CHECK(dir.entries() == std::vector<std::string>{"old.json"});
+}
+
+namespace {
+
+/// Standard output's stand-in while a test runs: keeps what is written, and what `watched` held at the first write.
+class WatchingBuffer : public std::stringbuf {
+ public:
+  explicit WatchingBuffer(std::string watched) : watched_(std::move(watched)) {}
+  std::string at_first_write;
+
+ protected:
+  std::streamsize xsputn(const char* s, std::streamsize n) override {
+    if (!seen_) at_first_write = slurp(watched_);
+    seen_ = true;
+    return std::stringbuf::xsputn(s, n);
+  }
+
+ private:
+  std::string watched_;
+  bool seen_ = false;
+};
+
+}  // namespace
+
+TEST_CASE("files: the printed report is written before any file is put in place, or nothing is", "[files]") {
+  TempDir dir;
+  spit(dir / "old.json", "old");
+  WatchingBuffer printed(dir / "old.json");
+  std::streambuf* const standard = std::cout.rdbuf(&printed);
+  {
+    OutputFiles out;
+    out.expect(dir / "old.json", "--json");
+    out.put(dir / "old.json", "replaced");
+    out.print("summary ");
+    out.print("line\n");
+    out.commit();
+  }
+  CHECK(printed.str() == "summary line\n");
+  CHECK(printed.at_first_write == "old");  // the report went out while the file was still the old one
+  CHECK(slurp(dir / "old.json") == "replaced");
+  {
+    OutputFiles out;
+    out.expect(dir / "old.json", "--json");
+    out.put(dir / "old.json", "again");
+    out.print("");              // nothing more to print, but what was printed before must have arrived:
+    std::cout.setstate(std::ios::badbit);  // an earlier write to standard output failed
+    CHECK_THROWS_WITH(out.commit(), Catch::Contains("cannot write standard output"));
+  }
+  std::cout.clear();
+  std::cout.rdbuf(standard);
+  CHECK(slurp(dir / "old.json") == "replaced");
+  CHECK(dir.entries() == std::vector<std::string>{"old.json"});
+}
+
+TEST_CASE("files: SIGPIPE (standard output's reader gone) removes the temporary files too", "[files]") {
+  TempDir dir;
+  const pid_t child = ::fork();
+  if (child == 0) {
+    remove_temporary_outputs_on_signals();
+    int ends[2];
+    if (::pipe(ends) != 0 || ::dup2(ends[1], 1) < 0) ::_exit(10);
+    ::close(ends[0]);  // no reader left
+    OutputFiles out;
+    out.expect(dir / "out.json", "--json");
+    out.put(dir / "out.json", "content");
+    out.print("the report\n");
+    try {
+      out.commit();
+    } catch (...) {
+    }
+    ::_exit(11);  // not reached: the write to the pipe raises SIGPIPE
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGPIPE);
+  CHECK(dir.entries().empty());
 }
 
 TEST_CASE("files: SIGTERM removes the temporary files of outputs not yet committed", "[files]") {

@@ -11,7 +11,11 @@
 //   replaced; a directory or a socket is refused.
 // - Every failure is the user's (a missing folder, no permission, a read-only place, a full disk): OutputError, an
 //   InputError, so the program exits 2 naming the path and the reason.
-// - A run's temporary files are removed when it fails, and when it is ended by SIGINT, SIGTERM or SIGHUP.
+// - A command's report to standard output (OutputFiles::print) is one of its outputs: written after every file's
+//   content and before any file is put in place, so a report that cannot be written fails the run like a file.
+// - A run's temporary files are removed when it fails, and when it is ended by SIGINT, SIGTERM, SIGHUP or SIGPIPE.
+// - The hsx program also refuses an output that is one of the run's own inputs (cli/commands.hpp,
+//   refuse_outputs_over_inputs); that needs to know which paths are inputs, so it is the program's, not this file's.
 #pragma once
 
 #include <hsx/geometry/scene.hpp>  // InputError
@@ -54,8 +58,14 @@ class OutputFiles {
   void expect(const std::string& path, const std::string& option);
   /// The content for an expected path (std::logic_error when it was not expected: a bug).
   void put(const std::string& path, std::string content);
-  /// Writes everything put (paths expected but never put are left alone). Throws OutputError and leaves no new
-  /// output behind on failure.
+  /// A report for standard output (a command's summary), appended to what was given before. It is written by
+  /// commit after every file's content is in place and before any file is renamed, so a report that cannot be
+  /// written (standard output on a full disk or closed) fails the commit and leaves no output behind. Once print
+  /// was called, commit also fails when anything the program printed to std::cout earlier failed; `text` may be
+  /// empty for a command that printed its report as it went.
+  void print(const std::string& text);
+  /// Writes everything put (paths expected but never put are left alone), then the report given to print. Throws
+  /// OutputError and leaves no new output behind on failure.
   void commit();
 
  private:
@@ -63,9 +73,10 @@ class OutputFiles {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Makes SIGINT, SIGTERM and SIGHUP remove the temporary files of outputs not yet committed, then end the process
-/// as the signal would. For programs (the hsx CLI calls it first); a library user with signal handlers of its own
-/// need not call it (temporary files are still removed on every failure and by ~OutputFiles).
+/// Makes SIGINT, SIGTERM, SIGHUP and SIGPIPE (a reader of standard output or of a FIFO that went away) remove the
+/// temporary files of outputs not yet committed, then end the process as the signal would. For programs (the hsx CLI
+/// calls it first); a library user with signal handlers of its own need not call it (temporary files are still
+/// removed on every failure and by ~OutputFiles).
 void remove_temporary_outputs_on_signals();
 
 /// Reads a whole file: a regular file, or a FIFO or character device read to its end (a FIFO is opened without

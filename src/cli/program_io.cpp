@@ -1,0 +1,97 @@
+// The hsx program's own checks of its inputs and outputs as a whole (commands.hpp).
+#include "cli/commands.hpp"
+#include <hsx/geometry/scene.hpp>  // InputError
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace hsx::cli {
+namespace {
+
+/// A path given on the command line that names an existing regular file, and which file it is.
+struct NamedFile {
+  std::string option, path;
+  dev_t device;
+  ino_t inode;
+};
+
+bool is_output_option(CLI::Option* option) {
+  try {
+    option->get_validator(kOutputPathValidator);
+    return true;
+  } catch (const CLI::OptionNotFound&) {
+    return false;
+  }
+}
+
+/// The file `path` names after following links, when it is an existing regular file ("-" never is).
+std::optional<std::pair<dev_t, ino_t>> regular_file(const std::string& path) {
+  struct stat info {};
+  if (path.empty() || path == "-" || ::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return std::nullopt;
+  return std::make_pair(info.st_dev, info.st_ino);
+}
+
+/// Every value of `app`'s options and of its parsed subcommands' that names a regular file, outputs apart.
+void collect(CLI::App* app, std::vector<NamedFile>& inputs, std::vector<NamedFile>& outputs) {
+  for (CLI::Option* option : app->get_options()) {
+    for (const std::string& value : option->results()) {
+      const auto file = regular_file(value);
+      if (!file) continue;
+      (is_output_option(option) ? outputs : inputs).push_back({option->get_name(), value, file->first, file->second});
+    }
+  }
+  for (CLI::App* sub : app->get_subcommands()) collect(sub, inputs, outputs);
+}
+
+[[noreturn]] void refuse(const NamedFile& out, const std::string& input_name, const std::string& input) {
+  throw InputError("cannot write " + out.option + " \"" + out.path + "\": it is the same file as the input " +
+                   input_name + " \"" + input + "\"; hsx does not replace a file it reads (write elsewhere)");
+}
+
+}  // namespace
+
+void refuse_outputs_over_inputs(CLI::App& app) {
+  std::vector<NamedFile> inputs, outputs;
+  collect(&app, inputs, outputs);
+  for (const NamedFile& out : outputs)
+    for (const NamedFile& in : inputs)
+      if (out.device == in.device && out.inode == in.inode) refuse(out, in.option, in.path);
+}
+
+void refuse_output_over_input(const std::string& output_option, const std::string& output,
+                              const std::string& input_name, const std::string& input) {
+  const auto out = regular_file(output), in = regular_file(input);
+  if (out && in && *out == *in) refuse({output_option, output, out->first, out->second}, input_name, input);
+}
+
+void occupy_closed_standard_descriptors() {
+  for (int fd = 0; fd <= 2; ++fd) {
+    if (::fcntl(fd, F_GETFD) != -1 || errno != EBADF) continue;
+    const int stand_in = ::open("/dev/null", (fd == 0 ? O_WRONLY : O_RDONLY) | O_NOCTTY);
+    if (stand_in < 0 || stand_in == fd) continue;  // open takes the lowest free number: normally `fd` itself
+    ::dup2(stand_in, fd);
+    ::close(stand_in);
+  }
+}
+
+std::string standard_output_error() {
+  std::cout.flush();
+  errno = 0;
+  const bool flush_failed = std::fflush(stdout) != 0;
+  const int error = errno;
+  if (!flush_failed && !std::ferror(stdout) && std::cout) return "";
+  return flush_failed && error != 0 ? std::strerror(error)
+                                     : "a write to it failed (a full disk, a closed descriptor or pipe)";
+}
+
+}  // namespace hsx::cli

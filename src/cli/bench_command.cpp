@@ -1354,7 +1354,7 @@ void add_bench_command(CLI::App& app) {
       cmd->add_option("--nef-max-triangles", o->nef_max_triangles,
                       "--3d: skip Nef above this many input triangles (default 20000; 0: never skip)"),
       cmd->add_option("--threads", o->threads, "--3d: worker threads of the arrangement (default 0: all cores)")
-          ->check(CLI::NonNegativeNumber),
+          ->check(non_negative()),
       cmd->add_flag("--phases", o->phases,
                     "--3d: also report the median time of each phase of the arrangement (and of its complex)")};
   const std::vector<CLI::Option*> only_campaign = {
@@ -1371,7 +1371,7 @@ void add_bench_command(CLI::App& app) {
       cmd->add_option("--campaign-max-states", o->campaign_max_states,
                       "--campaign: each search stops after N states (hsx campaign --max-states; default 0: no limit). "
                       "With --campaign-time-limit 0 the runs are deterministic and their records compared")
-          ->check(CLI::NonNegativeNumber),
+          ->check(non_negative()),
       cmd->add_flag("--campaign-mpi", o->campaign_mpi,
                     "--campaign: also time `hsx campaign --jobs 2` and `mpirun -np 2 hsx campaign --jobs 1` as "
                     "processes, side by side (needs MPI)")};

@@ -486,11 +486,11 @@ void add_campaign_command(CLI::App& app) {
   cmd->add_option("--max-cells", o->settings.limits.max_cells,
                   "refuse (record as refused) a scene whose arrangement has more cells (default " +
                       std::to_string(o->settings.limits.max_cells) + "; 0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative());
   cmd->add_option("--max-side-table", o->settings.limits.max_side_entries,
                   "refuse a scene whose cells x halfspaces exceeds this (default " +
                       std::to_string(o->settings.limits.max_side_entries) + "; 0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative());
   // The 3D generator (algorithms/campaign/scene3.hpp).
   cmd->add_option("--dimension", o->settings.dimension,
                   "2 (default: random 2D scenes) or 3: random 3D CSG scenes of boxes, spheres, cylinders and planes "

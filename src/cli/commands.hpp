@@ -74,21 +74,36 @@ inline CLI::Validator seconds() {
       "SECONDS");
 }
 
+/// For counts and limits: a number >= 0, refused as "must be >= 0, not \"-1\"" (CLI11's NonNegativeNumber names a
+/// range up to 1.8e308 in its message). What is not a number is left to the option's own conversion to refuse.
+inline CLI::Validator non_negative() {
+  return CLI::Validator(
+      [](std::string& s) {
+        try {
+          std::size_t used = 0;
+          if (std::stod(s, &used) < 0 && used == s.size()) return std::string("must be >= 0, not \"" + s + "\"");
+        } catch (const std::exception&) {
+        }
+        return std::string();
+      },
+      "NONNEGATIVE");
+}
+
 /// The arrangement size limits (geometry/arrangement2.hpp, docs/limits.md) as `--max-cells N` and
 /// `--max-side-table N` (0: no limit) on a command that arranges a scene; `limits` must outlive the parse.
 inline void add_arrangement_limits(CLI::App* cmd, ArrangementLimits& limits) {
   cmd->add_option("--max-cells", limits.max_cells,
                   "refuse a scene whose arrangement has more cells than this (default " +
                       std::to_string(limits.max_cells) + "; 0: no limit; see docs/limits.md)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative());
   cmd->add_option("--max-side-table", limits.max_side_entries,
                   "refuse a scene whose cells x halfspaces exceeds this (default " +
                       std::to_string(limits.max_side_entries) + "; 0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative());
   cmd->add_option("--max-triangles", limits.max_triangles,
                   "3D scenes: refuse an arrangement with more refined triangles than this (default " +
                       std::to_string(limits.max_triangles) + "; 0: no limit)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative());
 }
 
 /// A measure for a summary: "DECIMAL = CLOSED FORM", or the decimal and the closed form's size when it is long

@@ -684,7 +684,7 @@ void add_csg_commands(CLI::App& app) {
     cmd->add_option("--search", o->search, "beam (K = 1, default) or best-first");
     cmd->add_option("--exhaustive-patches", o->exhaustive_patches,
                     "compute the true minimum when the boundary has at most this many patches (default 14)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(non_negative());
     cmd->add_option("--out", o->out_path,
                     "write the scene with the generated samples (2D: inside a patch edge; 3D: at the centroid of the "
                     "patch's largest triangle, the domain written out) and check that extracting it gives the target "

@@ -21,7 +21,7 @@
 namespace hsx {
 namespace {
 
-// ---- temporary files removed on SIGINT / SIGTERM / SIGHUP / SIGPIPE ---------------------------------------------
+// ---- temporary files removed on SIGINT / SIGTERM / SIGHUP / SIGPIPE / SIGXCPU -----------------------------------
 // A fixed table the signal handler can read without allocating: a slot holds a NUL-terminated path while `live`.
 
 constexpr std::size_t kSlots = 64;
@@ -310,7 +310,10 @@ void remove_temporary_outputs_on_signals() {
   struct sigaction action {};
   action.sa_handler = remove_temporaries_and_die;
   sigemptyset(&action.sa_mask);
-  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE}) ::sigaction(s, &action, nullptr);
+  for (int s : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXCPU}) ::sigaction(s, &action, nullptr);
+  // Past the file size limit (ulimit -f) a write then fails with EFBIG, an error like a full disk, instead of the
+  // signal ending the process with half a temporary file left.
+  ::signal(SIGXFSZ, SIG_IGN);
 }
 
 std::string read_file(const std::string& path, std::size_t max_bytes) {

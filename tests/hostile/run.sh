@@ -64,15 +64,15 @@ run_case() {
   local got start=$SECONDS
   local bound=(-k 2 "$time_limit")
   [ -z "$kill_with" ] || bound=(--preserve-status -k 2 -s "${kill_with% *}" "${kill_with#* }")
-  : >"$tmp.out"
-  (cd "$tmp" && ulimit -v "$memory" && { [ -z "$stack" ] || ulimit -s "$stack"; } &&
+  { (cd "$tmp" && ulimit -v "$memory" && { [ -z "$stack" ] || ulimit -s "$stack"; } &&
+    for limit in "${ulimits[@]}"; do eval "ulimit $limit" || exit 125; done &&
     case "$stdout_to" in
       full) exec >/dev/full ;;
       closed) exec >&- ;;
       broken-pipe) exec > >(:) && sleep 0.3 ;;  # a pipe whose reader has ended
     esac &&
     exec env "${envs[@]}" timeout "${bound[@]}" "$hsx" "${words[@]}") \
-    </dev/null >"$tmp.out" 2>"$tmp.err"
+    </dev/null >"$tmp.out" 2>"$tmp.err"; } 2>/dev/null  # bash's own "CPU time limit exceeded" notice
   got=$?
   ((SECONDS - start < 3)) || echo "slow: $file: $name: $((SECONDS - start)) s"
   if [ "$got" != "$want_exit" ]; then fail "exit $got, expected $want_exit"; return; fi
@@ -106,7 +106,7 @@ run_case() {
 
 new_case() {
   run_case
-  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 stack="" skip_as_root=0 kill_with="" stdout_to=""
+  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 stack="" skip_as_root=0 kill_with="" stdout_to="" ulimits=()
   stderr_parts=() stdout_parts=() setups=() creates=() afters=() envs=()
   tmp=""
   [ -n "$name" ] || return 0
@@ -150,6 +150,7 @@ for file in "$@"; do
       skip-as-root) skip_as_root=1 ;;
       kill) kill_with="$value" ;;
       standard-output) stdout_to="$value" ;;
+      ulimit) ulimits+=("$value") ;;
       *) echo "FAIL $file:$lineno: unknown key '$key'"; failed=$((failed + 1)) ;;
     esac
   done <"$file"

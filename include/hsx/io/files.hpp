@@ -13,7 +13,8 @@
 //   InputError, so the program exits 2 naming the path and the reason.
 // - A command's report to standard output (OutputFiles::print) is one of its outputs: written after every file's
 //   content and before any file is put in place, so a report that cannot be written fails the run like a file.
-// - A run's temporary files are removed when it fails, and when it is ended by SIGINT, SIGTERM, SIGHUP or SIGPIPE.
+// - A run's temporary files are removed when it fails, and when it is ended by SIGINT, SIGTERM, SIGHUP, SIGPIPE or
+//   SIGXCPU (a CPU time limit). An output past the file size limit (ulimit -f) is a failed write, like a full disk.
 // - The hsx program also refuses an output that is one of the run's own inputs (cli/commands.hpp,
 //   refuse_outputs_over_inputs); that needs to know which paths are inputs, so it is the program's, not this file's.
 #pragma once
@@ -73,10 +74,11 @@ class OutputFiles {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Makes SIGINT, SIGTERM, SIGHUP and SIGPIPE (a reader of standard output or of a FIFO that went away) remove the
-/// temporary files of outputs not yet committed, then end the process as the signal would. For programs (the hsx CLI
-/// calls it first); a library user with signal handlers of its own need not call it (temporary files are still
-/// removed on every failure and by ~OutputFiles).
+/// Makes SIGINT, SIGTERM, SIGHUP, SIGPIPE (a reader of standard output or of a FIFO that went away) and SIGXCPU
+/// (past a CPU time limit) remove the temporary files of outputs not yet committed, then end the process as the
+/// signal would; and ignores SIGXFSZ, so that a write past the file size limit fails (EFBIG, an OutputError) instead
+/// of ending the process. For programs (the hsx CLI calls it first); a library user with signal handlers of its own
+/// need not call it (temporary files are still removed on every failure and by ~OutputFiles).
 void remove_temporary_outputs_on_signals();
 
 /// Reads a whole file: a regular file, or a FIFO or character device read to its end (a FIFO is opened without

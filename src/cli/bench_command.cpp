@@ -361,7 +361,11 @@ void run_bench(const BenchOptions& o, OutputFiles& files) {
   report.repeat = repeat_options(o);
   double totals[kMethodCount + 1] = {};
   int beam_optimal = 0, compared = 0;
-  for (const auto& file : scene_files(o.dirs)) {
+  const std::vector<std::string> scenes = scene_files(o.dirs);
+  for (const std::string& scene : scenes)  // inputs too: no output may replace one
+    for (const auto& [option, path] : {std::pair{"--csv", o.csv_path}, std::pair{"--json", o.json_path}})
+      refuse_output_over_input(option, path, "scene", scene);
+  for (const auto& file : scenes) {
     std::optional<bsh::ExtractResult> results[kMethodCount];
     BenchRow row = bench_scene(file, o, report.repeat, results);
     for (std::size_t k = 0; k < row.stages.size(); ++k)

@@ -144,6 +144,8 @@ void resolve(Target& t) {
       return;
     }
     if (!S_ISREG(info.st_mode)) fail(t.option, t.path, "not a regular file");
+    // A file its owner made read-only is not replaced, though the rename into its writable folder would succeed.
+    if (::access(t.final.c_str(), W_OK) != 0) fail(t.option, t.path, reason(errno) + " (the file is read-only)");
     t.mode = info.st_mode & 07777;
   } else if (errno != ENOENT) {
     fail(t.option, t.path, reason(errno));

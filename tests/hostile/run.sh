@@ -53,6 +53,7 @@ run_case() {
   [ -n "$name" ] || return 0
   if ((!has_run)) || [ -z "$want_exit" ]; then fail "a case needs 'run' and 'exit'"; return; fi
   if ((skip_as_root)) && [ "$(id -u)" -eq 0 ]; then skipped=$((skipped + 1)); return; fi
+  if ((needs_root)) && [ "$(id -u)" -ne 0 ]; then skipped=$((skipped + 1)); return; fi
   local line
   for line in "${setups[@]}"; do
     if ! (cd "$tmp" && eval "$(expand "$line")") >/dev/null 2>"$tmp.err"; then fail "setup failed: $line"; return; fi
@@ -106,7 +107,7 @@ run_case() {
 
 new_case() {
   run_case
-  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 stack="" skip_as_root=0 kill_with="" stdout_to="" ulimits=()
+  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 stack="" skip_as_root=0 needs_root=0 kill_with="" stdout_to="" ulimits=()
   stderr_parts=() stdout_parts=() setups=() creates=() afters=() envs=()
   tmp=""
   [ -n "$name" ] || return 0
@@ -148,6 +149,7 @@ for file in "$@"; do
       stack) stack="$value" ;;
       env) envs+=("$value") ;;
       skip-as-root) skip_as_root=1 ;;
+      needs-root) needs_root=1 ;;
       kill) kill_with="$value" ;;
       standard-output) stdout_to="$value" ;;
       ulimit) ulimits+=("$value") ;;
@@ -158,5 +160,5 @@ for file in "$@"; do
   new_case ""
 done
 ((selftest)) && echo "hostile selftest: $passed cases failed as they must, $failed did not" ||
-  echo "hostile: $passed passed, $failed failed, $skipped skipped (as root)"
+  echo "hostile: $passed passed, $failed failed, $skipped skipped (for root or for a normal user only)"
 [ "$failed" -eq 0 ]

@@ -113,6 +113,33 @@ TEST_CASE("files: what cannot be written is an OutputError naming the path", "[f
   CHECK(dir.entries() == std::vector<std::string>{"d"});
 }
 
+TEST_CASE("files: a read-only file is not replaced, though its folder is writable", "[files]") {
+  // Root may write anything, so the check runs in a child that, when started as root, becomes `nobody` first.
+  TempDir dir;
+  spit(dir / "ro.json", "keep");
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const uid_t nobody = 65534;
+    if (::geteuid() == 0 &&
+        (::chown(dir.path.c_str(), nobody, nobody) != 0 || ::chown((dir / "ro.json").c_str(), nobody, nobody) != 0 ||
+         ::setgid(nobody) != 0 || ::setuid(nobody) != 0))
+      ::_exit(10);
+    if (::chmod((dir / "ro.json").c_str(), 0444) != 0) ::_exit(11);
+    try {
+      write_file_atomically(dir / "ro.json", "replaced");
+      ::_exit(12);  // replaced: the check is missing
+    } catch (const OutputError& e) {
+      ::_exit(std::string(e.what()).find("read-only") != std::string::npos ? 0 : 13);
+    }
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  CHECK(slurp(dir / "ro.json") == "keep");
+  CHECK(dir.entries() == std::vector<std::string>{"ro.json"});
+}
+
 TEST_CASE("files: a run's outputs are written all or none", "[files]") {
   TempDir dir;
   spit(dir / "old.json", "old");

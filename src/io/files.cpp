@@ -239,10 +239,20 @@ void OutputFiles::print(const std::string& text) {
 
 void OutputFiles::commit() {
   std::vector<Target>& targets = impl_->targets;
+  const auto discard_all = [&] {
+    for (Target& u : targets) discard_temporary(u);
+  };
   const auto cleanup_and_fail = [&](const Target& t, const std::string& why) {
     const std::string option = t.option, path = t.path;
-    for (Target& u : targets) discard_temporary(u);
+    discard_all();
     fail(option, path, why);
+  };
+  // Writes `text` to std::cout; 0 when it arrived, else the errno of the failure (-1 when an earlier write failed).
+  const auto print = [](const std::string& text) {
+    errno = 0;
+    std::cout << text;
+    std::cout.flush();
+    return std::cout ? 0 : errno != 0 ? errno : -1;
   };
   // 1. Every regular file in full to its temporary file, and every device or FIFO: the steps that can fail.
   for (Target& t : targets) {
@@ -264,24 +274,18 @@ void OutputFiles::commit() {
       if (t.descriptor == 1) std::cout.flush();
       if (const int error = write_all(t.descriptor, t.content)) cleanup_and_fail(t, reason(error));
     } else {
-      std::cout << t.content;
-      std::cout.flush();
-      if (!std::cout) cleanup_and_fail(t, "standard output failed");
+      if (print(t.content) != 0) cleanup_and_fail(t, "standard output failed");
     }
   }
   // 2. The report, the last step that can fail before anything is renamed.
   if (impl_->report) {
-    errno = 0;
-    std::cout << *impl_->report;
-    std::cout.flush();
-    const int error = errno;
-    if (!std::cout) {
-      for (Target& u : targets) discard_temporary(u);
-      impl_->report.reset();
-      throw OutputError("cannot write standard output: " +
-                        (error != 0 ? reason(error) : std::string("an earlier write to it failed")));
-    }
+    const int error = print(*impl_->report);
     impl_->report.reset();
+    if (error != 0) {
+      discard_all();
+      throw OutputError("cannot write standard output: " +
+                        (error > 0 ? reason(error) : std::string("an earlier write to it failed")));
+    }
   }
   // 3. The renames.
   for (Target& t : targets) {

@@ -47,18 +47,6 @@ struct CampaignCommandOptions {
   const CLI::App* app = nullptr;                        ///< the subcommand, to ask which options were given
 };
 
-/// For --seed, --start, --count: a whole number 0 .. 2^64 - 1 written in digits (CLI11 alone would wrap "-1").
-CLI::Validator whole_number() {
-  return CLI::Validator(
-      [](std::string& s) {
-        if (s.empty() || s.size() > 20 || s.find_first_not_of("0123456789") != std::string::npos ||
-            (s.size() == 20 && s > "18446744073709551615"))
-          return std::string("must be a whole number 0 .. 18446744073709551615, not \"" + s + "\"");
-        return std::string();
-      },
-      "N");
-}
-
 /// The most scenes one run plans (its index list is held in memory): split larger campaigns with --start.
 constexpr std::uint64_t kMaxCount = 100'000'000;
 
@@ -390,17 +378,15 @@ void add_campaign_command(CLI::App& app) {
       "Run the proposition checkers on random 2D scenes (scene k of seed s is the same on every machine); results "
       "as JSON lines in --out DIR, resumable; exit 3 when a check fails (docs/campaigns.md)");
   cmd->add_option("--seed", o->settings.seed, "the campaign's seed: scene k is random_scene(settings, seed, k) "
-                                              "(default 1)")
-      ->check(whole_number());
+                                              "(default 1)");
   cmd->add_option_function<std::uint64_t>(
       "--count",
       [o](const std::uint64_t& n) {
         o->count = n;
         o->count_given = true;
       },
-      "how many scenes: indices --start .. --start + N - 1 (required; at most 10^8 per run)")
-      ->check(whole_number());
-  cmd->add_option("--start", o->start, "the first scene index (default 0)")->check(whole_number());
+      "how many scenes: indices --start .. --start + N - 1 (required; at most 10^8 per run)");
+  cmd->add_option("--start", o->start, "the first scene index (default 0)");
   cmd->add_option("--shard", o->shard,
                   "i/k: only the indices whose offset from --start is i mod k (default 0/1); the k shards together "
                   "are the whole range");

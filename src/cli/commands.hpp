@@ -48,6 +48,14 @@ void refuse_outputs_over_inputs(CLI::App& app);
 void refuse_output_over_input(const std::string& output_option, const std::string& output,
                               const std::string& input_name, const std::string& input);
 
+/// Makes every whole-number option of `app` and of its subcommands (those CLI11 converts to an integer type: type
+/// name INT or UINT) read its value as decimal digits, an optional sign (a '-' only where the type is signed) and
+/// surrounding spaces allowed: "010" is ten and "+5" five, while "0x10", "1e6" and "5.0" are refused, and so is a
+/// value beyond the 64-bit range. Without it CLI11 reads C's base-0 notation ("010" = 8, "0x10" = 16) and a value
+/// over 2^63 - 1 saturates (`--max-cells 99999999999999999999` would mean "no limit"); the conversion to a narrower
+/// type keeps refusing what does not fit. main.cpp calls it once every command is added.
+void read_integers_in_decimal(CLI::App& app);
+
 /// Makes a standard descriptor (0, 1, 2) that the program was started without point at a stand-in that refuses
 /// its use (/dev/null opened the other way round: reading standard input or writing standard output then fails with
 /// "Bad file descriptor"). Without it the first file the program opens would take the free number, and what it

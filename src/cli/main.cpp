@@ -73,6 +73,7 @@ int main(int argc, char** argv) {
   hsx::cli::add_reference_command(app);
   hsx::cli::add_campaign_command(app);
   hsx::cli::add_bench_command(app);
+  hsx::cli::read_integers_in_decimal(app);
   // Once the whole command line is parsed, before any command runs: no output may replace one of the inputs.
   app.parse_complete_callback([&app] { hsx::cli::refuse_outputs_over_inputs(app); });
   int code = run_program(app, argc, argv);

@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -72,6 +73,34 @@ void refuse_output_over_input(const std::string& output_option, const std::strin
                               const std::string& input_name, const std::string& input) {
   const auto out = regular_file(output), in = regular_file(input);
   if (out && in && *out == *in) refuse({output_option, output, out->first, out->second}, input_name, input);
+}
+
+void read_integers_in_decimal(CLI::App& app) {
+  for (CLI::Option* option : app.get_options()) {
+    const std::string type = option->get_type_name();
+    const bool is_signed = type.rfind("INT", 0) == 0, is_unsigned = type.rfind("UINT", 0) == 0;
+    if (!is_signed && !is_unsigned) continue;
+    option->transform(CLI::Validator(  // transform: it runs first, and its rewritten value is the one converted
+        [is_signed](std::string& s) {
+          const std::size_t first = s.find_first_not_of(' '), last = s.find_last_not_of(' ');
+          std::string digits = first == std::string::npos ? "" : s.substr(first, last - first + 1);
+          const bool negative = !digits.empty() && digits[0] == '-';
+          if (!digits.empty() && (digits[0] == '+' || negative)) digits.erase(0, 1);
+          if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
+              (negative && !is_signed))
+            return "must be a whole number written in decimal digits" + std::string(is_signed ? "" : " (>= 0)") +
+                   ", not \"" + s + "\"";
+          digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));  // "010" is ten, not eight
+          const std::string most = is_signed ? (negative ? "9223372036854775808" : "9223372036854775807")
+                                             : "18446744073709551615";
+          if (digits.size() > most.size() || (digits.size() == most.size() && digits > most))
+            return (negative ? "must be at least -" : "must be at most ") + most + ", not \"" + s + "\"";
+          s = (negative ? "-" : "") + digits;
+          return std::string();
+        },
+        "", "decimal"));
+  }
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) read_integers_in_decimal(*sub);
 }
 
 void occupy_closed_standard_descriptors() {

@@ -70,7 +70,7 @@ run_case() {
     case "$stdout_to" in
       full) exec >/dev/full ;;
       closed) exec >&- ;;
-      broken-pipe) exec > >(:) && sleep 0.3 ;;  # a pipe whose reader has ended
+      broken-pipe) exec > >(:) && wait $! ;;  # a pipe whose reader has ended (waited for: no race)
     esac &&
     exec env "${envs[@]}" timeout "${bound[@]}" "$hsx" "${words[@]}") \
     </dev/null >"$tmp.out" 2>"$tmp.err"; } 2>/dev/null  # bash's own "CPU time limit exceeded" notice

@@ -93,6 +93,20 @@ std::string base_of(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+/// The temporary file beside `final` (a file in `folder`): "FINAL.tmp-hsx-PID-N", N counting this process's
+/// temporaries. When that name would be longer than the folder allows (a legal 255-byte output name leaves no room
+/// for the suffix), the final name's part in it is shortened: the suffix alone keeps it unique.
+std::string temporary_beside(const std::string& final, const std::string& folder) {
+  static long counter = 0;
+  const std::string suffix = ".tmp-hsx-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  const std::string base = base_of(final);
+  const long name_max = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  const std::size_t longest = name_max > 0 ? static_cast<std::size_t>(name_max) : NAME_MAX;
+  if (base.size() + suffix.size() <= longest) return final + suffix;
+  const std::size_t kept = longest > suffix.size() ? longest - suffix.size() : 0;
+  return final.substr(0, final.size() - base.size()) + base.substr(0, kept) + suffix;
+}
+
 std::optional<int> descriptor_path(const std::string& path) {
   if (path == "/dev/stdout") return 1;
   if (path == "/dev/stderr") return 2;
@@ -156,8 +170,7 @@ void resolve(Target& t) {
   if (!S_ISDIR(folder_info.st_mode)) fail(t.option, t.path, "\"" + folder + "\" is not a folder");
   if (!t.existed) t.identity = "new:" + real_path(folder) + "/" + base_of(t.final);
   t.kind = Kind::Replace;
-  static long counter = 0;
-  t.temp = t.final + ".tmp-hsx-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+  t.temp = temporary_beside(t.final, folder);
   t.slot = register_temporary(t.temp);
   t.temp_fd = ::open(t.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (t.temp_fd < 0) {

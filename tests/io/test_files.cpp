@@ -71,6 +71,28 @@ TEST_CASE("files: a regular file is replaced, keeping its mode; a new one is cre
   CHECK(dir.entries() == std::vector<std::string>{"a.json", "b.json"});
 }
 
+TEST_CASE("files: an output name as long as the folder allows is written (its temporary name is shortened)",
+          "[files]") {
+  TempDir dir;
+  const long name_max = ::pathconf(dir.path.c_str(), _PC_NAME_MAX);
+  REQUIRE(name_max > 20);
+  // Two names of the longest length that differ only in their last bytes: their temporaries share the same shortened
+  // prefix, and must still be two files.
+  const std::string a(static_cast<std::size_t>(name_max) - 5, 'n'), b = a;
+  spit(dir / (a + ".json"), "old");
+  OutputFiles out;
+  out.expect(dir / (a + ".json"), "--json");
+  out.expect(dir / (b + ".svgz"), "--svg");
+  out.put(dir / (a + ".json"), "replaced");
+  out.put(dir / (b + ".svgz"), "<svg/>");
+  out.commit();
+  CHECK(slurp(dir / (a + ".json")) == "replaced");
+  CHECK(slurp(dir / (b + ".svgz")) == "<svg/>");
+  CHECK(dir.entries() == std::vector<std::string>{a + ".json", b + ".svgz"});
+  // One byte more is not a legal name: refused before anything is computed, as the system says.
+  CHECK_THROWS_WITH(OutputFiles().expect(dir / (a + ".json5"), "--json"), Catch::Contains("File name too long"));
+}
+
 TEST_CASE("files: a symbolic link is followed, and stays a link", "[files]") {
   TempDir dir;
   spit(dir / "t.json", "keep");

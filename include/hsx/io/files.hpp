@@ -3,9 +3,10 @@
 // The output policy (owned here):
 // - "-" is standard output, written directly.
 // - A regular file, or a path that does not exist yet, is replaced atomically: the content goes to a temporary file
-//   beside it ("PATH.tmp-hsx-PID-N"), which is then renamed over it, so a reader sees the old file or the new one,
-//   never half of one. An existing file keeps its permission bits; one we may not write (read-only) is refused,
-//   although renaming over it would succeed in a writable folder.
+//   beside it ("PATH.tmp-hsx-PID-N", PATH's name shortened when the whole would exceed the folder's longest file
+//   name), which is then renamed over it, so a reader sees the old file or the new one, never half of one. An
+//   existing file keeps its permission bits; one we may not write (read-only) is refused, although renaming over
+//   it would succeed in a writable folder.
 // - A symbolic link is followed: its final target is replaced as above (the link itself stays a link). A link whose
 //   target does not exist is refused.
 // - A character or block device (/dev/null, /dev/stdout, a terminal) or a FIFO is written directly, never

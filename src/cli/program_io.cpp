@@ -6,9 +6,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
-#include <algorithm>
 #include <cstring>
 #include <iostream>
 #include <optional>
@@ -59,6 +59,29 @@ void collect(CLI::App* app, std::vector<NamedFile>& inputs, std::vector<NamedFil
                    input_name + " \"" + input + "\"; hsx does not replace a file it reads (write elsewhere)");
 }
 
+/// read_integers_in_decimal's rewriting of one value: " +010 " -> "10"; an error for what is not a decimal whole
+/// number within 64 bits (signed or not, as `is_signed` says).
+CLI::Validator decimal_whole_number(bool is_signed) {
+  return CLI::Validator(
+      [is_signed](std::string& s) {
+        const std::size_t first = s.find_first_not_of(' '), last = s.find_last_not_of(' ');
+        std::string digits = first == std::string::npos ? "" : s.substr(first, last - first + 1);
+        const bool negative = !digits.empty() && digits[0] == '-';
+        if (!digits.empty() && (digits[0] == '+' || negative)) digits.erase(0, 1);
+        if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || (negative && !is_signed))
+          return "must be a whole number written in decimal digits" + std::string(is_signed ? "" : " (>= 0)") +
+                 ", not \"" + s + "\"";
+        digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));  // "010" is ten, not eight
+        const std::string most = is_signed ? (negative ? "9223372036854775808" : "9223372036854775807")
+                                           : "18446744073709551615";
+        if (digits.size() > most.size() || (digits.size() == most.size() && digits > most))
+          return (negative ? "must be at least -" : "must be at most ") + most + ", not \"" + s + "\"";
+        s = (negative ? "-" : "") + digits;
+        return std::string();
+      },
+      "", "decimal");
+}
+
 }  // namespace
 
 void refuse_outputs_over_inputs(CLI::App& app) {
@@ -79,26 +102,8 @@ void read_integers_in_decimal(CLI::App& app) {
   for (CLI::Option* option : app.get_options()) {
     const std::string type = option->get_type_name();
     const bool is_signed = type.rfind("INT", 0) == 0, is_unsigned = type.rfind("UINT", 0) == 0;
-    if (!is_signed && !is_unsigned) continue;
-    option->transform(CLI::Validator(  // transform: it runs first, and its rewritten value is the one converted
-        [is_signed](std::string& s) {
-          const std::size_t first = s.find_first_not_of(' '), last = s.find_last_not_of(' ');
-          std::string digits = first == std::string::npos ? "" : s.substr(first, last - first + 1);
-          const bool negative = !digits.empty() && digits[0] == '-';
-          if (!digits.empty() && (digits[0] == '+' || negative)) digits.erase(0, 1);
-          if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos ||
-              (negative && !is_signed))
-            return "must be a whole number written in decimal digits" + std::string(is_signed ? "" : " (>= 0)") +
-                   ", not \"" + s + "\"";
-          digits.erase(0, std::min(digits.find_first_not_of('0'), digits.size() - 1));  // "010" is ten, not eight
-          const std::string most = is_signed ? (negative ? "9223372036854775808" : "9223372036854775807")
-                                             : "18446744073709551615";
-          if (digits.size() > most.size() || (digits.size() == most.size() && digits > most))
-            return (negative ? "must be at least -" : "must be at most ") + most + ", not \"" + s + "\"";
-          s = (negative ? "-" : "") + digits;
-          return std::string();
-        },
-        "", "decimal"));
+    // transform, not check: it runs before the option's other checks, and its rewritten value is the one converted
+    if (is_signed || is_unsigned) option->transform(decimal_whole_number(is_signed));
   }
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) read_integers_in_decimal(*sub);
 }

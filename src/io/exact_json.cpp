@@ -14,8 +14,6 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <utility>
 #include <vector>
 
@@ -361,29 +359,7 @@ json parse_file_text(const std::string& path, const std::string& text, const Jso
 }  // namespace
 
 json read_exact_json_file(const std::string& path, const JsonLimits& limits) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a file");
-  if (!std::filesystem::is_regular_file(path, ec) && std::filesystem::exists(path, ec))
-    return parse_file_text(path, read_file(path, limits.max_bytes), limits);  // a FIFO or device: never blocks
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file (" + std::strerror(errno) + ")");
-  // Read in blocks, at most max_bytes + 1 bytes, so that pipes work and a huge file is refused without reading it.
-  auto too_large = [&](const std::string& size) {
-    return InputError(path + ": file is " + size + " bytes; the limit is " + std::to_string(limits.max_bytes));
-  };
-  const auto file_size = std::filesystem::is_regular_file(path, ec) ? std::filesystem::file_size(path, ec) : 0;
-  if (!ec && file_size > limits.max_bytes) throw too_large(std::to_string(file_size));
-  std::string text;
-  constexpr std::size_t kBlock = std::size_t{1} << 20;
-  while (in) {
-    const std::size_t old = text.size();
-    text.resize(old + kBlock);
-    in.read(&text[old], static_cast<std::streamsize>(kBlock));
-    text.resize(old + static_cast<std::size_t>(in.gcount()));
-    if (text.size() > limits.max_bytes) throw too_large("more than " + std::to_string(limits.max_bytes));
-  }
-  if (in.bad()) throw InputError(path + ": cannot read file");
-  return parse_file_text(path, text, limits);
+  return parse_file_text(path, read_file(path, limits.max_bytes), limits);  // a FIFO or device: never blocks
 }
 
 bool is_exact_number(const json& value) {

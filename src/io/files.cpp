@@ -74,8 +74,10 @@ struct Target {
   mode_t mode = 0644;    ///< Kind::Replace: the permission bits the new file gets
   bool existed = false;
   std::string identity;  ///< to refuse the same output twice
-  std::string temp;      ///< Kind::Replace
+  std::string folder;    ///< Kind::Replace: the folder of `final`
+  std::string temp;      ///< Kind::Replace: the temporary file's name (it exists unless `anonymous`)
   int temp_fd = -1;
+  bool anonymous = false;  ///< temp_fd is an unnamed file (O_TMPFILE) in `folder`, named only at commit
   int slot = -1;
   bool has_content = false;
   std::string content;
@@ -125,6 +127,44 @@ std::string real_path(const std::string& path) {
   return buffer;
 }
 
+/// Creates `t.temp` (a new name when a file of that name is left from a killed run with the same process id) and
+/// opens it as t.temp_fd, registered for removal on signals; 0 or the errno of the failure.
+int create_named_temporary(Target& t) {
+  for (int attempt = 0;; ++attempt) {
+    t.slot = register_temporary(t.temp);
+    t.temp_fd = ::open(t.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (t.temp_fd >= 0) return 0;
+    const int error = errno;
+    unregister_temporary(t.slot);
+    t.slot = -1;
+    if (error != EEXIST || attempt == 100) {
+      t.temp.clear();  // not ours: never removed
+      return error;
+    }
+    t.temp = temporary_beside(t.final, t.folder);
+  }
+}
+
+/// Gives the unnamed file t.temp_fd the name t.temp; false when this system cannot (then it stays unnamed).
+bool name_anonymous_temporary(Target& t) {
+  const std::string self = "/proc/self/fd/" + std::to_string(t.temp_fd);
+  for (int attempt = 0; attempt <= 100; ++attempt) {
+    t.slot = register_temporary(t.temp);
+    // AT_EMPTY_PATH needs a privilege (CAP_DAC_READ_SEARCH); /proc/self/fd needs /proc.
+    if (::linkat(t.temp_fd, "", AT_FDCWD, t.temp.c_str(), AT_EMPTY_PATH) == 0 ||
+        ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, t.temp.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+      t.anonymous = false;
+      return true;
+    }
+    const int error = errno;
+    unregister_temporary(t.slot);
+    t.slot = -1;
+    if (error != EEXIST) return false;
+    t.temp = temporary_beside(t.final, t.folder);
+  }
+  return false;
+}
+
 /// Decides the kind of output and checks it can be written; for Kind::Replace creates the temporary file.
 void resolve(Target& t) {
   if (t.path.empty()) fail(t.option, t.path, "an empty path");
@@ -170,15 +210,15 @@ void resolve(Target& t) {
   if (!S_ISDIR(folder_info.st_mode)) fail(t.option, t.path, "\"" + folder + "\" is not a folder");
   if (!t.existed) t.identity = "new:" + real_path(folder) + "/" + base_of(t.final);
   t.kind = Kind::Replace;
+  t.folder = folder;
+  // An unnamed file first: it has no name until commit, so a run killed by SIGKILL (or the OOM killer) while
+  // computing leaves nothing behind. A file system without O_TMPFILE gets a named temporary file at once.
   t.temp = temporary_beside(t.final, folder);
-  t.slot = register_temporary(t.temp);
-  t.temp_fd = ::open(t.temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (t.temp_fd < 0) {
-    const int error = errno;
-    unregister_temporary(t.slot);
-    t.slot = -1;
+  t.temp_fd = ::open(folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0600);
+  t.anonymous = t.temp_fd >= 0;
+  if (t.anonymous) return;
+  if (const int error = create_named_temporary(t))
     fail(t.option, t.path, "cannot create a file in \"" + folder + "\" (" + reason(error) + ")");
-  }
 }
 
 /// Writes all of `content` to `fd`; returns 0 or the errno of the failure.
@@ -195,10 +235,30 @@ int write_all(int fd, const std::string& content) {
   return 0;
 }
 
+/// Writes t.content to the temporary file with its final permission bits, names it (an unnamed file, or, where
+/// it cannot be named, a named file written again), and closes it; 0 or the errno of the failure.
+int fill_temporary(Target& t) {
+  const auto fill = [&t] {
+    if (const int error = write_all(t.temp_fd, t.content)) return error;
+    return ::fchmod(t.temp_fd, t.mode) == 0 ? 0 : errno;
+  };
+  if (const int error = fill()) return error;
+  if (t.anonymous && !name_anonymous_temporary(t)) {
+    ::close(t.temp_fd);
+    t.temp_fd = -1;
+    t.anonymous = false;
+    if (const int error = create_named_temporary(t)) return error;
+    if (const int error = fill()) return error;
+  }
+  const int closed = ::close(t.temp_fd);
+  t.temp_fd = -1;
+  return closed == 0 ? 0 : errno;
+}
+
 void discard_temporary(Target& t) {
   if (t.temp_fd >= 0) ::close(t.temp_fd);
   t.temp_fd = -1;
-  if (!t.temp.empty()) ::unlink(t.temp.c_str());
+  if (!t.temp.empty() && !t.anonymous) ::unlink(t.temp.c_str());
   unregister_temporary(t.slot);
   t.slot = -1;
   t.temp.clear();
@@ -271,12 +331,7 @@ void OutputFiles::commit() {
   for (Target& t : targets) {
     if (!t.has_content) continue;
     if (t.kind == Kind::Replace) {
-      if (const int error = write_all(t.temp_fd, t.content)) cleanup_and_fail(t, reason(error));
-      if (::fchmod(t.temp_fd, t.mode) != 0 || ::close(t.temp_fd) != 0) {
-        t.temp_fd = -1;
-        cleanup_and_fail(t, reason(errno));
-      }
-      t.temp_fd = -1;
+      if (const int error = fill_temporary(t)) cleanup_and_fail(t, reason(error));
     } else if (t.kind == Kind::Direct) {
       const int fd = ::open(t.final.c_str(), O_WRONLY | O_NOCTTY | O_CLOEXEC);
       if (fd < 0) cleanup_and_fail(t, reason(errno));
@@ -335,40 +390,50 @@ void remove_temporary_outputs_on_signals() {
   ::signal(SIGXFSZ, SIG_IGN);
 }
 
-std::string read_file(const std::string& path, std::size_t max_bytes) {
-  struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) throw InputError("cannot read \"" + path + "\": " + reason(errno));
-  if (S_ISDIR(info.st_mode)) throw InputError("cannot read \"" + path + "\": it is a directory");
-  const bool stream = S_ISFIFO(info.st_mode) || S_ISCHR(info.st_mode);
-  if (!S_ISREG(info.st_mode) && !stream)
-    throw InputError("cannot read \"" + path + "\": not a regular file, FIFO or character device");
-  if (S_ISREG(info.st_mode) && static_cast<std::size_t>(info.st_size) > max_bytes)
-    throw InputError("\"" + path + "\" is too large (" + std::to_string(info.st_size) + " bytes; the limit is " +
-                     std::to_string(max_bytes) + ")");
-  // O_NONBLOCK: opening a FIFO never waits for a writer. Reads then block again, and a FIFO without a writer
-  // reads as empty (end of file) instead of hanging.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
-  if (fd < 0) throw InputError("cannot read \"" + path + "\": " + reason(errno));
-  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+namespace {
+
+/// Reads `fd` to its end; `name` ("\"PATH\"" or "standard input") for messages.
+std::string read_to_end(int fd, const std::string& name, std::size_t max_bytes) {
   std::string content;
   char buffer[1 << 16];
   for (;;) {
     const ssize_t n = ::read(fd, buffer, sizeof buffer);
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) {
-      const int error = errno;
-      ::close(fd);
-      throw InputError("cannot read \"" + path + "\": " + reason(error));
-    }
-    if (n == 0) break;
+    if (n < 0) throw InputError("cannot read " + name + ": " + reason(errno));
+    if (n == 0) return content;
     content.append(buffer, static_cast<std::size_t>(n));
-    if (content.size() > max_bytes) {
-      ::close(fd);
-      throw InputError("\"" + path + "\" is too large (the limit is " + std::to_string(max_bytes) + " bytes)");
-    }
+    if (content.size() > max_bytes)
+      throw InputError(name + " is too large (the limit is " + std::to_string(max_bytes) + " bytes)");
   }
-  ::close(fd);
-  return content;
+}
+
+}  // namespace
+
+std::string read_file(const std::string& path, std::size_t max_bytes) {
+  if (path == "-") return read_to_end(0, "standard input", max_bytes);
+  const std::string name = "\"" + path + "\"";
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) throw InputError("cannot read " + name + ": " + reason(errno));
+  if (S_ISDIR(info.st_mode)) throw InputError("cannot read " + name + ": it is a directory");
+  const bool stream = S_ISFIFO(info.st_mode) || S_ISCHR(info.st_mode);
+  if (!S_ISREG(info.st_mode) && !stream)
+    throw InputError("cannot read " + name + ": not a regular file, FIFO or character device");
+  if (S_ISREG(info.st_mode) && static_cast<std::size_t>(info.st_size) > max_bytes)
+    throw InputError(name + " is too large (" + std::to_string(info.st_size) + " bytes; the limit is " +
+                     std::to_string(max_bytes) + ")");
+  // O_NONBLOCK: opening a FIFO never waits for a writer. Reads then block again, and a FIFO without a writer
+  // reads as empty (end of file) instead of hanging.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+  if (fd < 0) throw InputError("cannot read " + name + ": " + reason(errno));
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  try {
+    std::string content = read_to_end(fd, name, max_bytes);
+    ::close(fd);
+    return content;
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
 }
 
 TemporaryFolder::TemporaryFolder(const std::string& prefix) {

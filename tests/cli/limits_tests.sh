@@ -109,7 +109,7 @@ echo '{' >broken.json
 expect 2 "broken.json: line" -- "$hsx" describe "$lens" --shape broken.json
 [ "$(grep -o 'broken.json' out | wc -l)" -eq 1 ] && ok || bad "the path is printed more than once: $(cat out)"
 mkdir adir
-expect 2 "adir: is a directory" -- "$hsx" describe "$lens" --shape adir
+expect 2 "cannot read \"adir\": it is a directory" -- "$hsx" describe "$lens" --shape adir
 [ "$(grep -o 'adir' out | wc -l)" -eq 1 ] && ok || bad "the path is printed more than once: $(cat out)"
 
 # Options that do not apply are refused, not ignored.

@@ -54,6 +54,9 @@ run_case() {
   if ((!has_run)) || [ -z "$want_exit" ]; then fail "a case needs 'run' and 'exit'"; return; fi
   if ((skip_as_root)) && [ "$(id -u)" -eq 0 ]; then skipped=$((skipped + 1)); return; fi
   if ((needs_root)) && [ "$(id -u)" -ne 0 ]; then skipped=$((skipped + 1)); return; fi
+  if ((needs_unnamed)) && ! python3 -c 'import os, sys; os.close(os.open(sys.argv[1], os.O_TMPFILE | os.O_WRONLY))' "$tmp" 2>/dev/null; then
+    skipped=$((skipped + 1)); echo "skipped $file: $name: the file system of $tmp has no unnamed files (O_TMPFILE)"; return
+  fi
   local line
   for line in "${setups[@]}"; do
     if ! (cd "$tmp" && eval "$(expand "$line")") >/dev/null 2>"$tmp.err"; then fail "setup failed: $line"; return; fi
@@ -73,7 +76,7 @@ run_case() {
       broken-pipe) exec > >(:) && wait $! ;;  # a pipe whose reader has ended (waited for: no race)
     esac &&
     exec env "${envs[@]}" timeout "${bound[@]}" "$hsx" "${words[@]}") \
-    </dev/null >"$tmp.out" 2>"$tmp.err"; } 2>/dev/null  # bash's own "CPU time limit exceeded" notice
+    <"$stdin_from" >"$tmp.out" 2>"$tmp.err"; } 2>/dev/null  # bash's own "CPU time limit exceeded" notice
   got=$?
   ((SECONDS - start < 3)) || echo "slow: $file: $name: $((SECONDS - start)) s"
   if [ "$got" != "$want_exit" ]; then fail "exit $got, expected $want_exit"; return; fi
@@ -107,7 +110,7 @@ run_case() {
 
 new_case() {
   run_case
-  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 stack="" skip_as_root=0 needs_root=0 kill_with="" stdout_to="" ulimits=()
+  name="$1" args="" has_run=0 want_exit="" time_limit=20 memory=4000000 stack="" skip_as_root=0 needs_root=0 needs_unnamed=0 kill_with="" stdout_to="" stdin_from=/dev/null ulimits=()
   stderr_parts=() stdout_parts=() setups=() creates=() afters=() envs=()
   tmp=""
   [ -n "$name" ] || return 0
@@ -150,8 +153,10 @@ for file in "$@"; do
       env) envs+=("$value") ;;
       skip-as-root) skip_as_root=1 ;;
       needs-root) needs_root=1 ;;
+      needs-unnamed-files) needs_unnamed=1 ;;
       kill) kill_with="$value" ;;
       standard-output) stdout_to="$value" ;;
+      standard-input) stdin_from="$(expand "$value")" ;;
       ulimit) ulimits+=("$value") ;;
       *) echo "FAIL $file:$lineno: unknown key '$key'"; failed=$((failed + 1)) ;;
     esac
@@ -160,5 +165,5 @@ for file in "$@"; do
   new_case ""
 done
 ((selftest)) && echo "hostile selftest: $passed cases failed as they must, $failed did not" ||
-  echo "hostile: $passed passed, $failed failed, $skipped skipped (for root or for a normal user only)"
+  echo "hostile: $passed passed, $failed failed, $skipped skipped (for root or for a normal user only, or for unnamed files)"
 [ "$failed" -eq 0 ]

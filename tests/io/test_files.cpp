@@ -10,6 +10,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <dirent.h>
+#include <fcntl.h>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -288,6 +289,74 @@ TEST_CASE("files: SIGTERM removes the temporary files of outputs not yet committ
   CHECK(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == SIGTERM);
   CHECK(dir.entries().empty());
+}
+
+TEST_CASE("files: SIGKILL while computing leaves no temporary file where the file system has unnamed files",
+          "[files]") {
+  TempDir dir;
+  const int probe = ::open(dir.path.c_str(), O_TMPFILE | O_WRONLY, 0600);
+  const bool unnamed = probe >= 0;
+  if (probe >= 0) ::close(probe);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    OutputFiles out;
+    out.expect(dir / "out.json", "--json");
+    out.put(dir / "out.json", "computed");
+    std::raise(SIGKILL);  // no handler can run: only a file without a name is gone with the process
+    ::_exit(0);           // not reached
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  CHECK(WIFSIGNALED(status));
+  const std::vector<std::string> left = dir.entries();
+  if (unnamed) {
+    CHECK(left.empty());
+  } else {  // the fallback: a named temporary file, which only a catchable signal removes
+    REQUIRE(left.size() == 1);
+    CHECK_THAT(left[0], Catch::StartsWith("out.json.tmp-hsx-"));
+  }
+  // And a committed run still leaves exactly its output, with the mode a new file gets.
+  OutputFiles out;
+  out.expect(dir / "out.json", "--json");
+  out.put(dir / "out.json", "done");
+  out.commit();
+  CHECK(slurp(dir / "out.json") == "done");
+  CHECK((mode_of(dir / "out.json") & 0777) == 0644);
+  if (unnamed) CHECK(dir.entries() == std::vector<std::string>{"out.json"});
+}
+
+namespace {
+
+/// read_file("-", max_bytes) with `text` (small: it fits a pipe's buffer) on standard input; the message of its
+/// InputError, if any, in `error`.
+std::string read_standard_input_holding(const std::string& text, std::size_t max_bytes, std::string& error) {
+  int pipe_ends[2];
+  REQUIRE(::pipe(pipe_ends) == 0);
+  REQUIRE(::write(pipe_ends[1], text.data(), text.size()) == static_cast<ssize_t>(text.size()));
+  ::close(pipe_ends[1]);
+  const int saved = ::dup(0);
+  REQUIRE(::dup2(pipe_ends[0], 0) == 0);
+  ::close(pipe_ends[0]);
+  std::string got;
+  try {
+    got = read_file("-", max_bytes);
+  } catch (const InputError& e) {
+    error = e.what();
+  }
+  ::dup2(saved, 0);
+  ::close(saved);
+  return got;
+}
+
+}  // namespace
+
+TEST_CASE("files: \"-\" reads standard input to its end", "[files]") {
+  const std::string text = "{\"format\": \"hsx-scene/1\"}";
+  std::string error;
+  CHECK(read_standard_input_holding(text, 100, error) == text);
+  CHECK(error.empty());
+  CHECK(read_standard_input_holding(text, 10, error).empty());
+  CHECK(error == "standard input is too large (the limit is 10 bytes)");
 }
 
 TEST_CASE("files: reading refuses directories; a FIFO never blocks", "[files]") {

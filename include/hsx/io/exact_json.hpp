@@ -35,8 +35,8 @@ struct JsonLimits {
 /// deep nesting, duplicate or reserved keys; "input is N bytes; the limit is M" when too large.
 nlohmann::json parse_exact_json(std::string_view text, const JsonLimits& limits = {});
 
-/// Reads a whole file (size checked before reading) and parses it with parse_exact_json. Errors are prefixed with
-/// the path: "scene.json: line 3, column 7: ...". "-" is not special.
+/// Reads a whole file with read_file (io/files.hpp: "-" is standard input; the size is checked before reading) and
+/// parses it with parse_exact_json. Parse errors are prefixed with the path: "scene.json: line 3, column 7: ...".
 nlohmann::json read_exact_json_file(const std::string& path, const JsonLimits& limits = {});
 
 /// The reserved marker key.

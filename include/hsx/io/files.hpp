@@ -15,8 +15,10 @@
 //   InputError, so the program exits 2 naming the path and the reason.
 // - A command's report to standard output (OutputFiles::print) is one of its outputs: written after every file's
 //   content and before any file is put in place, so a report that cannot be written fails the run like a file.
-// - A run's temporary files are removed when it fails, and when it is ended by SIGINT, SIGTERM, SIGHUP, SIGPIPE or
-//   SIGXCPU (a CPU time limit). An output past the file size limit (ulimit -f) is a failed write, like a full disk.
+// - Where the file system allows (O_TMPFILE: ext4, xfs, btrfs, tmpfs), a temporary file has no name until commit
+//   writes it in full, so a run killed by SIGKILL or the out-of-memory killer while computing leaves nothing; it is
+//   named just before the renames. A run's named temporary files are removed when it fails, and when it is ended by
+//   SIGINT, SIGTERM, SIGHUP, SIGPIPE or SIGXCPU (a CPU time limit). An output past the file size limit (ulimit -f) is a failed write, like a full disk.
 // - The hsx program also refuses an output that is one of the run's own inputs (cli/commands.hpp,
 //   refuse_outputs_over_inputs); that needs to know which paths are inputs, so it is the program's, not this file's.
 #pragma once
@@ -55,7 +57,7 @@ class OutputFiles {
   OutputFiles& operator=(const OutputFiles&) = delete;
 
   /// Checks now that `path` can be written under the policy, and reserves it: for a regular file, its temporary
-  /// file is created at once. `option` names the path in messages ("--json"). An empty path is an output not asked
+  /// file is created at once (unnamed where the file system allows). `option` names the path in messages ("--json"). An empty path is an output not asked
   /// for: ignored (here and by put). A path expected twice (also through another spelling or a link) is refused.
   /// Throws OutputError.
   void expect(const std::string& path, const std::string& option);
@@ -84,8 +86,9 @@ class OutputFiles {
 void remove_temporary_outputs_on_signals();
 
 /// Reads a whole file: a regular file, or a FIFO or character device read to its end (a FIFO is opened without
-/// waiting for a writer, and one without a writer reads as empty, so a run never hangs on it). Throws InputError
-/// naming the path when it does not exist, is a directory or a socket, cannot be read, or exceeds `max_bytes`.
+/// waiting for a writer, and one without a writer reads as empty, so a run never hangs on it). "-" is standard
+/// input, read to its end. Throws InputError naming the path (or "standard input") when it does not exist, is a
+/// directory or a socket, cannot be read, or exceeds `max_bytes`.
 std::string read_file(const std::string& path, std::size_t max_bytes = std::size_t(256) << 20);
 
 }  // namespace hsx

@@ -4,6 +4,7 @@
 #include <hsx/io/temporary_folder.hpp>
 #include <hsx/hsx.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -15,6 +16,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -22,6 +24,7 @@ namespace hsx {
 namespace {
 
 constexpr std::size_t kTailBytes = 4096;
+constexpr rlim_t kMaxFileBytes = rlim_t(256) << 20;  ///< the most the program may write to one file
 
 std::string shell_quoted(const std::string& s) {
   std::string out = "'";
@@ -43,17 +46,28 @@ std::string input_text(const LoadedInput& in, const ExternalSolver& solver) {
   return "";
 }
 
+/// The last kTailBytes of the file at `path` (only they are read).
 std::string file_tail(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::ostringstream all;
-  all << f.rdbuf();
-  const std::string s = all.str();
-  return s.size() > kTailBytes ? s.substr(s.size() - kTailBytes) : s;
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  const std::streamoff size = f ? static_cast<std::streamoff>(f.tellg()) : 0;
+  const std::streamoff from = std::max<std::streamoff>(0, size - static_cast<std::streamoff>(kTailBytes));
+  f.seekg(from);
+  std::string tail(static_cast<std::size_t>(size - from), '\0');
+  f.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+  tail.resize(static_cast<std::size_t>(f.gcount()));
+  return tail;
 }
 
-/// Starts `/bin/sh -c command` in hsx's working folder, its output into `log`, in a process group of its own; -1
-/// on failure.
-pid_t start(const std::string& command, const std::string& log) {
+/// The most the program may write to one file: kMaxFileBytes, or the lower file size limit hsx runs under.
+rlim_t solver_file_limit() {
+  rlimit size{};
+  if (getrlimit(RLIMIT_FSIZE, &size) != 0 || size.rlim_cur == RLIM_INFINITY) return kMaxFileBytes;
+  return std::min(size.rlim_cur, kMaxFileBytes);
+}
+
+/// Starts `/bin/sh -c command` in hsx's working folder, its output into `log`, in a process group of its own, each
+/// file it writes at most `max_file_bytes`; -1 on failure.
+pid_t start(const std::string& command, const std::string& log, rlim_t max_file_bytes) {
   const pid_t child = fork();
   if (child != 0) {
     if (child > 0) setpgid(child, child);
@@ -61,6 +75,11 @@ pid_t start(const std::string& command, const std::string& log) {
   }
   setpgid(0, 0);
   prctl(PR_SET_PDEATHSIG, SIGKILL);  // hsx killed (Ctrl-C): the program goes too
+  // Every file it writes (its log, {output}) is bounded: past `max_file_bytes` it is ended by SIGXFSZ, which hsx
+  // itself ignores (io/files.hpp) and so must give back its default action.
+  const rlimit size{max_file_bytes, max_file_bytes};
+  setrlimit(RLIMIT_FSIZE, &size);
+  signal(SIGXFSZ, SIG_DFL);
   const int null = open("/dev/null", O_RDONLY);
   const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   if (null < 0 || out < 0 || dup2(null, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0) _exit(127);
@@ -107,7 +126,8 @@ ExternalRun run_external_solver(const LoadedInput& in, const ExternalSolver& sol
 
   ExternalRun run;
   const auto begin = std::chrono::steady_clock::now();
-  const pid_t child = start(command, log_path);
+  const rlim_t max_file_bytes = solver_file_limit();
+  const pid_t child = start(command, log_path, max_file_bytes);
   if (child < 0) throw OutputError("cannot start the solver: fork failed");
   int status = 0;
   auto pause = std::chrono::microseconds(200);
@@ -137,7 +157,10 @@ ExternalRun run_external_solver(const LoadedInput& in, const ExternalSolver& sol
   run.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -1;
   if (run.exit_status != 0) {
     run.problem = "exit status " + std::to_string(run.exit_status) +
-                  (run.exit_status == 127 ? " (command not found?)" : "");
+                  (run.exit_status == 127                 ? " (command not found?)"
+                   : run.exit_status == 128 + SIGXFSZ     ? " (SIGXFSZ: it wrote a file past the limit of " +
+                                                              std::to_string(max_file_bytes) + " bytes)"
+                                                          : "");
     return run;
   }
   std::error_code missing;

@@ -168,6 +168,12 @@ TEST_CASE("external solver: runs, times out, fails, and leaves nothing behind", 
   CHECK(run.timed_out);
   CHECK_FALSE(run.ran);
   CHECK(run.seconds < 10);
+  // A long log: only its last 4 KiB are kept.
+  solver.time_limit = 0;
+  solver.command = "seq 1 5000; exit 1 # {input} {output}";
+  run = run_external_solver(in, solver);
+  CHECK(run.output_tail.size() == 4096);
+  CHECK_THAT(run.output_tail, Catch::EndsWith("\n4999\n5000\n"));
   // Every private folder is gone.
   CHECK(std::filesystem::is_empty(tmp));
   std::filesystem::remove_all(tmp);

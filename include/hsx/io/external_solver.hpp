@@ -6,7 +6,10 @@
 // files; each must occur at least once. They are replaced by single-quoted absolute paths in a fresh private
 // folder (under $TMPDIR, else /tmp) that is removed afterwards, whatever happens. The program runs in hsx's working
 // folder (so relative paths in the command work), in a process group of its own, with standard input from
-// /dev/null; its standard output and error are kept (their last 4 KiB) for the report. When the time limit passes,
+// /dev/null; its standard output and error are kept (their last 4 KiB) for the report. Each file it writes (that
+// log, {output}, any other) may hold at most 256 MiB, or less when hsx itself runs under a lower file size limit
+// (ulimit -f): past it the program is ended by SIGXFSZ (exit status 153), so one that writes without end fills
+// neither the disk nor hsx's memory. When the time limit passes,
 // the whole group is killed (SIGKILL); when hsx itself is killed, so is the program the shell runs (Linux's
 // PR_SET_PDEATHSIG: the shell's last command, which /bin/sh runs in its own place), though not what it started in
 // the background.
@@ -48,7 +51,8 @@ struct ExternalRun {
   double seconds = 0;        ///< wall-clock time from start to end
   std::string output_tail;   ///< the last 4 KiB of its standard output and error, interleaved as written
   /// Its labelling when it exited with status 0 and {output} holds one; otherwise empty and `problem` says why
-  /// ("exit status 3", "killed after 10 s", "{output}: line 2: ...", "{output} was not written").
+  /// ("exit status 3", "exit status 153 (SIGXFSZ: ...)", "killed after 10 s", "{output}: line 2: ...", "{output}
+  /// was not written").
   std::optional<ReadLabelling> labelling;
   std::string problem;
 };

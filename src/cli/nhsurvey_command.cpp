@@ -43,6 +43,7 @@
 #include <hsx/complex/boundary_from_arrangement2.hpp>
 #include <hsx/io/csgnet.hpp>
 #include <hsx/io/exact_json.hpp>
+#include <hsx/io/files.hpp>
 #include <hsx/io/nhrep_survey.hpp>
 #include <hsx/io/scene_json.hpp>
 
@@ -50,7 +51,6 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -434,10 +434,12 @@ int run_survey(const SurveyOptions& o) {
   // (c) CSGNet programs
   if (!o.csgnet.empty()) {
     SurveyTally t{"csgnet", o.keep_count};
-    std::ifstream in(o.csgnet);
-    if (!in) {
+    std::error_code unknown;  // other than "not found": read_file says what
+    if (std::filesystem::status(o.csgnet, unknown).type() == std::filesystem::file_type::not_found) {
       t.note = "skipped: corpus not present at " + o.csgnet;
     } else {
+      // Present: read as every input is (a directory is refused, a FIFO never blocks).
+      std::istringstream in(read_file(o.csgnet));
       const auto start = Clock::now();
       std::string line;
       long number = 0;

@@ -1328,7 +1328,8 @@ void add_bench_command(CLI::App& app) {
           ->check(seconds());
   cmd->add_option("--repetitions", o->repetitions, "run each measurement at least N times (default 5)");
   cmd->add_option("--min-time", o->min_time,
-                  "and repeat it until the runs add up to S seconds (default 0.2; 0: exactly --repetitions runs)");
+                  "and repeat it until the runs add up to S seconds (default 0.2; 0: exactly --repetitions runs)")
+      ->check(seconds());
   cmd->add_option("--csv", o->csv_path, "also write every measurement as CSV (one line per input and stage)")
       ->check(output_path());
   cmd->add_option("--json", o->json_path, "also write every measurement as hsx-bench/1 JSON, with each run's time")

@@ -44,10 +44,13 @@
 #include <cmath>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace hsx {
 namespace {
@@ -131,16 +134,22 @@ int worker_count(int requested) {
 /// Runs work(i, worker) for i in [0, n) on `threads` threads (worker in [0, threads) names the thread, for
 /// per-thread caches); rethrows the exception of the lowest failing i. Results written per i do not depend on the
 /// thread count; when the system refuses a thread, the ones started (at least the calling one) do all the work.
+/// Once an i fails, no i above it is started: the lowest failing i is still found (every i below it runs), and
+/// work that cannot be used is not done. Out of memory, that matters: every item left to run would fail too, and
+/// the exceptions kept for them would exhaust the C++ runtime's emergency pool (std::terminate, exit 134).
 void parallel_for(int n, int threads, const std::function<void(int, int)>& work) {
   threads = std::max(1, std::min(threads, n));
   std::vector<std::exception_ptr> errors(static_cast<std::size_t>(std::max(n, 0)));
   std::atomic<int> next{0};
+  std::atomic<int> first_failure{n};
   auto run = [&](int worker) {
-    for (int i = next++; i < n; i = next++) {
+    for (int i = next++; i < n && i < first_failure.load(); i = next++) {
       try {
         work(i, worker);
       } catch (...) {
         errors[static_cast<std::size_t>(i)] = std::current_exception();
+        for (int seen = first_failure.load(); i < seen && !first_failure.compare_exchange_weak(seen, i);) {
+        }
       }
     }
   };
@@ -1100,15 +1109,143 @@ CellBuild find_cells(const Built& b, const std::vector<ArrEdge3>& edges) {
   return cb;
 }
 
-void check_cell_limits(long cells, long halfspaces, const ArrangementLimits& limits) {
+/// Throws when `cells` (the count, or with `at_least` a lower bound on it) is over a limit.
+void check_cell_limits(long cells, long halfspaces, const ArrangementLimits& limits, bool at_least = false) {
+  const std::string has = "the arrangement has " + std::string(at_least ? "at least " : "") + std::to_string(cells);
   if (limits.max_cells > 0 && cells > limits.max_cells)
-    throw InputError("the arrangement has " + std::to_string(cells) + " cells, over the limit of " +
-                     std::to_string(limits.max_cells) + " (raise it with --max-cells; see docs/limits.md)");
+    throw InputError(has + " cells, over the limit of " + std::to_string(limits.max_cells) +
+                     " (raise it with --max-cells; see docs/limits.md)");
   if (limits.max_side_entries > 0 && cells * halfspaces > limits.max_side_entries)
-    throw InputError("the arrangement has " + std::to_string(cells) + " cells over " + std::to_string(halfspaces) +
+    throw InputError(has + " cells over " + std::to_string(halfspaces) +
                      " halfspaces: its side table (cells x halfspaces) exceeds " +
                      std::to_string(limits.max_side_entries) +
                      " entries, the limit (raise it with --max-side-table; see docs/limits.md)");
+}
+
+/// The most pairs and the most triples of planes cells_at_least examines (a few seconds at most).
+constexpr long kPlanePairBudget = 2'000'000;
+constexpr long kPlaneTripleBudget = 2'000'000;
+
+/// `v` divided by its first non-zero coordinate (a direction or normal made canonical up to scale).
+PointQ3 leading_one(const PointQ3& v) {
+  const Rational& lead = v.x != 0 ? v.x : (v.y != 0 ? v.y : v.z);
+  return scaled(v, 1 / lead);
+}
+
+/// The planes' flats that meet the open domain box, counted without repeats until the count passes `enough`.
+class FlatCounter {
+ public:
+  FlatCounter(const Box3& box, long enough) : box_(box), enough_(enough) {}
+  bool enough() const { return count() > enough_; }
+  long count() const { return static_cast<long>(planes_.size() + lines_.size() + points_.size()); }
+
+  /// The plane {x : normal . x = offset}.
+  void plane(const PointQ3& normal, const Rational& offset) {
+    Rational lowest = 0, highest = 0;  // of normal . x over the box
+    for (int a = 0; a < 3; ++a) {
+      const Rational& n = coord(normal, a);
+      lowest += n * (n > 0 ? coord(box_.min, a) : coord(box_.max, a));
+      highest += n * (n > 0 ? coord(box_.max, a) : coord(box_.min, a));
+    }
+    if (!(lowest < offset && offset < highest)) return;
+    const Rational& lead = normal.x != 0 ? normal.x : (normal.y != 0 ? normal.y : normal.z);
+    planes_.insert({leading_one(normal), PointQ3{offset / lead, 0, 0}});
+  }
+
+  /// The line through `point` along `direction` (non-zero).
+  void line(const PointQ3& point, const PointQ3& direction) {
+    // where it is inside the box: the open interval (after, before) of its parameter
+    std::optional<Rational> after, before;
+    for (int a = 0; a < 3; ++a) {
+      const Rational& d = coord(direction, a);
+      const Rational& p = coord(point, a);
+      if (d == 0) {
+        if (!(coord(box_.min, a) < p && p < coord(box_.max, a))) return;
+        continue;
+      }
+      Rational t1 = (coord(box_.min, a) - p) / d, t2 = (coord(box_.max, a) - p) / d;
+      if (t2 < t1) std::swap(t1, t2);
+      if (!after || *after < t1) after = t1;
+      if (!before || t2 < *before) before = t2;
+    }
+    if (!(*after < *before)) return;
+    // canonical: the direction with a leading one, the point where that coordinate is zero
+    const PointQ3 unit = leading_one(direction);
+    const int lead = direction.x != 0 ? 0 : (direction.y != 0 ? 1 : 2);
+    lines_.insert({unit, point - scaled(unit, coord(point, lead))});
+  }
+
+  /// The point `p`.
+  void point(const PointQ3& p) {
+    if (box_.min.x < p.x && p.x < box_.max.x && box_.min.y < p.y && p.y < box_.max.y && box_.min.z < p.z &&
+        p.z < box_.max.z)
+      points_.insert(p);
+  }
+
+ private:
+  struct PairHash {
+    std::size_t operator()(const std::pair<PointQ3, PointQ3>& k) const {
+      return PointHash()(k.first) * 31u ^ PointHash()(k.second);
+    }
+  };
+  const Box3& box_;
+  long enough_;
+  std::unordered_set<std::pair<PointQ3, PointQ3>, PairHash> planes_, lines_;
+  std::unordered_set<PointQ3, PointHash> points_;
+};
+
+/// A lower bound on the cells, known before any triangle is cut: 1 + the distinct planes, lines where two planes
+/// meet, and points where three meet (normals independent) that meet the open domain box (proofs/arrangement3.md,
+/// Claim 2.3: each adds at least one cell when the planes are inserted one by one, and every other surface only
+/// splits cells further). Counting stops once the bound passes `enough`; past kPlanePairBudget pairs no more lines
+/// are counted, past kPlaneTripleBudget triples no more points: then it is the bound found so far (the check after
+/// the refinement still holds). Pairs and triples are visited by their last plane, so that a budget cut counts a
+/// prefix of the planes in full.
+long cells_at_least(const Scene3& scene, long enough) {
+  std::vector<const Halfspace3*> planes;
+  for (const Halfspace3& h : scene.halfspaces)
+    if (h.kind == HalfspaceKind3::Plane) planes.push_back(&h);
+  FlatCounter flats(scene.domain, enough - 1);
+  for (const Halfspace3* p : planes) flats.plane(p->normal, p->offset);
+  // Lines first: they are fewer to find (a star of planes through one point has its cells on them, not on points).
+  long pairs = 0;
+  for (std::size_t k = 1; k < planes.size() && !flats.enough() && pairs < kPlanePairBudget; ++k)
+    for (std::size_t j = 0; j < k && !flats.enough() && pairs < kPlanePairBudget; ++j, ++pairs) {
+      const PointQ3 &nj = planes[j]->normal, &nk = planes[k]->normal;
+      const PointQ3 jk = cross(nj, nk);
+      if (jk.x == 0 && jk.y == 0 && jk.z == 0) continue;  // parallel: no line
+      // a point of the line: its corner with the plane through the origin normal to it
+      flats.line(scaled(scaled(cross(nk, jk), planes[j]->offset) + scaled(cross(jk, nj), planes[k]->offset),
+                        1 / dot(jk, jk)),
+                 jk);
+    }
+  long triples = 0;
+  for (std::size_t k = 2; k < planes.size() && !flats.enough() && triples < kPlaneTripleBudget; ++k)
+    for (std::size_t j = 1; j < k && !flats.enough() && triples < kPlaneTripleBudget; ++j) {
+      const PointQ3 &nj = planes[j]->normal, &nk = planes[k]->normal;
+      const PointQ3 jk = cross(nj, nk);
+      if (jk.x == 0 && jk.y == 0 && jk.z == 0) continue;  // parallel: no corner
+      for (std::size_t i = 0; i < j && !flats.enough() && triples < kPlaneTripleBudget; ++i, ++triples) {
+        const PointQ3& ni = planes[i]->normal;
+        const Rational det = dot(ni, jk);
+        if (det == 0) continue;
+        // Cramer: (d_i (n_j x n_k) + d_j (n_k x n_i) + d_k (n_i x n_j)) / (n_i . (n_j x n_k))
+        flats.point(scaled(scaled(jk, planes[i]->offset) + scaled(cross(nk, ni), planes[j]->offset) +
+                               scaled(cross(ni, nj), planes[k]->offset),
+                           1 / det));
+      }
+    }
+  return 1 + flats.count();
+}
+
+/// Refuses, before the refinement, a scene whose planes alone make more cells than the limits allow.
+void check_cell_limits_early(const Scene3& scene, const ArrangementLimits& limits) {
+  const long halfspaces = std::max<long>(1, static_cast<long>(scene.halfspaces.size()));
+  long enough = std::numeric_limits<long>::max();
+  if (limits.max_cells > 0) enough = limits.max_cells;
+  if (limits.max_side_entries > 0) enough = std::min(enough, limits.max_side_entries / halfspaces);
+  if (enough == std::numeric_limits<long>::max()) return;
+  check_cell_limits(cells_at_least(scene, enough), halfspaces, limits, /*at_least=*/true);
 }
 
 bool carries(const ArrTriangle3& t, int h) { return std::binary_search(t.halfspaces.begin(), t.halfspaces.end(), h); }
@@ -1379,6 +1516,8 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
                                  const Arrangement3Options& options) {
   const int threads = worker_count(options.threads);
   PhaseClock clock(options.timings);
+  check_cell_limits_early(scene, limits);
+  clock.lap("lower bound on the cells");
   std::vector<InputTriangle> inputs = input_triangles(scene);
   const std::vector<Group> groups = group_by_plane(inputs);
   clock.lap("input triangles and planes");

@@ -393,3 +393,43 @@ TEST_CASE("arrangement3: limits") {
   limits.max_triangles = 10;
   REQUIRE_THROWS_WITH(Arrangement3::build(scene, limits), Catch::Contains("triangles"));
 }
+
+TEST_CASE("arrangement3: the lower bound on the cells checked before refinement is exact in general position") {
+  rc::prop("a limit one below the cells is refused before refinement, naming the count", [] {
+    const int n = *rc::gen::inRange(3, 9);
+    const Scene3 scene = random_planes(n, 3, *rc::gen::inRange(0, 1 << 30));
+    const long cells = 1 + n + choose(n, 2) + choose(n, 3);
+    ArrangementLimits limits;
+    limits.max_cells = cells - 1;
+    try {
+      Arrangement3::build(scene, limits);
+      RC_FAIL("built over the limit");
+    } catch (const InputError& e) {
+      RC_ASSERT(std::string(e.what()).find("has at least " + std::to_string(cells) + " cells") != std::string::npos);
+    }
+    limits.max_cells = cells;
+    RC_ASSERT(static_cast<long>(Arrangement3::build(scene, limits).cells().size()) == cells);
+  });
+}
+
+TEST_CASE("arrangement3: the lower bound on the cells never refuses a scene within the limits") {
+  // Small integer planes: parallel, coincident and concurrent planes, corners and lines on the domain's faces; and a
+  // box surface, which only adds cells.
+  rc::prop("building with limits equal to the cells and the side entries succeeds", [] {
+    const int n = *rc::gen::inRange(1, 8);
+    std::vector<Halfspace3> halfspaces;
+    for (int k = 0; k < n; ++k) {
+      PointQ3 normal = {*rc::gen::inRange(-2, 3), *rc::gen::inRange(-2, 3), *rc::gen::inRange(-2, 3)};
+      if (normal == PointQ3{0, 0, 0}) normal.z = 1;
+      halfspaces.push_back(plane("P" + std::to_string(k), normal, *rc::gen::inRange(-3, 4)));
+    }
+    if (*rc::gen::arbitrary<bool>())
+      halfspaces.push_back(surface("B", box_surface({-1, -1, -1}, {1, 1, 1})));
+    const Scene3 scene = scene_of(cube(-2, 2), halfspaces);
+    const long cells = static_cast<long>(Arrangement3::build(scene, ArrangementLimits{0, 0, 0}).cells().size());
+    ArrangementLimits limits;
+    limits.max_cells = cells;
+    limits.max_side_entries = cells * static_cast<long>(halfspaces.size());
+    RC_ASSERT(static_cast<long>(Arrangement3::build(scene, limits).cells().size()) == cells);
+  });
+}

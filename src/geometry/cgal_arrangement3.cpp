@@ -622,7 +622,7 @@ Built merge_triangles(const Scene3& scene, const std::vector<InputTriangle>& inp
   for (const auto& l : local) total += l.size();
   if (limits.max_triangles > 0 && static_cast<long>(total) > limits.max_triangles)
     throw InputError("the arrangement has " + std::to_string(total) + " triangles, over the limit of " +
-                     std::to_string(limits.max_triangles) + " (see docs/limits.md)");
+                     std::to_string(limits.max_triangles) + " (raise it with --max-triangles; see docs/limits.md)");
   std::unordered_map<PointQ3, int, PointHash> index;
   index.reserve(total);
   b.triangles.reserve(total);
@@ -1238,8 +1238,18 @@ long cells_at_least(const Scene3& scene, long enough) {
   return 1 + flats.count();
 }
 
-/// Refuses, before the refinement, a scene whose planes alone make more cells than the limits allow.
-void check_cell_limits_early(const Scene3& scene, const ArrangementLimits& limits) {
+/// Refuses, before the refinement, a scene whose planes alone make more cells than the limits allow, or with a
+/// surface of more triangles than the arrangement may have: a surface's triangles meet only at corners, and the
+/// refinement cuts each into one or more, so no fewer refined triangles carry it.
+void check_limits_before_refinement(const Scene3& scene, const ArrangementLimits& limits) {
+  if (limits.max_triangles > 0)
+    for (std::size_t h = 0; h < scene.halfspaces.size(); ++h) {
+      const long triangles = static_cast<long>(scene.halfspaces[h].surface.triangles.size());
+      if (triangles > limits.max_triangles)
+        throw InputError(halfspace_label(scene, static_cast<int>(h)) + " has " + std::to_string(triangles) +
+                         " triangles, so the arrangement has at least as many, over the limit of " +
+                         std::to_string(limits.max_triangles) + " (raise it with --max-triangles; see docs/limits.md)");
+    }
   const long halfspaces = std::max<long>(1, static_cast<long>(scene.halfspaces.size()));
   long enough = std::numeric_limits<long>::max();
   if (limits.max_cells > 0) enough = limits.max_cells;
@@ -1516,8 +1526,8 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
                                  const Arrangement3Options& options) {
   const int threads = worker_count(options.threads);
   PhaseClock clock(options.timings);
-  check_cell_limits_early(scene, limits);
-  clock.lap("lower bound on the cells");
+  check_limits_before_refinement(scene, limits);
+  clock.lap("lower bounds on the cells and triangles");
   std::vector<InputTriangle> inputs = input_triangles(scene);
   const std::vector<Group> groups = group_by_plane(inputs);
   clock.lap("input triangles and planes");

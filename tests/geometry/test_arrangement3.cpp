@@ -392,6 +392,13 @@ TEST_CASE("arrangement3: limits") {
   limits = {};
   limits.max_triangles = 10;
   REQUIRE_THROWS_WITH(Arrangement3::build(scene, limits), Catch::Contains("triangles"));
+  // A surface of more triangles than the limit is refused before the refinement; one of exactly as many is not.
+  const Scene3 boxed = scene_of(cube(-4, 4), {surface("B", box_surface({-1, -1, -1}, {1, 1, 1}))});
+  limits.max_triangles = 11;
+  REQUIRE_THROWS_WITH(Arrangement3::build(boxed, limits),
+                      Catch::Contains("(\"B\") has 12 triangles, so the arrangement has at least as many"));
+  limits.max_triangles = 12 + 12;  // the box surface's 12 and the domain box's 12 (two per face)
+  REQUIRE(Arrangement3::build(boxed, limits).cells().size() == 2);
 }
 
 TEST_CASE("arrangement3: the lower bound on the cells checked before refinement is exact in general position") {

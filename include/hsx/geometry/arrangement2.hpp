@@ -63,7 +63,7 @@ struct PointLocation2 {
 struct ArrangementLimits {
   long max_cells = 250000;            ///< bounded faces
   long max_side_entries = 1L << 27;   ///< cells x halfspaces
-  long max_triangles = 20'000'000;    ///< 3D only: refined triangles (Arrangement3), checked before cells are found
+  long max_triangles = 4'000'000;     ///< 3D only: refined triangles (Arrangement3), checked before cells are found
 };
 
 /// Bench support (hsx bench --arrange), used by no algorithm: the baseline hsx's arrangement is measured

@@ -5,6 +5,7 @@
 #include <hsx/hsx.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -65,8 +66,93 @@ rlim_t solver_file_limit() {
   return std::min(size.rlim_cur, kMaxFileBytes);
 }
 
-/// Starts `/bin/sh -c command` in hsx's working folder, its output into `log`, in a process group of its own, each
-/// file it writes at most `max_file_bytes`; -1 on failure.
+/// In the program's process, before exec: its files bounded by `max_file_bytes` (past it SIGXFSZ ends it; hsx
+/// ignores SIGXFSZ (io/files.hpp), so the program gets back the default action), no signal blocked, standard input
+/// from /dev/null, standard output and error into `log`; then /bin/sh -c `command`. Never returns.
+[[noreturn]] void exec_shell(const char* command, const char* log, rlim_t max_file_bytes) {
+  prctl(PR_SET_PDEATHSIG, SIGKILL);  // the keeper killed: the shell goes too
+  const rlimit size{max_file_bytes, max_file_bytes};
+  setrlimit(RLIMIT_FSIZE, &size);
+  signal(SIGXFSZ, SIG_DFL);
+  sigset_t none;
+  sigemptyset(&none);
+  sigprocmask(SIG_SETMASK, &none, nullptr);
+  const int null = open("/dev/null", O_RDONLY);
+  const int out = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+  if (null < 0 || out < 0 || dup2(null, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0) _exit(127);
+  execl("/bin/sh", "sh", "-c", command, static_cast<char*>(nullptr));
+  _exit(127);
+}
+
+/// Kills every child of the calling (single-threaded) process that /proc lists; false when /proc cannot list them
+/// (a kernel without CONFIG_PROC_CHILDREN). Allocates nothing: it runs in a child forked from a threaded process.
+bool kill_listed_children() {
+  const int fd = open("/proc/thread-self/children", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  char buffer[4096];
+  long pid = 0;
+  for (ssize_t n; (n = read(fd, buffer, sizeof buffer)) > 0 || (n < 0 && errno == EINTR);)
+    for (ssize_t i = 0; i < n; ++i) {
+      if (buffer[i] >= '0' && buffer[i] <= '9') {
+        pid = pid * 10 + (buffer[i] - '0');
+      } else if (pid > 0) {
+        kill(static_cast<pid_t>(pid), SIGKILL);
+        pid = 0;
+      }
+    }
+  if (pid > 0) kill(static_cast<pid_t>(pid), SIGKILL);
+  close(fd);
+  return true;
+}
+
+/// The keeper, a process between hsx and the program: it runs the shell and waits for it, or for SIGTERM from hsx
+/// (the time limit passed). Then it kills the shell's process group and, being a child subreaper, every process
+/// the program left behind, even one that started a session of its own (its orphans become the keeper's children),
+/// until none is left. It exits with the shell's exit status, or 128 + the signal that ended the shell. Allocates
+/// nothing (a child forked from a threaded process). Never returns.
+[[noreturn]] void keep(const char* command, const char* log, rlim_t max_file_bytes) {
+  prctl(PR_SET_PDEATHSIG, SIGKILL);  // hsx killed (Ctrl-C): the keeper goes too, and with it the shell
+  prctl(PR_SET_CHILD_SUBREAPER, 1);
+  // hsx's handlers remove hsx's temporary files (io/files.hpp): never from here
+  for (int inherited : {SIGINT, SIGHUP, SIGPIPE, SIGXCPU}) signal(inherited, SIG_DFL);
+  signal(SIGCHLD, SIG_DFL);  // never SIG_IGN: that would reap the children before waitpid sees them
+  sigset_t wake;
+  sigemptyset(&wake);
+  sigaddset(&wake, SIGCHLD);
+  sigaddset(&wake, SIGTERM);
+  sigprocmask(SIG_BLOCK, &wake, nullptr);
+  const pid_t shell = fork();
+  if (shell == 0) {
+    setpgid(0, 0);
+    exec_shell(command, log, max_file_bytes);
+  }
+  if (shell < 0) _exit(127);
+  setpgid(shell, shell);
+  int status = 0;
+  bool ended = false;
+  for (bool stop = false; !ended && !stop;) {
+    int st = 0;
+    for (pid_t done; (done = waitpid(-1, &st, WNOHANG)) > 0;)
+      if (done == shell) {
+        status = st;
+        ended = true;
+      }
+    if (!ended) stop = sigwaitinfo(&wake, nullptr) == SIGTERM;
+  }
+  kill(-shell, SIGKILL);
+  for (;;) {
+    const bool listed = kill_listed_children();
+    int st = 0;
+    const pid_t done = waitpid(-1, &st, listed ? 0 : WNOHANG);
+    if (done < 0 && errno == EINTR) continue;
+    if (done <= 0) break;  // none left (or, without /proc's list, none that has ended)
+  }
+  if (!ended) _exit(128 + SIGKILL);
+  _exit(WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status));
+}
+
+/// Starts the keeper (see keep) in a process group of its own, the program's output into `log`, each file it
+/// writes at most `max_file_bytes`; -1 on failure.
 pid_t start(const std::string& command, const std::string& log, rlim_t max_file_bytes) {
   const pid_t child = fork();
   if (child != 0) {
@@ -74,17 +160,21 @@ pid_t start(const std::string& command, const std::string& log, rlim_t max_file_
     return child;
   }
   setpgid(0, 0);
-  prctl(PR_SET_PDEATHSIG, SIGKILL);  // hsx killed (Ctrl-C): the program goes too
-  // Every file it writes (its log, {output}) is bounded: past `max_file_bytes` it is ended by SIGXFSZ, which hsx
-  // itself ignores (io/files.hpp) and so must give back its default action.
-  const rlimit size{max_file_bytes, max_file_bytes};
-  setrlimit(RLIMIT_FSIZE, &size);
-  signal(SIGXFSZ, SIG_DFL);
-  const int null = open("/dev/null", O_RDONLY);
-  const int out = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-  if (null < 0 || out < 0 || dup2(null, 0) < 0 || dup2(out, 1) < 0 || dup2(out, 2) < 0) _exit(127);
-  execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
-  _exit(127);
+  keep(command.c_str(), log.c_str(), max_file_bytes);
+}
+
+/// Asks the keeper to end the program (SIGTERM) and waits for it; after 10 s, kills it (its shell goes with it,
+/// by PR_SET_PDEATHSIG, though not what the program left in other process groups).
+void end_keeper(pid_t keeper, int& status) {
+  kill(keeper, SIGTERM);
+  for (int waited = 0; waited < 1000; ++waited) {
+    const pid_t done = waitpid(keeper, &status, WNOHANG);
+    if (done == keeper || (done < 0 && errno != EINTR)) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  kill(-keeper, SIGKILL);
+  while (waitpid(keeper, &status, 0) < 0 && errno == EINTR) {
+  }
 }
 
 std::string seconds_text(double s) {
@@ -137,16 +227,13 @@ ExternalRun run_external_solver(const LoadedInput& in, const ExternalSolver& sol
     if (done < 0 && errno != EINTR) break;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
     if (solver.time_limit > 0 && elapsed > solver.time_limit) {
-      kill(-child, SIGKILL);
-      while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
-      }
+      end_keeper(child, status);
       run.timed_out = true;
       break;
     }
     std::this_thread::sleep_for(pause);
     pause = std::min(pause * 2, std::chrono::microseconds(20000));
   }
-  kill(-child, SIGKILL);  // whatever it left running in its group
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
   run.output_tail = file_tail(log_path);
   if (run.timed_out) {

@@ -14,8 +14,10 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include <unistd.h>
+#include <fstream>
+#include <signal.h>
 #include <string>
+#include <unistd.h>
 
 using namespace hsx;
 
@@ -174,6 +176,21 @@ TEST_CASE("external solver: runs, times out, fails, and leaves nothing behind", 
   run = run_external_solver(in, solver);
   CHECK(run.output_tail.size() == 4096);
   CHECK_THAT(run.output_tail, Catch::EndsWith("\n4999\n5000\n"));
+  // What the program leaves running is ended with it, also in a session of its own, also at the time limit.
+  const std::string pid_file = tmp + "/escaped.pid";
+  for (const double limit : {0.0, 0.5}) {
+    solver.time_limit = limit;
+    solver.command = "setsid sleep 60 & echo $! > '" + pid_file + "'; " + (limit > 0 ? "sleep 60; " : "") +
+                     ": {input} {output}";
+    run = run_external_solver(in, solver);
+    CHECK(run.timed_out == (limit > 0));
+    std::ifstream f(pid_file);
+    pid_t escaped = 0;
+    REQUIRE(f >> escaped);
+    CHECK(::kill(escaped, 0) != 0);  // gone (and reaped: not even a zombie)
+    std::filesystem::remove(pid_file);
+  }
+  solver.time_limit = 0;
   // Every private folder is gone.
   CHECK(std::filesystem::is_empty(tmp));
   std::filesystem::remove_all(tmp);

@@ -9,10 +9,14 @@
 // /dev/null; its standard output and error are kept (their last 4 KiB) for the report. Each file it writes (that
 // log, {output}, any other) may hold at most 256 MiB, or less when hsx itself runs under a lower file size limit
 // (ulimit -f): past it the program is ended by SIGXFSZ (exit status 153), so one that writes without end fills
-// neither the disk nor hsx's memory. When the time limit passes,
-// the whole group is killed (SIGKILL); when hsx itself is killed, so is the program the shell runs (Linux's
-// PR_SET_PDEATHSIG: the shell's last command, which /bin/sh runs in its own place), though not what it started in
-// the background.
+// neither the disk nor hsx's memory.
+//
+// Between hsx and the shell stands a keeper process, a child subreaper (Linux's PR_SET_CHILD_SUBREAPER): every
+// process the program starts and leaves behind becomes the keeper's child when its parent ends, even one that
+// started a session of its own (setsid, a daemon's double fork). When the shell ends, or when the time limit
+// passes (hsx sends the keeper SIGTERM), the keeper kills the shell's process group and then every such process
+// until none is left, so nothing the program started outlives the run. When hsx itself is killed, the keeper and
+// the shell are killed too (PR_SET_PDEATHSIG), but not what the program had left in other process groups.
 #pragma once
 
 #include <hsx/io/input.hpp>

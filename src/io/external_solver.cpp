@@ -154,8 +154,15 @@ bool kill_listed_children() {
 /// Starts the keeper (see keep) in a process group of its own, the program's output into `log`, each file it
 /// writes at most `max_file_bytes`; -1 on failure.
 pid_t start(const std::string& command, const std::string& log, rlim_t max_file_bytes) {
+  // The keeper starts with SIGTERM blocked: until it has set itself up, hsx's own handler (which removes hsx's
+  // temporary files) must not run in it.
+  sigset_t term, before;
+  sigemptyset(&term);
+  sigaddset(&term, SIGTERM);
+  pthread_sigmask(SIG_BLOCK, &term, &before);
   const pid_t child = fork();
   if (child != 0) {
+    pthread_sigmask(SIG_SETMASK, &before, nullptr);
     if (child > 0) setpgid(child, child);
     return child;
   }

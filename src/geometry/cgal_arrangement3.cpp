@@ -1126,11 +1126,8 @@ void check_cell_limits(long cells, long halfspaces, const ArrangementLimits& lim
 constexpr long kPlanePairBudget = 2'000'000;
 constexpr long kPlaneTripleBudget = 2'000'000;
 
-/// `v` divided by its first non-zero coordinate (a direction or normal made canonical up to scale).
-PointQ3 leading_one(const PointQ3& v) {
-  const Rational& lead = v.x != 0 ? v.x : (v.y != 0 ? v.y : v.z);
-  return scaled(v, 1 / lead);
-}
+/// The axis of `v`'s first non-zero coordinate (v non-zero).
+int leading_axis(const PointQ3& v) { return v.x != 0 ? 0 : (v.y != 0 ? 1 : 2); }
 
 /// The planes' flats that meet the open domain box, counted without repeats until the count passes `enough`.
 class FlatCounter {
@@ -1148,8 +1145,8 @@ class FlatCounter {
       highest += n * (n > 0 ? coord(box_.max, a) : coord(box_.min, a));
     }
     if (!(lowest < offset && offset < highest)) return;
-    const Rational& lead = normal.x != 0 ? normal.x : (normal.y != 0 ? normal.y : normal.z);
-    planes_.insert({leading_one(normal), PointQ3{offset / lead, 0, 0}});
+    const Rational scale = 1 / coord(normal, leading_axis(normal));  // canonical: a leading 1
+    planes_.insert({scaled(normal, scale), offset * scale});
   }
 
   /// The line through `point` along `direction` (non-zero).
@@ -1170,8 +1167,8 @@ class FlatCounter {
     }
     if (!(*after < *before)) return;
     // canonical: the direction with a leading one, the point where that coordinate is zero
-    const PointQ3 unit = leading_one(direction);
-    const int lead = direction.x != 0 ? 0 : (direction.y != 0 ? 1 : 2);
+    const int lead = leading_axis(direction);
+    const PointQ3 unit = scaled(direction, 1 / coord(direction, lead));
     lines_.insert({unit, point - scaled(unit, coord(point, lead))});
   }
 
@@ -1190,7 +1187,8 @@ class FlatCounter {
   };
   const Box3& box_;
   long enough_;
-  std::unordered_set<std::pair<PointQ3, PointQ3>, PairHash> planes_, lines_;
+  std::unordered_set<std::pair<PointQ3, Rational>, PlaneKeyHash> planes_;  ///< normal, offset
+  std::unordered_set<std::pair<PointQ3, PointQ3>, PairHash> lines_;          ///< direction, point
   std::unordered_set<PointQ3, PointHash> points_;
 };
 

@@ -19,6 +19,7 @@
 #include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 namespace hsx {
@@ -105,22 +106,32 @@ bool kill_listed_children() {
   return true;
 }
 
-/// The keeper, a process between hsx and the program: it runs the shell and waits for it, or for SIGTERM from hsx
-/// (the time limit passed). Then it kills the shell's process group and, being a child subreaper, every process
-/// the program left behind, even one that started a session of its own (its orphans become the keeper's children),
-/// until none is left. It exits with the shell's exit status, or 128 + the signal that ended the shell. Allocates
-/// nothing (a child forked from a threaded process). Never returns.
-[[noreturn]] void keep(const char* command, const char* log, rlim_t max_file_bytes) {
-  prctl(PR_SET_PDEATHSIG, SIGKILL);  // hsx killed (Ctrl-C): the keeper goes too, and with it the shell
+/// The end of a keeper whose hsx has ended (killed, even by SIGKILL): nobody else will remove hsx's private
+/// `folder`, so the keeper becomes `rm -rf` on it (exec: it allocates nothing). Never returns.
+[[noreturn]] void remove_folder(const char* folder) {
+  execl("/bin/rm", "rm", "-rf", "--", folder, static_cast<char*>(nullptr));
+  _exit(127);
+}
+
+/// The keeper, a process between hsx (process `hsx`) and the program: it runs the shell and waits for it, or for
+/// SIGTERM, sent by hsx when the time limit passed or by the kernel when hsx ended (PR_SET_PDEATHSIG), or for
+/// SIGTERM, SIGINT or SIGHUP from elsewhere (`pkill hsx` reaches the keeper too: it is a fork of hsx). Then it
+/// kills the shell's process group and, being a child subreaper, every process the program left behind, even one
+/// that started a session of its own (its orphans become the keeper's children), until none is left. It exits with
+/// the shell's exit status, or 128 + the signal that ended the shell; when hsx has ended, it removes hsx's private
+/// `folder` instead. Allocates nothing (a child forked from a threaded process). Never returns.
+[[noreturn]] void keep(const char* command, const char* log, rlim_t max_file_bytes, pid_t hsx, const char* folder) {
+  prctl(PR_SET_PDEATHSIG, SIGTERM);  // hsx ended: clean up as at the time limit (SIGTERM is blocked: see start)
+  if (getppid() != hsx) remove_folder(folder);  // hsx ended before that line: no signal will come
   prctl(PR_SET_CHILD_SUBREAPER, 1);
-  // hsx's handlers remove hsx's temporary files (io/files.hpp): never from here
-  for (int inherited : {SIGINT, SIGHUP, SIGPIPE, SIGXCPU}) signal(inherited, SIG_DFL);
+  // hsx's handlers remove hsx's temporary files (io/files.hpp): never from here. Their signals are blocked (see
+  // start); those that stop the keeper stay blocked and are waited for, the others get their default action.
+  for (int inherited : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXCPU}) signal(inherited, SIG_DFL);
   signal(SIGCHLD, SIG_DFL);  // never SIG_IGN: that would reap the children before waitpid sees them
   sigset_t wake;
   sigemptyset(&wake);
-  sigaddset(&wake, SIGCHLD);
-  sigaddset(&wake, SIGTERM);
-  sigprocmask(SIG_BLOCK, &wake, nullptr);
+  for (int waited : {SIGCHLD, SIGTERM, SIGINT, SIGHUP}) sigaddset(&wake, waited);
+  sigprocmask(SIG_SETMASK, &wake, nullptr);
   const pid_t shell = fork();
   if (shell == 0) {
     setpgid(0, 0);
@@ -129,7 +140,7 @@ bool kill_listed_children() {
   if (shell < 0) _exit(127);
   setpgid(shell, shell);
   int status = 0;
-  bool ended = false;
+  bool ended = false, from_elsewhere = false;
   for (bool stop = false; !ended && !stop;) {
     int st = 0;
     for (pid_t done; (done = waitpid(-1, &st, WNOHANG)) > 0;)
@@ -137,7 +148,11 @@ bool kill_listed_children() {
         status = st;
         ended = true;
       }
-    if (!ended) stop = sigwaitinfo(&wake, nullptr) == SIGTERM;
+    if (ended) break;
+    siginfo_t info{};
+    const int woken = sigwaitinfo(&wake, &info);
+    stop = woken > 0 && woken != SIGCHLD;
+    from_elsewhere = stop && !(woken == SIGTERM && info.si_pid == hsx);
   }
   kill(-shell, SIGKILL);
   for (;;) {
@@ -147,19 +162,24 @@ bool kill_listed_children() {
     if (done < 0 && errno == EINTR) continue;
     if (done <= 0) break;  // none left (or, without /proc's list, none that has ended)
   }
+  // A signal from elsewhere is most likely ending hsx as well: give it a second to end, then remove its folder.
+  const timespec pause{0, 10'000'000};
+  for (int waited = 0; from_elsewhere && waited < 100 && getppid() == hsx; ++waited) nanosleep(&pause, nullptr);
+  if (getppid() != hsx) remove_folder(folder);
   if (!ended) _exit(128 + SIGKILL);
   _exit(WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status));
 }
 
-/// Starts the keeper (see keep) in a process group of its own, the program's output into `log`, each file it
-/// writes at most `max_file_bytes`; -1 on failure.
-pid_t start(const std::string& command, const std::string& log, rlim_t max_file_bytes) {
-  // The keeper starts with SIGTERM blocked: until it has set itself up, hsx's own handler (which removes hsx's
-  // temporary files) must not run in it.
-  sigset_t term, before;
-  sigemptyset(&term);
-  sigaddset(&term, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &term, &before);
+/// Starts the keeper (see keep) in a process group of its own, the program's output into `log` (in hsx's private
+/// `folder`), each file it writes at most `max_file_bytes`; -1 on failure.
+pid_t start(const std::string& command, const std::string& log, rlim_t max_file_bytes, const std::string& folder) {
+  // The keeper starts with the signals hsx handles blocked: until it has set itself up, hsx's own handlers (which
+  // remove hsx's temporary files) must not run in it.
+  sigset_t handled, before;
+  sigemptyset(&handled);
+  for (int by_hsx : {SIGINT, SIGTERM, SIGHUP, SIGPIPE, SIGXCPU}) sigaddset(&handled, by_hsx);
+  pthread_sigmask(SIG_BLOCK, &handled, &before);
+  const pid_t hsx = getpid();
   const pid_t child = fork();
   if (child != 0) {
     pthread_sigmask(SIG_SETMASK, &before, nullptr);
@@ -167,11 +187,11 @@ pid_t start(const std::string& command, const std::string& log, rlim_t max_file_
     return child;
   }
   setpgid(0, 0);
-  keep(command.c_str(), log.c_str(), max_file_bytes);
+  keep(command.c_str(), log.c_str(), max_file_bytes, hsx, folder.c_str());
 }
 
 /// Asks the keeper to end the program (SIGTERM) and waits for it; after 10 s, kills it (its shell goes with it,
-/// by PR_SET_PDEATHSIG, though not what the program left in other process groups).
+/// by the shell's PR_SET_PDEATHSIG, though not what the program left in other process groups).
 void end_keeper(pid_t keeper, int& status) {
   kill(keeper, SIGTERM);
   for (int waited = 0; waited < 1000; ++waited) {
@@ -224,7 +244,7 @@ ExternalRun run_external_solver(const LoadedInput& in, const ExternalSolver& sol
   ExternalRun run;
   const auto begin = std::chrono::steady_clock::now();
   const rlim_t max_file_bytes = solver_file_limit();
-  const pid_t child = start(command, log_path, max_file_bytes);
+  const pid_t child = start(command, log_path, max_file_bytes, folder.path());
   if (child < 0) throw OutputError("cannot start the solver: fork failed");
   int status = 0;
   auto pause = std::chrono::microseconds(200);

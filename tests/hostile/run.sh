@@ -150,7 +150,7 @@ for file in "$@"; do
       time) time_limit="$value" ;;
       memory) memory="$value" ;;
       stack) stack="$value" ;;
-      env) envs+=("$value") ;;
+      env) envs+=("$(expand "$value")") ;;
       skip-as-root) skip_as_root=1 ;;
       needs-root) needs_root=1 ;;
       needs-unnamed-files) needs_unnamed=1 ;;

@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 #include <rapidcheck/catch.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +18,8 @@
 #include <fstream>
 #include <signal.h>
 #include <string>
+#include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 using namespace hsx;
@@ -191,6 +194,49 @@ TEST_CASE("external solver: runs, times out, fails, and leaves nothing behind", 
     std::filesystem::remove(pid_file);
   }
   solver.time_limit = 0;
+  // hsx killed while the program runs (here a forked stand-in): by SIGKILL, so no handler of hsx's runs, or by
+  // SIGINT sent to hsx and its keeper alike, as `pkill hsx` does. The keeper still ends what the program left, and
+  // removes the private folder.
+  for (const int how : {SIGKILL, SIGINT}) {
+    CAPTURE(how);
+    const pid_t stand_in = fork();
+    REQUIRE(stand_in >= 0);
+    if (stand_in == 0) {
+      ::signal(SIGINT, SIG_DFL);
+      solver.command = "setsid sleep 60 & echo $! > '" + pid_file + "'; sleep 60; : {input} {output}";
+      try {
+        run_external_solver(in, solver);
+      } catch (...) {
+      }
+      _exit(0);
+    }
+    pid_t escaped = 0;
+    for (int waited = 0; waited < 2000; ++waited) {
+      std::ifstream f(pid_file);
+      if (f >> escaped) break;
+      escaped = 0;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    pid_t keeper = 0;
+    {
+      std::ifstream children("/proc/" + std::to_string(stand_in) + "/task/" + std::to_string(stand_in) + "/children");
+      children >> keeper;
+    }
+    ::kill(stand_in, how);
+    if (how != SIGKILL && keeper > 0) ::kill(keeper, how);
+    ::waitpid(stand_in, nullptr, 0);
+    REQUIRE(escaped > 0);
+    CHECK((how == SIGKILL || keeper > 0));
+    std::filesystem::remove(pid_file);
+    bool cleaned = false;  // the keeper works after the stand-in is gone: wait for it, 10 s at most
+    for (int waited = 0; waited < 1000 && !cleaned; ++waited) {
+      cleaned = ::kill(escaped, 0) != 0 && std::filesystem::is_empty(tmp);
+      if (!cleaned) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    CHECK(::kill(escaped, 0) != 0);  // gone (and reaped by the keeper: not even a zombie)
+    CHECK(std::filesystem::is_empty(tmp));
+    if (::kill(escaped, 0) == 0) ::kill(escaped, SIGKILL);
+  }
   // Every private folder is gone.
   CHECK(std::filesystem::is_empty(tmp));
   std::filesystem::remove_all(tmp);

@@ -15,8 +15,10 @@
 // process the program starts and leaves behind becomes the keeper's child when its parent ends, even one that
 // started a session of its own (setsid, a daemon's double fork). When the shell ends, or when the time limit
 // passes (hsx sends the keeper SIGTERM), the keeper kills the shell's process group and then every such process
-// until none is left, so nothing the program started outlives the run. When hsx itself is killed, the keeper and
-// the shell are killed too (PR_SET_PDEATHSIG), but not what the program had left in other process groups.
+// until none is left, so nothing the program started outlives the run. When hsx itself ends while the program
+// runs (killed, even by SIGKILL or the out-of-memory killer), the kernel sends the keeper SIGTERM
+// (PR_SET_PDEATHSIG): it ends everything the program started, as at the time limit, then removes hsx's private
+// folder.
 #pragma once
 
 #include <hsx/io/input.hpp>

@@ -1256,6 +1256,30 @@ void check_limits_before_refinement(const Scene3& scene, const ArrangementLimits
   check_cell_limits(cells_at_least(scene, enough), halfspaces, limits, /*at_least=*/true);
 }
 
+/// Refuses, before the refinement, an arrangement sure to have more refined triangles than the limit allows. In one
+/// plane the refinement cuts each input triangle into one or more, and one surface's triangles in one plane do not
+/// overlap (else the merge refuses the surface as intersecting itself), so the plane holds at least as many refined
+/// triangles as the surface (or the domain box) with most triangles in it; distinct planes share none. (Summing
+/// over surfaces would not be a bound: coincident surfaces share their refined triangles.)
+void check_triangles_at_least(const std::vector<InputTriangle>& inputs, const std::vector<Group>& groups,
+                              const ArrangementLimits& limits) {
+  if (limits.max_triangles <= 0) return;
+  long at_least = 0;
+  for (const Group& g : groups) {
+    // members ascend, and input_triangles lists each surface's triangles together: one run per surface
+    long most = 0, run = 0;
+    for (std::size_t k = 0; k < g.members.size(); ++k) {
+      const int h = inputs[static_cast<std::size_t>(g.members[k])].halfspace;
+      run = k > 0 && inputs[static_cast<std::size_t>(g.members[k - 1])].halfspace == h ? run + 1 : 1;
+      most = std::max(most, run);
+    }
+    at_least += most;
+  }
+  if (at_least > limits.max_triangles)
+    throw InputError("the arrangement has at least " + std::to_string(at_least) + " triangles, over the limit of " +
+                     std::to_string(limits.max_triangles) + " (raise it with --max-triangles; see docs/limits.md)");
+}
+
 bool carries(const ArrTriangle3& t, int h) { return std::binary_search(t.halfspaces.begin(), t.halfspaces.end(), h); }
 
 /// Each cell's side of every halfspace: known next to the halfspace's own triangles, carried across every other
@@ -1528,6 +1552,7 @@ Arrangement3 Arrangement3::build(const Scene3& scene, const ArrangementLimits& l
   clock.lap("lower bounds on the cells and triangles");
   std::vector<InputTriangle> inputs = input_triangles(scene);
   const std::vector<Group> groups = group_by_plane(inputs);
+  check_triangles_at_least(inputs, groups, limits);
   clock.lap("input triangles and planes");
   const std::vector<std::pair<int, int>> pairs = candidate_pairs(inputs);
   clock.lap("candidate pairs");

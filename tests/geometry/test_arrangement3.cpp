@@ -399,6 +399,19 @@ TEST_CASE("arrangement3: limits") {
                       Catch::Contains("(\"B\") has 12 triangles, so the arrangement has at least as many"));
   limits.max_triangles = 12 + 12;  // the box surface's 12 and the domain box's 12 (two per face)
   REQUIRE(Arrangement3::build(boxed, limits).cells().size() == 2);
+  // Two apart are refused before the refinement too, by the sum over planes; the same box given twice is not (the
+  // copies share their refined triangles).
+  const Scene3 two = scene_of(cube(-4, 4), {surface("B", box_surface({-3, -3, -3}, {-1, -1, -1})),
+                                            surface("C", box_surface({1, 1, 1}, {3, 3, 3}))});
+  limits.max_triangles = 35;
+  REQUIRE_THROWS_WITH(Arrangement3::build(two, limits),
+                      Catch::Contains("the arrangement has at least 36 triangles, over the limit of 35"));
+  limits.max_triangles = 36;
+  REQUIRE(Arrangement3::build(two, limits).triangles().size() == 36);
+  const Scene3 twice = scene_of(cube(-4, 4), {surface("B", box_surface({-1, -1, -1}, {1, 1, 1})),
+                                              surface("C", box_surface({-1, -1, -1}, {1, 1, 1}))});
+  limits.max_triangles = 24;
+  REQUIRE(Arrangement3::build(twice, limits).triangles().size() == 24);
 }
 
 TEST_CASE("arrangement3: the lower bound on the cells checked before refinement is exact in general position") {
@@ -419,24 +432,36 @@ TEST_CASE("arrangement3: the lower bound on the cells checked before refinement 
   });
 }
 
-TEST_CASE("arrangement3: the lower bound on the cells never refuses a scene within the limits") {
-  // Small integer planes: parallel, coincident and concurrent planes, corners and lines on the domain's faces; and a
-  // box surface, which only adds cells.
+TEST_CASE("arrangement3: the lower bounds on the cells and triangles never refuse a scene within the limits") {
+  // Small integer planes: parallel, coincident and concurrent planes, corners and lines on the domain's faces; and
+  // box surfaces, which only add cells.
   rc::prop("building with limits equal to the cells and the side entries succeeds", [] {
-    const int n = *rc::gen::inRange(1, 8);
+    const int n = *rc::gen::inRange(0, 8);
     std::vector<Halfspace3> halfspaces;
     for (int k = 0; k < n; ++k) {
       PointQ3 normal = {*rc::gen::inRange(-2, 3), *rc::gen::inRange(-2, 3), *rc::gen::inRange(-2, 3)};
       if (normal == PointQ3{0, 0, 0}) normal.z = 1;
       halfspaces.push_back(plane("P" + std::to_string(k), normal, *rc::gen::inRange(-3, 4)));
     }
-    if (*rc::gen::arbitrary<bool>())
-      halfspaces.push_back(surface("B", box_surface({-1, -1, -1}, {1, 1, 1})));
+    // Box surfaces with integer corners: overlapping, coincident, or on the domain's faces.
+    for (const char* name : {"B", "C"})
+      if (name[0] == 'C' && halfspaces.size() == static_cast<std::size_t>(n) + 1 && *rc::gen::inRange(0, 3) == 0) {
+        halfspaces.push_back(surface(name, halfspaces.back().surface));  // B again
+      } else if (halfspaces.empty() || *rc::gen::arbitrary<bool>()) {
+        int low[3], high[3];
+        for (int a = 0; a < 3; ++a) {
+          low[a] = *rc::gen::inRange(-2, 2);
+          high[a] = *rc::gen::inRange(low[a] + 1, 3);
+        }
+        halfspaces.push_back(surface(name, box_surface({low[0], low[1], low[2]}, {high[0], high[1], high[2]})));
+      }
     const Scene3 scene = scene_of(cube(-2, 2), halfspaces);
-    const long cells = static_cast<long>(Arrangement3::build(scene, ArrangementLimits{0, 0, 0}).cells().size());
+    const Arrangement3 unlimited = Arrangement3::build(scene, ArrangementLimits{0, 0, 0});
+    const long cells = static_cast<long>(unlimited.cells().size());
     ArrangementLimits limits;
     limits.max_cells = cells;
     limits.max_side_entries = cells * static_cast<long>(halfspaces.size());
+    limits.max_triangles = static_cast<long>(unlimited.triangles().size());
     RC_ASSERT(static_cast<long>(Arrangement3::build(scene, limits).cells().size()) == cells);
   });
 }

@@ -4,11 +4,14 @@
 
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/exact_json.hpp>
+#include <hsx/io/files.hpp>
+#include <hsx/io/scene_json.hpp>
+
+#include "io/printable.hpp"
 
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace hsx {
@@ -57,19 +60,24 @@ Grid read_grid(const std::string& path) {
       sum += d * d;
     }
     grid.h = std::sqrt(sum);
+    if (!std::isfinite(grid.h) || grid.h <= 0)
+      root.fail("the grid cell's diagonal (their h, in double precision) is " + std::string(grid.h > 0 ? "infinite" : "zero") +
+                ": bbox_min and bbox_max are out of the range of doubles, in which the authors' program works");
     return grid;
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
 }
 
-/// A samples file: the token 3, then x y z triples, exact.
-std::vector<PointQ3> read_samples_file(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path + ": cannot open it: no such file");
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open the file");
-  std::vector<PointQ3> out;
+/// The most bytes a samples file may have, and the most samples all of a config's files may give together (as
+/// many as an hsx scene may have: SceneReadLimits::max_samples).
+constexpr std::size_t kMaxSamplesFileBytes = std::size_t(64) << 20;
+constexpr std::size_t kMaxSamples = SceneReadLimits{}.max_samples;
+
+/// A samples file: the token 3, then x y z triples, exact, into `out`; more than `room` points is an InputError
+/// (the files' samples together may not pass kMaxSamples).
+void read_samples_file(const std::string& path, std::size_t room, std::vector<PointQ3>* out) {
+  std::istringstream in(read_file(path, kMaxSamplesFileBytes));
   std::vector<Rational> pending;
   std::string line;
   long line_no = 0;
@@ -80,23 +88,26 @@ std::vector<PointQ3> read_samples_file(const std::string& path) {
     std::string w;
     while (words >> w) {
       if (!header) {
-        if (w != "3") throw InputError(path + ":" + std::to_string(line_no) + ": the first token must be 3, got \"" + w + "\"");
+        if (w != "3")
+          throw InputError(path + ":" + std::to_string(line_no) + ": the first token must be 3, got \"" + printable(w) + "\"");
         header = true;
         continue;
       }
       std::string why;
       auto q = parse_rational(w, &why);
-      if (!q) throw InputError(path + ":" + std::to_string(line_no) + ": coordinate \"" + w + "\": " + why);
+      if (!q) throw InputError(path + ":" + std::to_string(line_no) + ": coordinate \"" + printable(w) + "\": " + why);
       pending.push_back(std::move(*q));
       if (pending.size() == 3) {
-        out.push_back(PointQ3{pending[0], pending[1], pending[2]});
+        if (out->size() == room)
+          throw InputError(path + ":" + std::to_string(line_no) + ": more than " + std::to_string(kMaxSamples) +
+                           " samples in the config's samples files (the limit of a scene)");
+        out->push_back(PointQ3{pending[0], pending[1], pending[2]});
         pending.clear();
       }
     }
   }
   if (!header) throw InputError(path + ": empty samples file (expected 3, then x y z triples)");
   if (!pending.empty()) throw InputError(path + ":" + std::to_string(line_no) + ": the last point has fewer than 3 coordinates");
-  return out;
 }
 
 /// Their tessellation of a circle of radius `radius` (a torus: also `minor`; a sphere: its latitude bands).
@@ -171,10 +182,14 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
       far = std::max(far, std::sqrt(d2));
     }
     far *= 1.001;
-    p.point2 = PointQ3{Rational(apex[0] + far * std::cos(angle) * w[0] / norm),
-                       Rational(apex[1] + far * std::cos(angle) * w[1] / norm),
-                       Rational(apex[2] + far * std::cos(angle) * w[2] / norm)};
-    p.radius = Rational(far * std::sin(angle));
+    const double end[4] = {apex[0] + far * std::cos(angle) * w[0] / norm, apex[1] + far * std::cos(angle) * w[1] / norm,
+                           apex[2] + far * std::cos(angle) * w[2] / norm, far * std::sin(angle)};
+    for (double d : end)
+      if (!std::isfinite(d))
+        f.fail("the authors' cone mesh, computed in double precision, overflows: the apex, the axis_vector and the "
+               "grid's box must be within the range of doubles");
+    p.point2 = PointQ3{Rational(end[0]), Rational(end[1]), Rational(end[2])};
+    p.radius = Rational(end[3]);
     p.infinite = true;
     p.tessellation.frame = Tessellation3::Frame::Bsh;
     const double box = std::sqrt(Rational((domain.max.x - domain.min.x) * (domain.max.x - domain.min.x) +
@@ -232,10 +247,14 @@ Scene3 read_bsh_config(const json& doc, const std::string& directory, const std:
   } catch (const InputError& e) {
     throw InputError(config_name + ": " + e.what());
   }
-  scene.description = "BSH authors' scene " + config_name + " (h = " + std::to_string(h) + ")";
+  scene.description = "BSH authors' scene " + std::filesystem::path(config_name).filename().string() + " (h = " +
+                      std::to_string(h) + ")";
+  std::vector<PointQ3> points;
   for (std::size_t i = 0; i < sample_files.size(); ++i) {
     if (sample_files[i].empty()) continue;
-    for (PointQ3& p : read_samples_file((dir / sample_files[i]).string())) {
+    points.clear();
+    read_samples_file((dir / sample_files[i]).string(), kMaxSamples - scene.samples.size(), &points);
+    for (PointQ3& p : points) {
       Sample3 s;
       s.halfspace = static_cast<int>(i);
       s.snapped = true;

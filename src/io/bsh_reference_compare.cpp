@@ -121,19 +121,19 @@ class Mesh {
     return std::all_of(uses.begin(), uses.end(), [](const auto& e) { return e.second % 2 == 0; });
   }
 
-  /// A point far outside every vertex (attempt k gives another one).
+  /// A point far outside every vertex (attempt k gives another one): above the vertices' greatest coordinates,
+  /// found exactly (their doubles may overflow) and rounded up to integers.
   PointQ3 far_point(int k) const {
     if (!far_base_) {
-      const PointQ3* all[1];
-      Box b{};
-      for (int i = 0; i < 3; ++i) b.hi[i] = -INFINITY;
-      for (const auto& v : r_.vertices) {
-        all[0] = &v;
-        const Box one = box_of(all, 1);
-        for (int i = 0; i < 3; ++i) b.hi[i] = std::max(b.hi[i], one.hi[i]);
-      }
-      far_base_ = PointQ3{Rational(std::ceil(b.hi[0]) + 1), Rational(std::ceil(b.hi[1]) + 2),
-                          Rational(std::ceil(b.hi[2]) + 3)};
+      mpz_class top[3];
+      for (std::size_t v = 0; v < r_.vertices.size(); ++v)
+        for (int i = 0; i < 3; ++i) {
+          const Rational& c = i == 0 ? r_.vertices[v].x : (i == 1 ? r_.vertices[v].y : r_.vertices[v].z);
+          mpz_class up;
+          mpz_cdiv_q(up.get_mpz_t(), c.get_num_mpz_t(), c.get_den_mpz_t());
+          if (v == 0 || top[i] < up) top[i] = up;
+        }
+      far_base_ = PointQ3{Rational(top[0] + 1), Rational(top[1] + 2), Rational(top[2] + 3)};
     }
     return {far_base_->x + Rational(k + 1, 7), far_base_->y + Rational(k + 2, 11), far_base_->z + Rational(k + 3, 13)};
   }

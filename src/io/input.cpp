@@ -33,9 +33,11 @@ LoadedInput load_document(const nlohmann::json& doc, const std::string& source, 
     }
     return in;
   }
+  // The BSH authors' config names `source` in its messages itself (or its grid or samples file).
+  if (is_bsh_config(doc))
+    in.scene3 = read_bsh_config(doc, fs::path(source).parent_path().string(), source.empty() ? "config.json" : source);
   try {
-    if (is_bsh_config(doc)) {
-      in.scene3 = read_bsh_config(doc, fs::path(source).parent_path().string(), fs::path(source).filename().string());
+    if (in.scene3) {
       in.arranged3 = arrange(*in.scene3, limits);
     } else if (scene_dimension(doc) == 3) {
       in.scene3 = read_scene3(doc, fs::path(source).parent_path().string());

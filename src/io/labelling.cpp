@@ -5,6 +5,8 @@
 #include <hsx/io/files.hpp>
 #include <hsx/io/result_json.hpp>
 
+#include "io/printable.hpp"
+
 #include <cmath>
 
 namespace hsx {
@@ -35,23 +37,6 @@ std::vector<char> json_labels(const nlohmann::json& list, const std::string& fie
   std::vector<char> cells(list.size());
   for (std::size_t k = 0; k < list.size(); ++k) cells[k] = json_label(list[k], field + "[" + std::to_string(k) + "]");
   return cells;
-}
-
-/// At most 40 characters of `token`, bytes outside printable ASCII as \xNN.
-std::string printable(const std::string& token) {
-  static const char* hex = "0123456789abcdef";
-  std::string out;
-  for (std::size_t k = 0; k < token.size() && k < 40; ++k) {
-    const auto c = static_cast<unsigned char>(token[k]);
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return token.size() > 40 ? out + "..." : out;
 }
 
 /// 0/1 tokens separated by white space or commas; errors name the line.

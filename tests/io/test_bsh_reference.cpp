@@ -162,3 +162,16 @@ TEST_CASE("bsh reference: a cube maps onto our cube, areas and the defect", "[io
   CHECK(json["format"] == "hsx-bsh-reference/1");
   CHECK(json["theirs"]["boundary_area"]["decimal"] == "1.5");
 }
+
+TEST_CASE("bsh reference: a vertex beyond the range of doubles is compared exactly", "[io][bsh_reference]") {
+  // The box's corner (2, 2, 2) moved to (10^400, 2, 2): the point outside every vertex is found without doubles.
+  std::string text = kOnePatch;
+  const std::string corner = "2 2 2\n";
+  const std::size_t at = text.rfind(corner, text.find("face 24"));
+  REQUIRE(at != std::string::npos);
+  text.replace(at, corner.size(), "1e400 2 2\n");
+  const LoadedInput in = cube_scene();
+  const BshReferenceComparison c = compare_bsh_reference(read_bsh_reference(text, "r.grid"), *in.arranged3);
+  CHECK(c.their_blocks == 2);
+  CHECK(c.blocks_without_point == 0);
+}

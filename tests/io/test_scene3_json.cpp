@@ -192,6 +192,33 @@ TEST_CASE("the BSH authors' config: a folder of our own", "[scene3_json]") {
   CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("1_sample.xyz:2: coordinate \"zero\""));
   write("1_sample.xyz", "3\n0.5 0\n");
   CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("fewer than 3 coordinates"));
+  // Hostile samples files: bytes shown escaped, a size and a count bounded, a folder refused.
+  write("1_sample.xyz", std::string("3\n0 0 \x01\0x\n", 13));
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains(":2: coordinate \"\\x01\\x00x\""));
+  write("1_sample.xyz", "3\n0.5 0 0\n");
+  std::filesystem::resize_file(dir / "1_sample.xyz", std::uintmax_t(1) << 30);  // sparse: NUL bytes
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()),
+                    Contains("1_sample.xyz\" is too large (1073741824 bytes; the limit is 67108864)"));
+  std::string many = "3\n";
+  for (int k = 0; k <= 100000; ++k) many += "0.5 0 0\n";
+  write("1_sample.xyz", many);
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()),
+                    Contains("1_sample.xyz:100002: more than 100000 samples"));
+  std::filesystem::remove(dir / "1_sample.xyz");
+  std::filesystem::create_directory(dir / "1_sample.xyz");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("1_sample.xyz"));
+  std::filesystem::remove(dir / "1_sample.xyz");
+  // Numbers past the range of doubles, in which their program computes h and the cone's mesh.
+  write("cone.json", R"({"input": [{"type": "cone", "name": "K", "apex": ["1e400", 0, 0], "axis_vector": [0, 0, 1],
+      "apex_angle": 0.5}]})");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "cone.json").string()),
+                    Contains("cone.json: input[0]: the authors' cone mesh, computed in double precision, overflows"));
+  write("cone.json", R"({"input": [{"type": "cone", "name": "K", "apex": [0, 0, 0], "axis_vector": ["1e-400", 0, 0],
+      "apex_angle": 0.5}]})");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "cone.json").string()), Contains("overflows"));
+  write("grid_64.json", R"({"resolution": [64, 64, 64], "bbox_min": ["-1e400", -2, -2], "bbox_max": [2, 2, 2]})");
+  CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()),
+                    Contains("grid_64.json: document: the grid cell's diagonal (their h, in double precision) is infinite"));
   std::filesystem::remove(dir / "grid_64.json");
   CHECK_THROWS_WITH(read_bsh_config_file((dir / "config.json").string()), Contains("grid_64.json"));
   std::filesystem::remove_all(dir);

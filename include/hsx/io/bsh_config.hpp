@@ -55,7 +55,9 @@ struct BshReadOptions {
 bool is_bsh_config(const nlohmann::json& doc);
 
 /// Reads the authors' config DOM (from parse_exact_json); samples files and grid_64.json are looked up in
-/// `directory` (empty: the working directory); `config_name` is used in messages. Validated (validate_and_resolve).
+/// `directory` (empty: the working directory); `config_name` (its path) prefixes messages about the config, and
+/// its file name is in the description. Samples files may have 64 MiB and, together, 100,000 samples
+/// (SceneReadLimits::max_samples). Validated (validate_and_resolve).
 Scene3 read_bsh_config(const nlohmann::json& doc, const std::string& directory,
                        const std::string& config_name = "config.json", const BshReadOptions& options = {});
 

@@ -156,6 +156,7 @@ void run_arrange(const ArrangeOptions& options) {
   out.expect(options.obj_path, "--obj");
   out.expect(mtl_path, "--obj (its .mtl)");
   const LoadedInput in = load_input(options.scene_path, options.limits);
+  protect_inputs(out, in);
   if (!in.scene3 && !(options.ply_path.empty() && options.obj_path.empty()))
     throw InputError(std::string(options.ply_path.empty() ? "--obj" : "--ply") + ": needs a 3D scene");
   std::string json_text, svg_text, ply_text;

@@ -31,6 +31,7 @@ int run_check(const CheckCommandOptions& o) {
   OutputFiles out;
   out.expect(o.json_path, "--json");
   const LoadedInput in = load_input(o.input, o.arrangement);
+  protect_inputs(out, in);
   bsh::CheckOptions limits = o.limits;
   limits.compare.max_bits = o.precision_bits;
   const auto results = bsh::check_all(in.complex(), limits);

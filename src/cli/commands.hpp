@@ -11,6 +11,11 @@
 #include <memory>
 #include <string>
 
+namespace hsx {
+class OutputFiles;
+struct LoadedInput;
+}  // namespace hsx
+
 namespace hsx::cli {
 
 /// Makes `cmd` run `run(*options)`; a non-zero status (e.g. 3, a failed check) becomes the program's exit code
@@ -39,8 +44,13 @@ inline CLI::Validator output_path() {
 /// same existing regular file as the value of any other option or positional argument of the parsed subcommands
 /// (a scene, a shape, a mesh, a program to run). `app` is the parsed top-level app; main.cpp calls it once the
 /// command line is parsed, before any command runs. Paths an output derives from another (an .obj's .mtl, the files
-/// of --decomposed PREFIX) are not options and are not compared.
+/// of --decomposed PREFIX) and files a scene refers to are compared by the commands (protect_inputs).
 void refuse_outputs_over_inputs(CLI::App& app);
+
+/// Marks the files `in` was read from (its path, "INPUT", and LoadedInput::files: a scene's mesh files, a BSH
+/// config's grid and samples files) as inputs no output of `out` may replace (OutputFiles::protect): call it after
+/// load_input, so that outputs derived from an option (an .obj's .mtl) and files a scene refers to are compared too.
+void protect_inputs(OutputFiles& out, const LoadedInput& in);
 
 /// The same refusal for an input that is not an option's value (a file a command finds in a folder it was given):
 /// throws InputError when `output` (the value of `output_option`; "" or "-" never) is the same existing regular

@@ -113,6 +113,7 @@ int run_describe(const DescribeOptions& o) {
   out.expect(o.json_path, "--json");
   out.expect(o.svg_path, "--svg");
   const LoadedInput in = load_input(o.input, o.limits);
+  protect_inputs(out, in);
   const Solid solid = load_solid(in, o.solid, o.limits);
   const csg::Describability d = csg::describability(in.complex(), solid.cells);
   std::string svg_text;
@@ -280,6 +281,7 @@ int run_csg(const CsgOptions& o) {
   out.expect(o.svg_path, "--svg");
   out.expect(o.openscad_path, "--openscad");
   const LoadedInput in = load_input(o.input, o.limits);
+  protect_inputs(out, in);
   if (o.max_separators < 0) throw InputError("--max-separators: must be >= 0");
   if (!in.scene && !in.scene3 && o.separators)
     throw InputError("--separators: needs a scene (separating half-planes and planes are geometry), not a complex");
@@ -394,6 +396,8 @@ int run_convert(const ConvertOptions& o) {
   } else {
     if (o.input.empty()) throw InputError("give a SCENE with --csg/--shape/--mesh, or --csgnet PROGRAM");
     const LoadedInput in = load_input(o.input, o.limits);
+    protect_inputs(out, in);
+  protect_inputs(out, in);
     if (!in.scene && !in.scene3) throw InputError(o.input + ": convert needs a scene, not a complex");
     const std::vector<char> cells = load_solid(in, o.solid, o.limits).cells;
     if (in.scene3)
@@ -457,6 +461,7 @@ int run_samples(const SamplesOptions& o) {
   out.expect(o.json_path, "--json");
   out.expect(o.out_path, "--out");
   const LoadedInput in = load_input(o.input, o.limits);
+  protect_inputs(out, in);
   const Solid solid = load_solid(in, o.solid, o.limits);
   const bsh::Problem problem(in.complex());
   std::string why;

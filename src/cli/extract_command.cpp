@@ -252,6 +252,7 @@ void run_extract(const ExtractCommandOptions& o) {
   out.expect(o.ply_path, "--ply");
   out.expect(o.off_path, "--off");
   const LoadedInput in = load_input(o.input, o.arrangement);
+  protect_inputs(out, in);
   if (!in.scene && !in.scene3)
     for (const auto& [path, option] : {std::pair{o.svg_path, "--svg"}, {o.states_svg_path, "--states-svg"}})
       if (!path.empty())

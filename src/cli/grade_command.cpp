@@ -213,6 +213,7 @@ int run_grade(const GradeCommandOptions& o) {
   OutputFiles out;
   out.expect(o.json_path, "--json");
   const LoadedInput in = load_input(o.input, o.arrangement);
+  protect_inputs(out, in);
   std::optional<ExternalRun> run;
   const std::optional<ReadLabelling> theirs = their_labelling(o, in, run);
   if (!theirs) {  // their program gave no answer: that is its grade, not bad input

@@ -332,6 +332,7 @@ int run_planar(const NhtreeOptions& o, OutputFiles& files) {
   if (!o.reference_conf.empty() || !o.reference_face_patch.empty() || !o.reference_graph.empty())
     throw InputError("nhtree: --reference, --reference-face-patch and --reference-graph compare meshes (.obj)");
   const LoadedInput in = load_input(o.input, o.limits);
+  protect_inputs(files, in);
   if (in.arranged3) return run_solid3(o, in, files);
   if (!in.arranged)
     throw InputError(o.input + ": nhtree needs a scene, not a complex: corner angles need the geometry");
@@ -361,6 +362,12 @@ int run_nhtree(const NhtreeOptions& o) {
   if (o.max_group < 1) throw InputError("--max-group must be at least 1");
   OutputFiles files;
   expect_outputs(o, files);
+  // --decomposed's files are derived from its PREFIX: compare them with the inputs here (the options are compared
+  // when the command line is parsed)
+  for (const auto& [path, name] : {std::pair{o.input, "INPUT"}, {o.fea_path, "--fea"}, {o.reference_conf, "--reference"},
+                                   {o.reference_face_patch, "--reference-face-patch"},
+                                   {o.reference_graph, "--reference-graph"}})
+    files.protect(path, name);
   const int status = ends_with(o.input, ".obj") ? run_mesh(o, files) : run_planar(o, files);
   files.print("");  // the report went to standard output as it was made: the commit checks that it arrived
   files.commit();

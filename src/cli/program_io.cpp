@@ -1,6 +1,8 @@
 // The hsx program's own checks of its inputs and outputs as a whole (commands.hpp).
 #include "cli/commands.hpp"
 #include <hsx/geometry/scene.hpp>  // InputError
+#include <hsx/io/files.hpp>
+#include <hsx/io/input.hpp>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -90,6 +92,11 @@ void refuse_outputs_over_inputs(CLI::App& app) {
   for (const NamedFile& out : outputs)
     for (const NamedFile& in : inputs)
       if (out.device == in.device && out.inode == in.inode) refuse(out, in.option, in.path);
+}
+
+void protect_inputs(OutputFiles& out, const LoadedInput& in) {
+  out.protect(in.path, "INPUT");
+  for (const std::string& file : in.files) out.protect(file, "that INPUT refers to");
 }
 
 void refuse_output_over_input(const std::string& output_option, const std::string& output,

@@ -31,6 +31,7 @@ int run_reference(const ReferenceOptions& o) {
   out.expect(o.json_path, "--json");
   const BshReference reference = read_bsh_reference_file((folder / "reference-result.grid").string());
   const LoadedInput in = load_input((folder / "config.json").string(), o.limits);
+  protect_inputs(out, in);
   std::vector<char> ours;
   if (!o.shape_path.empty()) {
     const nlohmann::json document = read_exact_json_file(o.shape_path);

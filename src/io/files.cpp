@@ -271,7 +271,25 @@ struct OutputFiles::Impl {
   std::optional<std::string> report;  ///< for standard output (print)
   std::map<std::string, std::size_t> by_path;
   std::map<std::string, std::string> identities;  ///< identity -> option that expected it
+  std::map<std::string, std::pair<std::string, std::string>> inputs;  ///< identity -> (name, path), of protect
 };
+
+namespace {
+
+/// The identity (as Target::identity) of the existing regular file at `path`; "" for anything else.
+std::string regular_file_identity(const std::string& path) {
+  struct stat info {};
+  if (path.empty() || path == "-" || ::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return "";
+  return "ino:" + std::to_string(info.st_dev) + ":" + std::to_string(info.st_ino);
+}
+
+[[noreturn]] void refuse_over_input(const std::string& option, const std::string& path, const std::string& name,
+                                    const std::string& input) {
+  throw InputError("cannot write " + option + " \"" + path + "\": it is the same file as the input " + name + " \"" +
+                   input + "\"; hsx does not replace a file it reads (write elsewhere)");
+}
+
+}  // namespace
 
 OutputFiles::OutputFiles() : impl_(std::make_unique<Impl>()) {}
 
@@ -291,9 +309,22 @@ void OutputFiles::expect(const std::string& path, const std::string& option) {
     fail(option, path, "the same file is already the output of " +
                            (same != impl_->identities.end() ? same->second : std::string("another option")));
   }
+  if (const auto input = impl_->inputs.find(t.identity); input != impl_->inputs.end()) {
+    discard_temporary(t);
+    refuse_over_input(option, path, input->second.first, input->second.second);
+  }
   impl_->identities[t.identity] = option;
   impl_->by_path[path] = impl_->targets.size();
   impl_->targets.push_back(std::move(t));
+}
+
+void OutputFiles::protect(const std::string& path, const std::string& name) {
+  const std::string identity = regular_file_identity(path);
+  if (identity.empty()) return;
+  if (const auto out = impl_->identities.find(identity); out != impl_->identities.end())
+    for (const Target& t : impl_->targets)
+      if (t.identity == identity) refuse_over_input(t.option, t.path, name, path);
+  impl_->inputs.emplace(identity, std::make_pair(name, path));
 }
 
 void OutputFiles::put(const std::string& path, std::string content) {

@@ -19,6 +19,17 @@ PlanarPieces LoadedInput::pieces() const {
 
 namespace {
 
+/// The files a BSH config `doc` in `folder` names: its grid_64.json and its samples files.
+std::vector<std::string> bsh_config_files(const nlohmann::json& doc, const fs::path& folder) {
+  std::vector<std::string> files{(folder / "grid_64.json").string()};
+  const nlohmann::json& input = doc.at("input");
+  if (input.is_array())
+    for (const nlohmann::json& entry : input)
+      if (entry.is_object() && entry.contains("samples") && entry.at("samples").is_string())
+        files.push_back((folder / entry.at("samples").get<std::string>()).string());
+  return files;
+}
+
 /// `doc` read from `source` (a path, or a name for text; empty: errors carry no prefix).
 LoadedInput load_document(const nlohmann::json& doc, const std::string& source, const ArrangementLimits& limits) {
   LoadedInput in;
@@ -34,13 +45,17 @@ LoadedInput load_document(const nlohmann::json& doc, const std::string& source, 
     return in;
   }
   // The BSH authors' config names `source` in its messages itself (or its grid or samples file).
-  if (is_bsh_config(doc))
+  if (is_bsh_config(doc)) {
     in.scene3 = read_bsh_config(doc, fs::path(source).parent_path().string(), source.empty() ? "config.json" : source);
+    in.files = bsh_config_files(doc, fs::path(source).parent_path());
+  }
   try {
     if (in.scene3) {
       in.arranged3 = arrange(*in.scene3, limits);
     } else if (scene_dimension(doc) == 3) {
       in.scene3 = read_scene3(doc, fs::path(source).parent_path().string());
+      for (const Halfspace3& h : in.scene3->halfspaces)
+        if (h.kind == HalfspaceKind3::Mesh) in.files.push_back(h.origin);  // the mesh file, as opened
       in.arranged3 = arrange(*in.scene3, limits);
     } else {
       in.scene = read_scene2(doc);

@@ -196,6 +196,31 @@ TEST_CASE("files: a run's outputs are written all or none", "[files]") {
   CHECK(dir.entries() == std::vector<std::string>{"old.json"});
 }
 
+TEST_CASE("files: a protected input is never an output, whichever comes first", "[files]") {
+  TempDir dir;
+  spit(dir / "mesh.obj", "v");
+  ::symlink((dir / "mesh.obj").c_str(), (dir / "link.obj").c_str());
+  {
+    OutputFiles out;
+    out.protect(dir / "mesh.obj", "the mesh");
+    out.protect(dir / "missing.obj", "nothing");  // not a file: ignored
+    out.protect("-", "standard input");           // ignored
+    CHECK_THROWS_AS(out.expect(dir / "link.obj", "--obj"), InputError);
+    CHECK_THROWS_WITH(out.expect(dir / "mesh.obj", "--obj"),
+                      Catch::Contains("cannot write --obj \"" + (dir / "mesh.obj") +
+                                      "\": it is the same file as the input the mesh \"" + (dir / "mesh.obj") + "\""));
+    out.expect(dir / "missing.obj", "--json");
+    out.expect(dir / "other.obj", "--svg");
+  }
+  {
+    OutputFiles out;
+    out.expect(dir / "link.obj", "--obj (its .mtl)");
+    CHECK_THROWS_WITH(out.protect(dir / "mesh.obj", "INPUT"), Catch::Contains("cannot write --obj (its .mtl)"));
+  }
+  CHECK(dir.entries() == std::vector<std::string>{"link.obj", "mesh.obj"});
+  CHECK(slurp(dir / "mesh.obj") == "v");
+}
+
 namespace {
 
 /// Standard output's stand-in while a test runs: keeps what is written, and what `watched` held at the first write.

@@ -61,6 +61,12 @@ class OutputFiles {
   /// for: ignored (here and by put). A path expected twice (also through another spelling or a link) is refused.
   /// Throws OutputError.
   void expect(const std::string& path, const std::string& option);
+  /// Marks `path` as an input of the run, one that no output may replace: an expected output (before or after this
+  /// call) that is the same existing regular file (through any spelling, hard or symbolic link) is refused with an
+  /// InputError naming both, `name` naming the input ("INPUT", "the mesh file of halfspace \"A\""). For inputs
+  /// that are not the command line's own options (those are compared when it is parsed): files a scene refers to,
+  /// and outputs derived from another (an .obj's .mtl). A path that is not an existing regular file is ignored.
+  void protect(const std::string& path, const std::string& name);
   /// The content for an expected path (std::logic_error when it was not expected: a bug).
   void put(const std::string& path, std::string content);
   /// A report for standard output (a command's summary), appended to what was given before. It is written by

@@ -11,6 +11,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace hsx {
 
@@ -21,6 +22,9 @@ struct LoadedInput {
   std::optional<Scene3> scene3;             ///< set for 3D scene input
   std::optional<Arranged3> arranged3;       ///< set for 3D scene input
   std::optional<ComplexDocument> document;  ///< set for complex input
+  /// The files it was read from besides `path`, as opened: a 3D scene's mesh files; a BSH config's grid_64.json and
+  /// samples files. (A run must not replace them: OutputFiles::protect.)
+  std::vector<std::string> files;
 
   const Complex& complex() const {
     return arranged ? arranged->complex : arranged3 ? arranged3->complex : document->complex;

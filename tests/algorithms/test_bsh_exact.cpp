@@ -13,6 +13,7 @@
 #include <rapidcheck/catch.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -287,5 +288,42 @@ TEST_CASE("exact: hsx check's Prop. 5.2 row uses exact as the oracle when brute 
     REQUIRE(row != results.end());
     CHECK(row->name.find("exact") != std::string::npos);
     CHECK(row->status == CheckResult::Pass);
+  }
+}
+
+// Domains and disks beyond the largest double (1e400 is within the input limits): the exact search's integer
+// bound rounded measures of enclosure [DBL_MAX, inf] to garbage integers (a half-plane in a domain of +-1e400
+// crashed with SIGSEGV; four disks of radius 1e399 ended with "the integer max flow does not match its cut").
+// Now the enclosures are scaled by one power of two: the same optimum as brute force, proven, with a finite bound.
+TEST_CASE("exact: measures beyond the largest double get brute force's optimum, proven", "[bsh][exact][regression]") {
+  const std::string domain = R"("domain":{"min":["-1e400","-1e400"],"max":["1e400","1e400"]},)";
+  const std::vector<std::string> scenes = {
+      R"({"format":"hsx-scene/1","dimension":2,)" + domain +
+          R"("halfspaces":[{"name":"A","kind":"halfplane","normal":[0,1],"offset":0}],"samples":[{"on":"A","at":[0,0]}]})",
+      R"({"format":"hsx-scene/1","dimension":2,)" + domain +
+          R"("halfspaces":[{"name":"A","kind":"disk","center":[0,0],"radius":"1e399"},)"
+          R"({"name":"B","kind":"disk","center":["1e-400",0],"radius":"1e399"},)"
+          R"({"name":"C","kind":"disk","center":[0,"1e-400"],"radius":"1e399"},)"
+          R"({"name":"D","kind":"halfplane","normal":["1e-400","1"],"offset":"1e-400"}],)"
+          R"("samples":[{"on":"A","near":[0,"1e399"]},{"on":"D","near":[1,1]}]})",
+      R"({"format":"hsx-scene/1","dimension":2,)" + domain +
+          R"("halfspaces":[{"name":"A","kind":"disk","center":[0,0],"radius":"1e399"},)"
+          R"({"name":"B","kind":"disk","center":[1,0],"radius":"1e399"}],"samples":[{"on":"A","near":[0,"1e399"]}]})"};
+  for (const std::string& text : scenes) {
+    INFO(text);
+    const Arranged2 arranged = arrange(read_scene_text(text));
+    const Problem problem(arranged.complex);
+    CHECK(problem.enclosure_scale() > 0);
+    const BruteForceResult bf = brute_force(problem, true);
+    REQUIRE(bf.certified);
+    const ExtractResult r = exact(problem);
+    CHECK(r.optimal);
+    CHECK(compare(r.energy, bf.energy) == Order::Equal);
+    CHECK(contains(bf.optimal, r.labelling));
+    CHECK(static_cast<std::size_t>(r.ties.count) == bf.optimal.size());
+    // The reported lower bound is the optimum's, rounded down to a double (the largest one beyond it).
+    CHECK(std::isfinite(r.stats.lower_bound.measure));
+    CHECK(r.stats.lower_bound.missing_samples == bf.energy.missing_samples);
+    CHECK(r.stats.lower_bound.measure <= bf.energy.measure().enclose(64).hi_double());
   }
 }

@@ -15,6 +15,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <optional>
 #include <set>
@@ -183,19 +184,19 @@ void check_all_methods(const Problem& problem, const Labelling& expected, long m
 // Two overlapping disks A (h0) and B (h1): c0 outside both (outer), c1 = A \ B, c2 = A ∩ B, c3 = B \ A. Four
 // patches of length 1 or 2: p0 = A's arc outside B (c1|c0, 2), p1 = B's arc inside A (c2|c1, 1), p2 = A's arc
 // inside B (c2|c3, 1), p3 = B's arc outside A (c3|c0, 2). Samples on p1 and p2. Only c2 inside is optimal:
-// b = {p1, p2}, energy (0 missing, 2).
+// b = {p1, p2}, energy (0 missing, 2). `unit` multiplies every length (energy (0, 2 unit)).
 struct Fig8 {
   HandComplex h{{"A", "B"}};
   int c0, c1, c2, c3, p0, p1, p2, p3, j0, j1;
-  Fig8() {
+  explicit Fig8(const Rational& unit = R(1)) {
     c0 = h.cell({0, 0}, true);
     c1 = h.cell({1, 0});
     c2 = h.cell({1, 1});
     c3 = h.cell({0, 1});
-    p0 = h.patch(0, c1, c0, M(2));
-    p1 = h.patch(1, c2, c1, M(1));
-    p2 = h.patch(0, c2, c3, M(1));
-    p3 = h.patch(1, c3, c0, M(2));
+    p0 = h.patch(0, c1, c0, M(2) * unit);
+    p1 = h.patch(1, c2, c1, M(1) * unit);
+    p2 = h.patch(0, c2, c3, M(1) * unit);
+    p3 = h.patch(1, c3, c0, M(2) * unit);
     j0 = h.junction({p0, p1, p2, p3});
     j1 = h.junction({p0, p1, p2, p3});
     h.sample(p1);
@@ -1151,6 +1152,57 @@ int cell_with_sides(const Complex& c, const std::vector<char>& inside) {
   return -1;
 }
 }  // namespace
+
+// Lengths beyond the largest double (a disk of radius 1e399 is within the input limits): their enclosures were
+// [DBL_MAX, inf], so the double flow was infinite, its warm-start decomposition made inf - inf = NaN flows and
+// looped for ever (hsx extract, hsx check and hsx convert hung). Now the enclosures are scaled by one power of two
+// and the cut is the one of Fig. 8, certified, both ways. `stop` counts the paths: it ends a loop instead of
+// hanging the test.
+TEST_CASE("bsh unit: Fig. 8 with lengths of 10^400 - the same certified cut, finite enclosures, no endless warm start",
+          "[bsh][unit][fig8][regression]") {
+  const Rational unit = make_rational(Integer("1" + std::string(400, '0')), Integer(1));
+  Fig8 f(unit);
+  const Complex& c = f.h.done();
+  const Problem problem(c);
+  CHECK(problem.enclosure_scale() > 0);
+  for (const auto& [lo, hi] : problem.support_enclosures()) {
+    CHECK(std::isfinite(lo));
+    CHECK(std::isfinite(hi));
+    CHECK(0 < lo);
+    CHECK(lo <= hi);
+    CHECK(hi <= std::ldexp(1.0, 512));
+  }
+  // The scale keeps the enclosures' meaning: 2^scale [lo, hi] holds the measure (checked at 64 bits).
+  const auto [lo, hi] = problem.scaled_enclosure(M(2) * unit);
+  CHECK(lo > 1);
+  CHECK(hi < 4 * std::ldexp(1.0, 512));
+  for (const bool warm : {true, false}) {
+    INFO("warm start " << warm);
+    long asked = 0;
+    const CutResult cut = graph_cut(problem, CutConstraints{{}, {}, warm}, [&] { return ++asked > 100000; });
+    REQUIRE_FALSE(cut.stopped);
+    INFO("graph cut " << text(cut.labelling) << " note " << cut.certificate_note);
+    CHECK(cut.labelling == cells_in(4, {f.c2}));
+    check_energy(cut.energy, 0, M(2) * unit);
+    CHECK(cut.certified);
+  }
+  // Forced labels and removed supports (the searches' cuts): the exhaustive oracle's optimum.
+  for (const CutConstraints& constraints :
+       {CutConstraints{{}, {-1, 1, -1, -1}}, CutConstraints{{}, {-1, -1, -1, 1}}, CutConstraints{{0, 1, 0, 0}, {}}}) {
+    long asked = 0;
+    const CutResult cut = graph_cut(problem, constraints, [&] { return ++asked > 100000; });
+    REQUIRE_FALSE(cut.stopped);
+    const Exhaustive oracle = exhaustive(problem, constraints);
+    REQUIRE(oracle.energy);
+    CHECK(cut.certified);
+    CHECK(compare(cut.energy, *oracle.energy) == Order::Equal);
+  }
+  ExtractOptions o;
+  o.method = Method::BestFirst;
+  const ExtractResult r = extract(problem, o);
+  CHECK(r.optimal);
+  CHECK(r.labelling == cells_in(4, {f.c2}));
+}
 
 TEST_CASE("bsh unit: three concurrent lines - orientation-preserving, non-manifold, and Prop. 5.1 fails",
           "[bsh][unit][manifold][prop51][degenerate]") {

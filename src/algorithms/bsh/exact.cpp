@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <set>
@@ -133,7 +134,8 @@ class FastBound {
   /// Missing samples of the cut's own labelling: exactly floor(V / M), since V is its rounded energy.
   long missing_samples(long long value) const { return static_cast<long>(value / sample_weight_); }
 
-  /// The lower bound that a cut value proves (floor(V / M), (V mod M) * 2^-scale).
+  /// The lower bound that a cut value proves (floor(V / M), (V mod M) * 2^-scale), its measure in the problem's
+  /// enclosure scale (times 2^-Problem::enclosure_scale(), as the rounded capacities are).
   EnergyBound decode(long long value) const {
     return {static_cast<long>(value / sample_weight_), std::ldexp(static_cast<double>(value % sample_weight_), -scale_bits_)};
   }
@@ -156,6 +158,8 @@ class FastBound {
     while ((1LL << sample_bits) < problem.total_samples() + 3) ++sample_bits;
     const int budget = std::min(50, 60 - sample_bits);
     int exponent = 0;
+    if (!std::isfinite(total_hi))  // Problem::support_enclosures are at most 2^512 each
+      throw std::logic_error("exact: the support enclosures' sum is not finite");
     std::frexp(total_hi, &exponent);  // total_hi < 2^exponent
     scale_bits_ = budget - exponent;
     long long sum = 0;
@@ -409,7 +413,9 @@ class ExactSearch {
   // The incumbent and its ties.
   Labelling incumbent_;
   Energy incumbent_energy_;
-  double incumbent_lo_ = 0, incumbent_hi_ = 0;  // rigorous double enclosure of its measure
+  // Rigorous double enclosure of its measure times 2^-Problem::enclosure_scale(), the scale of the nodes' bounds
+  // (and of stats_.max_gap while the search runs); reported bounds are unscaled by `reported`.
+  double incumbent_lo_ = 0, incumbent_hi_ = 0;
   std::set<Labelling> optimal_;                 // labellings with the incumbent's energy (up to max_ties)
   bool unseparated_ = false;                    // a tie was only "not separated" (Order::Tie)
 
@@ -642,9 +648,7 @@ class ExactSearch {
   void set_incumbent(const Labelling& labelling, const std::optional<Energy>& e) {
     incumbent_ = labelling;
     incumbent_energy_ = e ? *e : energy(problem_, labelling);
-    const Interval enclosure = incumbent_energy_.measure().enclose(64);
-    incumbent_lo_ = enclosure.lo_double();
-    incumbent_hi_ = enclosure.hi_double();
+    std::tie(incumbent_lo_, incumbent_hi_) = problem_.scaled_enclosure(incumbent_energy_.measure());
     optimal_ = {labelling};
     unseparated_ = false;
   }
@@ -671,6 +675,14 @@ class ExactSearch {
     return less(top, incumbent_bound()) ? top : incumbent_bound();
   }
 
+  /// `bound` (in the enclosure scale) in the measure's own units: times 2^enclosure_scale(), exact unless it
+  /// passes the largest double, where a lower bound (`lower`) stays the largest double and a gap becomes inf.
+  EnergyBound reported(const EnergyBound& bound, bool lower) const {
+    EnergyBound out{bound.missing_samples, std::ldexp(bound.measure, static_cast<int>(problem_.enclosure_scale()))};
+    if (lower && std::isinf(out.measure)) out.measure = std::numeric_limits<double>::max();
+    return out;
+  }
+
   EnergyBound gap_to(const EnergyBound& bound) const {
     return {incumbent_energy_.missing_samples - bound.missing_samples, incumbent_hi_ - bound.measure};
   }
@@ -690,7 +702,7 @@ class ExactSearch {
       p.queue_size = static_cast<long>(queue_.size());
       p.graph_cuts = stats_.graph_cuts;
       p.best_energy = incumbent_energy_;
-      p.lower_bound = lower_bound();
+      p.lower_bound = reported(lower_bound(), true);
       options_.progress(p);
     }
     if (options_.max_nodes > 0 && stats_.nodes >= options_.max_nodes) stopped_by_ = "max-nodes";
@@ -717,8 +729,9 @@ class ExactSearch {
     if (result.ties.capped) result.ties.stopped_by = "max-ties";
     for (const Labelling& l : optimal_)
       if (l != incumbent_) result.tied.push_back(l);
-    stats_.lower_bound = lower_bound();
-    stats_.gap = stopped_by_.empty() ? EnergyBound{} : gap_to(stats_.lower_bound);
+    stats_.gap = stopped_by_.empty() ? EnergyBound{} : reported(gap_to(lower_bound()), false);
+    stats_.lower_bound = reported(lower_bound(), true);
+    stats_.max_gap = reported(stats_.max_gap, false);
     stats_.states_expanded = stats_.nodes;
     stats_.states_created = stats_.nodes_created;
     stats_.seconds = std::chrono::duration<double>(Clock::now() - start_).count();

@@ -363,7 +363,10 @@ bool infeasible(const Network& net) {
 // Both ways of certifying a cut start from a flow found in doubles: Boost's Boykov-Kolmogorov on the capacities
 // rounded to one scalar each (samples * lambda + measure, lambda above the measure of every cut, so the scalar
 // order of cuts is the lexicographic one up to rounding). The doubles only guide: whatever they are, the answer
-// is checked exactly.
+// is checked exactly. They are finite: the measures enter as Problem::support_enclosures, which are scaled by one
+// power of two (Problem::enclosure_scale) to at most 2^512 each, so measures beyond the largest double (a disk of
+// radius 1e399) neither overflow nor make inf - inf = NaN flows; graph_cut skips the guide should a capacity
+// still not be finite.
 
 
 /// An arc's capacity in the double flow: its samples times lambda_of(problem), plus the midpoints of its supports'
@@ -943,7 +946,9 @@ void augment_exactly(ExactNetwork& net, const std::vector<int>& path) {
 
 /// Decomposes `flow` (per arc, in doubles) into s-t paths, depth first with a current arc per vertex (an arc whose
 /// remaining flow is negligible, or that closes a cycle, is passed over for good), and augments the exact flow
-/// along each. Asks `stop` before each path; false when stopped.
+/// along each. Asks `stop` before each path; false when stopped. It ends whatever the doubles: every path takes
+/// its smallest flow off each of its arcs, so at least one reaches 0 (or NaN, from an infinite flow) and is passed
+/// over, and a NaN flow counts as negligible.
 bool warm_start(ExactNetwork& net, std::vector<double> flow, int s, int t, const std::function<bool()>& stop) {
   const int n = static_cast<int>(boost::num_vertices(net.g));
   double largest = 0;
@@ -952,7 +957,7 @@ bool warm_start(ExactNetwork& net, std::vector<double> flow, int s, int t, const
   const double negligible = largest * 1e-12;
   std::vector<std::vector<int>> out(n);
   for (std::size_t i = 0; i < net.arcs.size(); ++i)
-    if (flow[i] > negligible) out[net.arcs[i].from].push_back(static_cast<int>(i));
+    if (flow[i] > negligible) out[net.arcs[i].from].push_back(static_cast<int>(i));  // false for NaN
   std::vector<std::size_t> current(n, 0);
   std::vector<char> on_path(n, 0);
   for (;;) {
@@ -962,7 +967,7 @@ bool warm_start(ExactNetwork& net, std::vector<double> flow, int s, int t, const
     on_path[s] = 1;
     while (v != t) {
       auto& k = current[v];
-      while (k < out[v].size() && (flow[out[v][k]] <= negligible || on_path[net.arcs[out[v][k]].to])) ++k;
+      while (k < out[v].size() && (!(flow[out[v][k]] > negligible) || on_path[net.arcs[out[v][k]].to])) ++k;
       if (k < out[v].size()) {
         path.push_back(out[v][k]);
         v = net.arcs[out[v][k]].to;
@@ -1130,7 +1135,9 @@ CutResult graph_cut(const Problem& problem, const CutConstraints& constraints, c
     return infeasible;
   }
   if (stop && stop()) return stopped_result(n);
-  if (!constraints.warm_start) return exact_max_flow_cut(problem, net, nullptr, stop);
+  const bool finite = std::all_of(net.arcs.begin(), net.arcs.end(),
+                                  [](const Arc& a) { return a.infinite || std::isfinite(double_capacity(a)); });
+  if (!constraints.warm_start || !finite) return exact_max_flow_cut(problem, net, nullptr, stop);
   double_flow(net, network, doubles);
   warm.assign(doubles.flow.begin(), doubles.flow.end());
   if (auto certified = BasicFlow(problem, net, network, doubles).certify()) return *std::move(certified);

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <optional>
 #include <set>
+#include <stdexcept>
 
 namespace hsx::bsh {
 
@@ -70,7 +71,24 @@ std::optional<int> support_difference_sign(const std::shared_ptr<const Problem::
   });
 }
 
+/// [lo, hi] of `enclosure` times 2^-scale as doubles, rounded outward (mpfr_mul_2si is exact unless it
+/// underflows; an end above the largest double becomes +-inf, below it is kept).
+std::pair<double, double> scaled_doubles(const Interval& enclosure, long scale) {
+  mpfr_t x;
+  mpfr_init2(x, enclosure.precision());
+  mpfr_mul_2si(x, enclosure.lo(), -scale, MPFR_RNDD);
+  const double lo = mpfr_get_d(x, MPFR_RNDD);
+  mpfr_mul_2si(x, enclosure.hi(), -scale, MPFR_RNDU);
+  const double hi = mpfr_get_d(x, MPFR_RNDU);
+  mpfr_clear(x);
+  return {lo, hi};
+}
+
 }  // namespace
+
+std::pair<double, double> Problem::scaled_enclosure(const Measure& measure) const {
+  return scaled_doubles(measure.enclose(64), atoms_->scale);
+}
 
 Order compare(const Energy& a, const Energy& b, const CompareOptions& options) {
   if (a.missing_samples != b.missing_samples)
@@ -103,11 +121,20 @@ Problem::Problem(const Complex& complex) : complex_(complex) {
     if (sampled_b) term.allow_a_inside = false;
     if (sampled_a) term.allow_b_inside = false;
     term.measure = first.measure;
-    const Interval enclosure = term.measure.enclose(64);
     atoms->measures.push_back(term.measure);
-    atoms->enclosures.emplace_back(enclosure.lo_double(), enclosure.hi_double());
     total_samples_ += term.samples;
   }
+  // The enclosures at 64 bits, then the common scale that brings the largest to at most 2^512, then the doubles.
+  std::vector<Interval> enclosures;
+  enclosures.reserve(atoms->measures.size());
+  for (const Measure& m : atoms->measures) {
+    enclosures.push_back(m.enclose(64));
+    const mpfr_t& hi = enclosures.back().hi();
+    if (mpfr_inf_p(hi) || mpfr_nan_p(hi))
+      throw std::logic_error("problem: a support's measure has no finite enclosure");
+    if (mpfr_regular_p(hi)) atoms->scale = std::max(atoms->scale, static_cast<long>(mpfr_get_exp(hi)) - 512);
+  }
+  for (const Interval& e : enclosures) atoms->enclosures.push_back(scaled_doubles(e, atoms->scale));
   atoms_ = std::move(atoms);
   support_neighbours_.resize(supports_.size());
   for (const Junction& j : complex.junctions) {

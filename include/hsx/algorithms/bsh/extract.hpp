@@ -24,7 +24,8 @@ const char* to_string(Method m);
 std::optional<Method> method_from_string(const std::string& name);
 
 /// A proven lower bound on an energy, lexicographic like Energy: no labelling of the region it bounds has fewer
-/// missing samples, and those with exactly `missing_samples` have a measure >= `measure` (a double rounded down).
+/// missing samples, and those with exactly `missing_samples` have a measure >= `measure` (a double rounded down:
+/// the largest double for measures beyond it). A gap (SearchStats) is a difference of such values, inf beyond it.
 struct EnergyBound {
   long missing_samples = 0;
   double measure = 0;

@@ -85,13 +85,26 @@ class Problem {
   /// ends each and four distinct cells around it (a tangency has three). Junctions whose patches all separate
   /// outer cells are ignored: no boundary can use them. Ascending.
   const std::vector<int>& non_generic_junctions() const { return non_generic_junctions_; }
-  /// Rigorous double enclosure [lo, hi] of each support's measure (fast comparisons before exact ones).
+  /// Rigorous double enclosure [lo, hi] of each support's measure times 2^-enclosure_scale() (fast comparisons
+  /// before exact ones, and the weights of the double-precision searches that the exact ones then verify). Every
+  /// end is finite and at most 2^512, so sums of them times any sample count stay finite: never inf or NaN.
   const std::vector<std::pair<double, double>>& support_enclosures() const { return atoms_->enclosures; }
+  /// The common scale S >= 0 of support_enclosures(): 0 unless a support's measure passes 2^512 (measures beyond
+  /// the largest double, such as the lengths of a circle of radius 1e399, are within the input limits), then the
+  /// smallest S that brings every enclosure to at most 2^512. Multiplying by 2^-S is exact unless it underflows,
+  /// where the ends round outward, so comparisons of sums of enclosures keep their meaning (signs are
+  /// scale-free); a double compared with them must be scaled likewise (scaled_enclosure).
+  long enclosure_scale() const { return atoms_->scale; }
+  /// Rigorous double enclosure [lo, hi] of `measure` times 2^-enclosure_scale() (finite unless `measure` is far
+  /// above every support's measure together), e.g. of an energy's measure to compare with sums of
+  /// support_enclosures().
+  std::pair<double, double> scaled_enclosure(const Measure& measure) const;
 
   /// The supports' measures and enclosures, shared with the energies made from this problem.
   struct SupportAtoms {
     std::vector<Measure> measures;
-    std::vector<std::pair<double, double>> enclosures;
+    std::vector<std::pair<double, double>> enclosures;  ///< of measures[g] * 2^-scale
+    long scale = 0;                                     ///< Problem::enclosure_scale
   };
   const std::shared_ptr<const SupportAtoms>& support_atoms() const { return atoms_; }
 

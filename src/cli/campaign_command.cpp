@@ -5,6 +5,7 @@
 #include "cli/distribute.hpp"
 #include <hsx/algorithms/campaign/campaign.hpp>
 #include <hsx/algorithms/campaign/minimise.hpp>
+#include <hsx/algorithms/csg/random_solid3.hpp>
 #include <hsx/io/campaign_files.hpp>
 #include <hsx/io/scene_json.hpp>
 
@@ -54,7 +55,7 @@ constexpr std::uint64_t kMaxCount = 100'000'000;
 constexpr int kCheckFailed = 3;
 
 /// "A..B" or "A" (A = B), with lo <= A <= B.
-std::pair<int, int> parse_range(const std::string& text, const std::string& option, int lo) {
+std::pair<int, int> parse_range(const std::string& text, const std::string& option, int lo, int hi = 1000000) {
   const auto number = [&](const std::string& s) {
     std::size_t used = 0;
     long v = 0;
@@ -63,8 +64,9 @@ std::pair<int, int> parse_range(const std::string& text, const std::string& opti
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used == 0 || used != s.size() || v < lo || v > 1000000)
-      throw InputError(option + ": \"" + text + "\" is not a range A..B of whole numbers >= " + std::to_string(lo));
+    if (used == 0 || used != s.size() || v < lo || v > hi)
+      throw InputError(option + ": \"" + text + "\" is not a range A..B of whole numbers from " + std::to_string(lo) +
+                       " to " + std::to_string(hi));
     return static_cast<int>(v);
   };
   const std::size_t dots = text.find("..");
@@ -142,7 +144,7 @@ void parse_generator(const CampaignCommandOptions& o, campaign::CampaignSettings
   refuse_other_dimension(o, settings.dimension);
   if (settings.dimension == 3) {
     campaign::Scene3Settings& g = settings.scene3;
-    std::tie(g.solid.min_primitives, g.solid.max_primitives) = parse_range(o.primitives, "--primitives", 1);
+    std::tie(g.solid.min_primitives, g.solid.max_primitives) = parse_range(o.primitives, "--primitives", 1, csg::kMaxRandomPrimitives3);
     std::tie(g.min_degeneracies, g.max_degeneracies) = parse_range(o.degeneracies, "--degeneracies", 0);
     g.max_samples = settings.scene.max_samples;
     parse_weights(o.weights, g.degeneracy_weight,
@@ -483,7 +485,7 @@ void add_campaign_command(CLI::App& app) {
                   "with degeneracy patterns (algorithms/campaign/scene3.hpp); --degeneracies, "
                   "--degeneracy-weights (PlaneOnBoxFace, CoincidentFaces, ConcurrentPlanes), --samples and "
                   "--sample-policy apply to both");
-  cmd->add_option("--primitives", o->primitives, "3D: the number of primitives as A..B or N (default 2..4)");
+  cmd->add_option("--primitives", o->primitives, "3D: the number of primitives as A..B or N (default 2..4; at most 64)");
   cmd->add_option("--segments", o->settings.scene3.solid.segments,
                   "3D: segments per circle of spheres and cylinders, 6..64 (default 8)");
   cmd->add_flag("--hollow", o->settings.scene3.solid.hollow,

@@ -219,7 +219,9 @@ int run_survey3(const SurveyOptions& o) {
   if (o.keep_count < 0) throw InputError("--keep-count: must be >= 0");
   check_keep_directory(o.keep_dir);
   if (o.segments < 6 || o.segments > 64) throw InputError("--segments: 6 to 64");
-  if (o.max_primitives < 1) throw InputError("--max-primitives: at least 1");
+  if (o.max_primitives < 1 || o.max_primitives > csg::kMaxRandomPrimitives3)
+    throw InputError("--max-primitives: 1 to " + std::to_string(csg::kMaxRandomPrimitives3) + ", got " +
+                     std::to_string(o.max_primitives));
   Survey survey(o);
   SurveyTally csg_tally{"random3 csg", o.keep_count}, hollow_tally{"random3 hollow", o.keep_count};
   using Clock = std::chrono::steady_clock;
@@ -497,7 +499,7 @@ void add_nhsurvey_command(CLI::App& app) {
   cmd->add_option("--dimension", o->dimension, "2 (default) or 3: random 3D CSG solids (boxes, spheres, cylinders, "
                                                "planes), evaluated exactly on their 3D arrangements");
   cmd->add_option("--segments", o->segments, "3D: segments per circle of spheres and cylinders (default 8)");
-  cmd->add_option("--max-primitives", o->max_primitives, "3D: 2 to this many primitives per solid (default 4)");
+  cmd->add_option("--max-primitives", o->max_primitives, "3D: 2 to this many primitives per solid (default 4; at most 64)");
   cmd->add_flag("--random-polygons", o->random_polygons, "random boxes and triangles as polygon halfspaces");
   cmd->add_option("--methods", o->methods, "BSH methods for scenes: graphcut,best-first (default both)");
   cmd->add_option("--max-states", o->max_states, "best-first: stop after N expanded states (default 20000)");

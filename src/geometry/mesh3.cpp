@@ -42,7 +42,8 @@ constexpr mpfr_prec_t kMaxBits = mpfr_prec_t(1) << 20;
 std::ifstream open_regular_file(const std::string& path) {
   std::error_code ec;
   const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) fail(path, "cannot open it: no such file");
+  if (!std::filesystem::exists(status))  // the system's reason: no such file, a loop of symbolic links, ...
+    fail(path, "cannot open it: " + (ec ? ec.message() : std::string("no such file")));
   if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a file");
   if (!std::filesystem::is_regular_file(status)) fail(path, "not a regular file (a FIFO, device or socket)");
   std::ifstream in(path, std::ios::binary);
@@ -503,7 +504,10 @@ ObjMesh read_ply(std::istream& in, const std::string& source, const MeshReadLimi
         if (t.done()) fail_at(source, t.line(), "the file ends after " + std::to_string(f) + " faces");
         const long line = t.line();
         read_counted_face(t, mesh, source, nv);
-        skip_line(t, line);
+        if (e.properties.size() > 1)
+          skip_line(t, line);  // the face's further properties (colours, ...)
+        else if (!t.done() && t.lines[t.next] == line)
+          fail_at(source, line, "more values than the face element's one property (the list vertex_indices)");
       }
     } else {
       for (std::size_t k = 0; k < e.count; ++k) line_tokens();  // an element hsx does not use

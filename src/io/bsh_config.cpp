@@ -8,6 +8,7 @@
 #include <hsx/io/scene_json.hpp>
 
 #include "io/printable.hpp"
+#include "io/surface_triangles.hpp"
 
 #include <cmath>
 #include <cstdint>
@@ -237,9 +238,12 @@ Scene3 read_bsh_config(const json& doc, const std::string& directory, const std:
     JsonField input = root.at("input");
     const std::size_t n = input.size();
     if (n == 0) input.fail("no halfspace (at least one is needed)");
+    std::size_t triangles = 0;
     for (std::size_t i = 0; i < n; ++i) {
       JsonField f = input.at(i);
       Halfspace3 hs = read_entry(f, scene.domain, h);
+      triangles += hs.surface.triangles.size();
+      check_surface_triangles(triangles, options.max_surface_triangles, f);
       if (scene.find_halfspace(hs.name) >= 0) f.at("name").fail("duplicate name " + describe_json(json(hs.name)));
       sample_files.push_back(f.has("samples") ? f.at("samples").string() : std::string());
       scene.halfspaces.push_back(std::move(hs));

@@ -4,6 +4,7 @@
 #include <hsx/io/exact_json.hpp>
 #include <hsx/io/scene_json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace hsx {
@@ -45,15 +46,21 @@ LoadedInput load_document(const nlohmann::json& doc, const std::string& source, 
     return in;
   }
   // The BSH authors' config names `source` in its messages itself (or its grid or samples file).
+  const std::size_t max_surface_triangles = static_cast<std::size_t>(std::max<long>(0, limits.max_triangles));
   if (is_bsh_config(doc)) {
-    in.scene3 = read_bsh_config(doc, fs::path(source).parent_path().string(), source.empty() ? "config.json" : source);
+    BshReadOptions options;
+    options.max_surface_triangles = max_surface_triangles;
+    in.scene3 = read_bsh_config(doc, fs::path(source).parent_path().string(), source.empty() ? "config.json" : source,
+                                options);
     in.files = bsh_config_files(doc, fs::path(source).parent_path());
   }
   try {
     if (in.scene3) {
       in.arranged3 = arrange(*in.scene3, limits);
     } else if (scene_dimension(doc) == 3) {
-      in.scene3 = read_scene3(doc, fs::path(source).parent_path().string());
+      SceneReadLimits read_limits;
+      read_limits.max_surface_triangles = max_surface_triangles;
+      in.scene3 = read_scene3(doc, fs::path(source).parent_path().string(), read_limits);
       for (const Halfspace3& h : in.scene3->halfspaces)
         if (h.kind == HalfspaceKind3::Mesh) in.files.push_back(h.origin);  // the mesh file, as opened
       in.arranged3 = arrange(*in.scene3, limits);

@@ -1,6 +1,7 @@
 // The 3D part of hsx-scene/1: see scene_json.hpp and docs/scene-format.md.
 #include <hsx/geometry/tessellate3.hpp>
 #include <hsx/io/scene_json.hpp>
+#include "io/surface_triangles.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -275,9 +276,12 @@ Scene3 read_scene3(const json& doc, const std::string& base_directory, const Sce
     halfspaces.fail("too many halfspaces (" + std::to_string(n) + "; the limit is " +
                     std::to_string(limits.max_halfspaces) + ")");
   std::unordered_map<std::string, std::size_t> index;
+  std::size_t triangles = 0;
   for (std::size_t i = 0; i < n; ++i) {
     JsonField f = halfspaces.at(i);
     Halfspace3 h = read_halfspace3(f, domain, base_directory, limits);
+    triangles += h.surface.triangles.size();
+    check_surface_triangles(triangles, limits.max_surface_triangles, f);
     auto [it, fresh] = index.emplace(h.name, i);
     if (!fresh)
       f.at("name").fail("duplicate name " + quote_name(h.name) + " (also halfspaces[" + std::to_string(it->second) + "])");

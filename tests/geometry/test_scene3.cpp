@@ -485,6 +485,14 @@ TEST_CASE("OBJ, OFF and PLY of the same mesh give the same ObjMesh", "[scene3]")
     CHECK_THAT(ply_error("ply\nformat binary_little_endian 1.0\nend_header\n"), Contains("m.ply:2: only ASCII PLY"));
     CHECK_THAT(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n0\n"),
                Contains("needs properties x, y and z"));
+    // A face's values past its one property are an error; after further properties they are those properties'.
+    std::string extra = ply;
+    extra.replace(extra.rfind("3 1 2 3\n"), 8, "3 1 2 3 4\n");
+    CHECK_THAT(ply_error(extra), Contains("m.ply:18: more values than the face element's one property"));
+    std::string coloured = extra;
+    coloured.replace(coloured.find("end_header"), 10, "property uchar red\nend_header");
+    std::istringstream in(coloured);
+    CHECK(read_ply(in, "m.ply").faces == mp.faces);
   }
 }
 
@@ -589,6 +597,6 @@ TEST_CASE("the BSH authors' nine examples", "[.][bsh_examples]") {
     CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 0})"),
                Contains("input[0].radius: must be positive"));
     CHECK_THAT(refusal(R"({"type": "sphere", "name": "1", "center": [0, 0, 0], "radius": 1, "samples": "none.xyz"})"),
-               Contains("none.xyz: cannot open it"));
+               Contains("none.xyz\": No such file or directory"));
   }
 }

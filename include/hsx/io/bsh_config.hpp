@@ -49,6 +49,8 @@ namespace hsx {
 /// Options of the reader (the defaults are the authors' own settings).
 struct BshReadOptions {
   double h_scale = 1;  ///< h = their grid cell's diagonal * h_scale: 1/2 and 1/4 give finer tessellations (benchmarks)
+  /// All surfaces' triangles together, counted as each is tessellated (SceneReadLimits::max_surface_triangles).
+  std::size_t max_surface_triangles = 4'000'000;
 };
 
 /// True when `doc` is the authors' config: a JSON object with an "input" member (and no hsx "format").

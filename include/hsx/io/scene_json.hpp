@@ -30,6 +30,10 @@ struct SceneReadLimits {
   std::size_t max_polygon_vertices = 5000;  ///< also enforced by validate_and_resolve
   MeshReadLimits meshes;                    ///< 3D: every `mesh` file
   int max_segments = 4096;                  ///< 3D: segments per circle of a tessellation (at most kMaxSegments)
+  /// 3D: the triangles of all surfaces together (tessellations and meshes, before coincident ones are merged),
+  /// counted as each is read, so that many large surfaces are refused before all are in memory; 0: no limit.
+  /// load_input sets it to ArrangementLimits::max_triangles (--max-triangles).
+  std::size_t max_surface_triangles = 4'000'000;
 };
 
 /// Checks `format` ("hsx-scene/1") and `dimension` and returns the dimension (2 or 3). The entry point for

@@ -128,8 +128,9 @@ Arranged3 arrange_campaign_scene3(const Scene3& scene, const ArrangementLimits& 
 }
 
 void validate(const Scene3Settings& s) {
-  if (s.solid.min_primitives < 1 || s.solid.max_primitives < s.solid.min_primitives)
-    throw std::invalid_argument("primitives: need 1 <= A <= B");
+  if (s.solid.min_primitives < 1 || s.solid.max_primitives < s.solid.min_primitives ||
+      s.solid.max_primitives > csg::kMaxRandomPrimitives3)
+    throw std::invalid_argument("primitives: need 1 <= A <= B <= " + std::to_string(csg::kMaxRandomPrimitives3));
   if (s.solid.segments < 6 || s.solid.segments > 64) throw std::invalid_argument("segments: in [6, 64]");
   if (s.solid.max_draws < 1) throw std::invalid_argument("max draws: at least 1");
   if (s.min_degeneracies < 0 || s.max_degeneracies < s.min_degeneracies)

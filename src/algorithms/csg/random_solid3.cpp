@@ -124,8 +124,10 @@ class Drawer {
 RandomSolid3 random_solid3(const RandomSolid3Settings& settings, std::uint64_t seed, std::uint64_t index,
                            const ArrangementLimits& limits, int* drawn) {
   if (drawn) *drawn = 0;
-  if (settings.min_primitives < 1 || settings.max_primitives < settings.min_primitives)
-    throw std::invalid_argument("RandomSolid3Settings: need 1 <= min_primitives <= max_primitives");
+  if (settings.min_primitives < 1 || settings.max_primitives < settings.min_primitives ||
+      settings.max_primitives > kMaxRandomPrimitives3)
+    throw std::invalid_argument("RandomSolid3Settings: need 1 <= min_primitives <= max_primitives <= " +
+                                std::to_string(kMaxRandomPrimitives3));
   if (settings.segments < 6 || settings.segments > 64)
     throw std::invalid_argument("RandomSolid3Settings: segments must be in [6, 64]");
   if (settings.max_draws < 1) throw std::invalid_argument("RandomSolid3Settings: max_draws must be >= 1");

@@ -55,6 +55,10 @@ constexpr std::uint64_t kMaxCount = 100'000'000;
 constexpr int kCheckFailed = 3;
 
 /// "A..B" or "A" (A = B), with lo <= A <= B.
+/// The most threads --jobs may ask for (each holds up to 512 scenes' records in the window; a thousand of
+/// them is far more than any machine's cores).
+constexpr int kMaxCampaignJobs = 1024;
+
 std::pair<int, int> parse_range(const std::string& text, const std::string& option, int lo, int hi = 1000000) {
   const auto number = [&](const std::string& s) {
     std::size_t used = 0;
@@ -226,7 +230,7 @@ Kept decode_record(const std::string& text) {
 /// 0's sink (cli/distribute.hpp). A failed scene is minimised on the thread that receives the records, one at a
 /// time (failures are rare), on the rank that ran it; it depends only on the scene, so the bytes are the same for
 /// any number of jobs and processes. Returns how many threads ran the scenes here (campaign::run_scenes; under mpirun,
-/// on this rank).
+/// `jobs` less the threads this rank's system refused).
 int run_all(const campaign::CampaignSettings& settings, const std::vector<std::uint64_t>& todo, int jobs,
              const MpiRun* mpi, const std::optional<campaign::MinimiseOptions>& minimise,
              const std::function<void(Kept&&)>& sink) {
@@ -258,7 +262,9 @@ int run_all(const campaign::CampaignSettings& settings, const std::vector<std::u
         const int used = campaign::run_scenes(settings, mine, jobs, [&](campaign::SceneRecord&& r) {
           out(encode_record(keep(std::move(r))));
         });
-        if (mine.size() > 1) threads = std::min(threads, used);  // one scene runs on the calling thread anyway
+        // one scene runs on the calling thread anyway; fewer scenes than jobs start fewer threads, not refused ones
+        const int wanted = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(jobs), mine.size()));
+        if (mine.size() > 1) threads = std::min(threads, jobs - (wanted - used));
       },
       [&](std::string&& message) { sink(decode_record(message)); });
   return threads;
@@ -292,7 +298,8 @@ int run_campaign(const CampaignCommandOptions& o) {
   if (o.count > kMaxCount)
     throw InputError("--count: at most " + std::to_string(kMaxCount) + " scenes per run (run larger campaigns in parts "
                      "with --start)");
-  if (o.jobs < 1) throw InputError("--jobs: at least 1");
+  if (o.jobs < 1 || o.jobs > kMaxCampaignJobs)
+    throw InputError("--jobs: 1 to " + std::to_string(kMaxCampaignJobs) + ", got " + std::to_string(o.jobs));
   if (o.minimise_steps < 0) throw InputError("--minimise-steps: at least 0 (0: no limit)");
   if (o.out_dir == "-") throw InputError("--out: a folder, not - (standard output holds the table)");
   if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR (the campaign to continue)");
@@ -364,7 +371,7 @@ int run_campaign(const CampaignCommandOptions& o) {
             << " s (" << std::setprecision(1) << (seconds > 0 ? todo.size() / seconds : 0) << " scenes/s, " << o.jobs
             << " job" << (o.jobs == 1 ? "" : "s") << (mpi ? " per process, " + std::to_string(mpi->size()) + " MPI processes" : "")
             << ")\n";
-  if (threads < o.jobs && todo.size() > 1)
+  if (threads < std::min<std::uint64_t>(o.jobs, todo.size()) && todo.size() > 1)
     std::cerr << "hsx campaign: the system started " << threads << " of the " << o.jobs << " threads asked for"
               << (mpi ? " (on rank 0)" : "") << "; the records are the same\n";
   return summary.failed_scenes > 0 ? kCheckFailed : 0;
@@ -392,7 +399,7 @@ void add_campaign_command(CLI::App& app) {
   cmd->add_option("--shard", o->shard,
                   "i/k: only the indices whose offset from --start is i mod k (default 0/1); the k shards together "
                   "are the whole range");
-  cmd->add_option("--jobs", o->jobs, "threads (default 1); the output is the same bytes for any number");
+  cmd->add_option("--jobs", o->jobs, "threads (default 1, at most 1024); the output is the same bytes for any number");
   cmd->add_option("--checks", o->checks,
                   "comma-separated check names, default (check_all's nine: the default) or all; see --list-checks. "
                   "Only the named checks are computed (each as in a full run), recorded, counted, and able to fail "

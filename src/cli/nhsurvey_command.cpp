@@ -186,14 +186,24 @@ nhrep::SurveySolid3 random_case3(const SurveyOptions& o, long index, bool hollow
 }
 
 /// --keep DIR: an existing folder, or a new one whose parent exists (a mistyped path must not create a chain of
-/// folders).
-void check_keep_directory(const std::string& dir) {
+/// folders); not the folder of one of the run's inputs (`o`'s scenes and --csgnet), since examples are written
+/// there as the run goes, under names an input may have.
+void check_keep_directory(const SurveyOptions& o) {
+  const std::string& dir = o.keep_dir;
   if (dir.empty()) return;
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path path(dir);
   if (fs::exists(path, ec)) {
     if (!fs::is_directory(path, ec)) throw InputError("--keep: " + dir + " exists and is not a folder");
+    std::vector<std::string> inputs = o.scenes;
+    if (!o.csgnet.empty()) inputs.push_back(o.csgnet);
+    for (const std::string& input : inputs) {
+      const fs::path folder = fs::path(input).has_parent_path() ? fs::path(input).parent_path() : fs::path(".");
+      if (input != "-" && fs::equivalent(folder, path, ec))
+        throw InputError("--keep: " + dir + " holds the input " + input +
+                         "; examples are written there as the run goes: give a folder of their own");
+    }
     return;
   }
   const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
@@ -217,7 +227,7 @@ int run_survey3(const SurveyOptions& o) {
     throw InputError("--dimension 3 surveys random solids only (--random N); scenes and --csgnet are 2D");
   if (o.random <= 0) throw InputError("--dimension 3: give --random N");
   if (o.keep_count < 0) throw InputError("--keep-count: must be >= 0");
-  check_keep_directory(o.keep_dir);
+  check_keep_directory(o);
   if (o.segments < 6 || o.segments > 64) throw InputError("--segments: 6 to 64");
   if (o.max_primitives < 1 || o.max_primitives > csg::kMaxRandomPrimitives3)
     throw InputError("--max-primitives: 1 to " + std::to_string(csg::kMaxRandomPrimitives3) + ", got " +
@@ -351,7 +361,7 @@ int run_survey(const SurveyOptions& o) {
   if (o.max_states < 1) throw InputError("--max-states: must be at least 1");
   if (o.from < 1) throw InputError("--from: lines count from 1");
   if (o.limit < 0) throw InputError("--limit: must be >= 0");
-  check_keep_directory(o.keep_dir);
+  check_keep_directory(o);
   std::vector<bsh::Method> methods;
   {
     std::stringstream list(o.methods);

@@ -43,7 +43,8 @@ std::ifstream open_regular_file(const std::string& path) {
   std::error_code ec;
   const std::filesystem::file_status status = std::filesystem::status(path, ec);
   if (!std::filesystem::exists(status))  // the system's reason: no such file, a loop of symbolic links, ...
-    fail(path, "cannot open it: " + (ec ? ec.message() : std::string("no such file")));
+    fail(path, "cannot open it: " + (ec && ec != std::errc::no_such_file_or_directory ? ec.message()
+                                                                                        : std::string("no such file")));
   if (std::filesystem::is_directory(status)) fail(path, "is a directory, not a file");
   if (!std::filesystem::is_regular_file(status)) fail(path, "not a regular file (a FIFO, device or socket)");
   std::ifstream in(path, std::ios::binary);

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <memory>
 #include <set>
@@ -129,6 +130,31 @@ T field(const nlohmann::json& j, const char* name) {
   }
 }
 
+/// A whole-number field: a JSON integer (not 0.9 nor 1e300) within T's range.
+template <class T>
+T whole_field(const nlohmann::json& j, const char* name) {
+  if (!j.is_object() || !j.contains(name)) throw InputError(std::string("missing field \"") + name + "\"");
+  const nlohmann::json& v = j.at(name);
+  const auto most = static_cast<std::uint64_t>(std::numeric_limits<T>::max());
+  const auto least = static_cast<std::int64_t>(std::numeric_limits<T>::min());
+  if (v.is_number_unsigned() && v.get<std::uint64_t>() <= most) return static_cast<T>(v.get<std::uint64_t>());
+  if (v.is_number_integer() && !v.is_number_unsigned()) {
+    const std::int64_t i = v.get<std::int64_t>();
+    if (i >= least && (i < 0 || static_cast<std::uint64_t>(i) <= most)) return static_cast<T>(i);
+  }
+  throw InputError(std::string("field \"") + name + "\" is not a whole number from " + std::to_string(least) +
+                   " to " + std::to_string(most));
+}
+
+/// Refuses a campaign file that exists and is not a regular file: a FIFO would block its reading or writing, a
+/// device never end.
+void require_regular_or_missing(const fs::path& file) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(file, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw InputError(file.string() + ": not a regular file (a FIFO, device or folder); a campaign's files are");
+}
+
 std::string percent(double rate) {
   std::ostringstream s;
   s << std::fixed << std::setprecision(1) << 100 * rate << "%";
@@ -158,9 +184,9 @@ struct ResultsFile {
   std::size_t complete = 0, size = 0;  ///< the bytes up to the last newline, and all of them
 };
 
-/// Reads the complete lines of `path`, which must be the first scenes of `plan_indices` in order (a damaged line
-/// before the last newline is refused).
-ResultsFile read_results(const std::string& path, const std::vector<std::uint64_t>& plan_indices) {
+/// Reads the complete lines of `path`, which must be the first scenes of `plan_indices` in order, of the
+/// campaign's `seed` (a damaged line before the last newline is refused).
+ResultsFile read_results(const std::string& path, const std::vector<std::uint64_t>& plan_indices, std::uint64_t seed) {
   ResultsFile out;
   const std::string text = read_file(path, std::size_t(64) << 30);
   out.size = text.size();
@@ -180,6 +206,9 @@ ResultsFile read_results(const std::string& path, const std::vector<std::uint64_
       throw InputError(where + e.what());
     }
     const std::size_t k = out.records.size();
+    if (r.seed != seed)
+      throw InputError(where + "seed " + std::to_string(r.seed) + ", not the campaign's " + std::to_string(seed) +
+                       " (the file is not this campaign's)");
     if (k >= plan_indices.size() || r.index != plan_indices[k])
       throw InputError(where + "scene " + std::to_string(r.index) + " is not the plan's scene number " +
                        std::to_string(k + 1) + " (the file is not this campaign's)");
@@ -189,10 +218,13 @@ ResultsFile read_results(const std::string& path, const std::vector<std::uint64_
   return out;
 }
 
-/// A results.jsonl read one line at a time.
+/// A results.jsonl read one line at a time (a regular file: see require_regular_or_missing).
 struct LineStream {
   std::ifstream in;
-  explicit LineStream(const std::string& path) : in(path, std::ios::binary) {}
+  explicit LineStream(const std::string& path) {
+    require_regular_or_missing(path);
+    in.open(path, std::ios::binary);
+  }
   /// The next line (without its newline); false at the end. `torn`: it has no newline (the file's last line).
   bool next(std::string& line, bool& torn) {
     if (!std::getline(in, line)) return false;
@@ -216,19 +248,23 @@ SceneRecord parse_line(const std::string& line, const std::string& where) {
 
 SceneRecord record_from_json(const nlohmann::json& j) {
   SceneRecord r;
-  r.index = field<std::uint64_t>(j, "index");
-  r.seed = field<std::uint64_t>(j, "seed");
-  r.halfspaces = field<int>(j, "halfspaces");
-  r.cells = field<long>(j, "cells");
-  r.patches = field<long>(j, "patches");
-  r.samples = field<int>(j, "samples");
+  r.index = whole_field<std::uint64_t>(j, "index");
+  r.seed = whole_field<std::uint64_t>(j, "seed");
+  r.halfspaces = whole_field<int>(j, "halfspaces");
+  r.cells = whole_field<long>(j, "cells");
+  r.patches = whole_field<long>(j, "patches");
+  r.samples = whole_field<int>(j, "samples");
   r.degeneracies = field<std::vector<std::string>>(j, "degeneracies");
   const auto outcome = campaign::scene_outcome_from_string(field<std::string>(j, "outcome"));
   if (!outcome) throw InputError("field \"outcome\": checked, refused or error");
   r.outcome = *outcome;
   if (j.contains("note")) r.note = field<std::string>(j, "note");
   if (j.contains("timed_out")) r.timed_out = field<bool>(j, "timed_out");
-  if (j.contains("intended")) r.intended = field<std::vector<int>>(j, "intended");
+  if (j.contains("intended")) {
+    const nlohmann::json intended = field<nlohmann::json>(j, "intended");
+    if (!intended.is_array()) throw InputError("field \"intended\" is not a list");
+    for (const nlohmann::json& cell : intended) r.intended.push_back(whole_field<int>({{"intended", cell}}, "intended"));
+  }
   const nlohmann::json checks = field<nlohmann::json>(j, "checks");
   if (!checks.is_array()) throw InputError("field \"checks\" is not a list");
   for (const nlohmann::json& c : checks) {
@@ -446,10 +482,11 @@ CampaignFolder::CampaignFolder(const std::string& dir, const nlohmann::json& man
     if (!fs::create_directory(path, ec) && ec)
       throw OutputError("--out: cannot make the folder " + dir + ": " + ec.message());
   }
+  require_regular_or_missing(results_path);
   if (fresh) {
     write_file_atomically(manifest_path.string(), manifest.dump(2) + "\n");
   } else if (fs::exists(results_path, ec)) {
-    ResultsFile file = read_results(results_path.string(), plan_indices);
+    ResultsFile file = read_results(results_path.string(), plan_indices, manifest.at("seed").get<std::uint64_t>());
     records_ = std::move(file.records);
     if (file.complete < file.size) {
       fs::resize_file(results_path, file.complete, ec);
@@ -733,6 +770,9 @@ campaign::Summary merge_campaigns(const std::string& out, const std::vector<std:
         break;
       }
       const SceneRecord r = parse_line(line, path + ": line " + std::to_string(done + 1) + ": ");
+      if (r.seed != sh.manifest.at("seed").get<std::uint64_t>())
+        throw InputError("--merge: " + path + ": line " + std::to_string(done + 1) + ": seed " +
+                         std::to_string(r.seed) + ", not the campaign's");
       const std::uint64_t want = sh.plan.start + sh.plan.shard + done * k;
       if (done >= n || r.index != want)
         throw InputError("--merge: " + path + ": line " + std::to_string(done + 1) + ": scene " +

@@ -764,14 +764,15 @@ int run_scenes(const CampaignSettings& settings, const std::vector<std::uint64_t
   validate(settings);
   if (jobs < 1) throw InputError("--jobs: at least 1");
   const std::size_t n = indices.size();
-  if (jobs == 1 || n <= 1) {
+  jobs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(jobs), n));  // no thread without a scene
+  if (jobs <= 1) {
     for (std::uint64_t i : indices) sink(run_scene(settings, i, cancel));
     return 1;
   }
   // Positions [written, written + window) may be worked on; position p waits in slots[p % window]. The window is
   // wide so that one slow scene (seconds, against milliseconds for most) does not stop the other threads until it
   // ends: they go on up to 512 scenes each past it, holding their records (a few kilobytes each) meanwhile.
-  const std::size_t window = 512 * static_cast<std::size_t>(jobs);
+  const std::size_t window = std::min(n, 512 * static_cast<std::size_t>(jobs));
   std::mutex m;
   std::condition_variable cv;
   std::vector<std::optional<SceneRecord>> slots(window);

@@ -288,8 +288,8 @@ SceneRecord check_scene(const CampaignSettings& settings, const Scene3& scene, A
 /// wait for their turn). An exception from `sink` stops the run (the threads finish their current scene) and is
 /// rethrown. Throws InputError for invalid settings or jobs < 1. When the system refuses a thread (memory for its
 /// stack, a process limit), the threads started do the work (none: the calling thread does); the records are the same.
-/// Returns how many threads ran the scenes: `jobs`, or fewer when the system refused some; 1 when `jobs` is 1, there
-/// is at most one scene, or no thread could start (the calling thread ran them).
+/// Returns how many threads ran the scenes: min(`jobs`, the number of scenes) (no thread starts without a scene), or
+/// fewer when the system refused some; 1 when that is 1 or no thread could start (the calling thread ran them).
 /// - `cancel`: run_scene's, for every scene (empty: none). Cancelling does not stop run_scenes by itself: the sink
 ///   decides (it throws to stop, e.g. the Python module's campaign iterator on Ctrl-C), and the scenes in progress
 ///   then end at their next check of `cancel` instead of running to their end.

@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -184,22 +185,24 @@ struct ResultsFile {
   std::size_t complete = 0, size = 0;  ///< the bytes up to the last newline, and all of them
 };
 
-/// Reads the complete lines of `path`, which must be the first scenes of `plan_indices` in order, of the
-/// campaign's `seed` (a damaged line before the last newline is refused).
+/// The longest line a results.jsonl may have: a record is a few hundred bytes (its note and intended cells
+/// included), so a longer line is not one, and is refused before it fills memory.
+constexpr std::size_t kMaxRecordBytes = std::size_t(1) << 20;
+
+/// Reads the complete lines of `path` (a regular file), which must be the first scenes of `plan_indices` in order,
+/// of the campaign's `seed` (a damaged line before the last newline is refused). Streamed: one line in memory at a
+/// time besides the records.
 ResultsFile read_results(const std::string& path, const std::vector<std::uint64_t>& plan_indices, std::uint64_t seed) {
   ResultsFile out;
-  const std::string text = read_file(path, std::size_t(64) << 30);
-  out.size = text.size();
-  out.complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
-  std::size_t at = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError("cannot read " + path + ": " + std::strerror(errno));
   long line_number = 0;
-  while (at < out.complete) {
-    const std::size_t end = text.find('\n', at);
+  const auto record = [&](const std::string& line) {
     ++line_number;
     const std::string where = path + ": line " + std::to_string(line_number) + ": ";
     SceneRecord r;
     try {
-      r = record_from_json(nlohmann::json::parse(text.substr(at, end - at)));
+      r = record_from_json(nlohmann::json::parse(line));
     } catch (const nlohmann::json::exception& e) {
       throw InputError(where + "not a JSON record (" + e.what() + "); only the last line may be torn");
     } catch (const InputError& e) {
@@ -213,8 +216,30 @@ ResultsFile read_results(const std::string& path, const std::vector<std::uint64_
       throw InputError(where + "scene " + std::to_string(r.index) + " is not the plan's scene number " +
                        std::to_string(k + 1) + " (the file is not this campaign's)");
     out.records.push_back(std::move(r));
-    at = end + 1;
+  };
+  std::string pending;  // the current line's bytes so far
+  std::vector<char> block(std::size_t(1) << 16);
+  while (in) {
+    in.read(block.data(), static_cast<std::streamsize>(block.size()));
+    const std::size_t n = static_cast<std::size_t>(in.gcount());
+    for (std::size_t at = 0; at < n;) {
+      const char* newline = static_cast<const char*>(std::memchr(block.data() + at, '\n', n - at));
+      const std::size_t end = newline ? static_cast<std::size_t>(newline - block.data()) : n;
+      pending.append(block.data() + at, end - at);
+      if (pending.size() > kMaxRecordBytes)
+        throw InputError(path + ": line " + std::to_string(line_number + 1) + " is longer than " +
+                         std::to_string(kMaxRecordBytes) + " bytes: not a campaign record");
+      out.size += end - at;
+      at = end;
+      if (!newline) break;
+      ++out.size;
+      ++at;
+      record(pending);
+      pending.clear();
+      out.complete = out.size;
+    }
   }
+  if (in.bad()) throw InputError("cannot read " + path + ": a read error");
   return out;
 }
 

@@ -203,8 +203,7 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
     f.at("type").fail("unknown type " + describe_json(f.at("type").json()) +
                       " (expected plane, sphere, cylinder, cone or torus)");
   }
-  hs.name = f.at("name").string();
-  if (hs.name.empty()) f.at("name").fail("the name must not be empty");
+  hs.name = f.at("name").name();
   if (auto flipped = f.get("is_flipped")) hs.complement = flipped->boolean();
   if (hs.kind != HalfspaceKind3::Plane) {
     try {

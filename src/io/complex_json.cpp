@@ -641,8 +641,7 @@ void read_halfspaces(const JsonField& f, Complex& c) {
   std::set<std::string> seen;
   for (std::size_t i = 0; i < f.size(); ++i) {
     const JsonField h = f.at(i);
-    std::string name = h.string();
-    if (name.empty()) h.fail("a halfspace name must not be empty");
+    std::string name = h.name();
     if (!seen.insert(name).second) h.fail("duplicate halfspace name " + describe_json(json(name)));
     c.halfspace_names.push_back(std::move(name));
   }

@@ -502,6 +502,15 @@ std::string JsonField::string() const {
   return value_->get<std::string>();
 }
 
+std::string JsonField::name() const {
+  std::string s = string();
+  if (s.empty()) fail("the name must not be empty");
+  for (const char c : s)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      fail("the name " + describe_json(*value_) + " has a control character; names are printed in reports");
+  return s;
+}
+
 bool JsonField::boolean() const {
   if (!value_->is_boolean()) fail("expected true or false, got " + describe_json(*value_));
   return value_->get<bool>();

@@ -27,8 +27,7 @@ Halfspace2 read_halfspace(const JsonField& f, const SceneReadLimits& limits) {
     f.check_keys({"name", "kind", "complement", "vertices"}, "a polygon");
   }
   if (k == "halfplane" || k == "disk" || k == "polygon") {
-    h.name = f.at("name").string();
-    if (h.name.empty()) f.at("name").fail("the name must not be empty");
+    h.name = f.at("name").name();
   }
   if (k == "halfplane") {
     h.kind = HalfspaceKind2::Halfplane;

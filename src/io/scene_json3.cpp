@@ -142,8 +142,7 @@ Halfspace3 read_halfspace3(const JsonField& f, const std::optional<Box3>& domain
   }
   f.check_keys(entry->keys, std::string("a ") + entry->name);
   h.kind = entry->kind;
-  h.name = f.at("name").string();
-  if (h.name.empty()) f.at("name").fail("the name must not be empty");
+  h.name = f.at("name").name();
   if (auto c = f.get("complement")) h.complement = c->boolean();
   const NumberLimits& n = limits.numbers;
   if (h.kind == HalfspaceKind3::Plane) {

@@ -97,6 +97,9 @@ class JsonField {
 
   // Scalars
   std::string string() const;
+  /// A halfspace's name: a non-empty string without control characters (U+0000-U+001F, U+007F; hsx prints names
+  /// in its reports, where they would reach a terminal as escape sequences). Fails naming the field otherwise.
+  std::string name() const;
   bool boolean() const;
   std::int64_t integer() const;  ///< a JSON integer (no decimals, no strings)
   Rational rational(const NumberLimits& limits = {}) const;

@@ -12,6 +12,8 @@
 
 #include <pybind11/numpy.h>
 
+#include <cmath>
+
 
 namespace hsxpy {
 namespace {
@@ -49,6 +51,12 @@ struct ExtractArgs {
   bool record_states;
 };
 
+/// `seconds` as a time limit (0: none); NaN, infinities and negative numbers are refused, as the CLI's are.
+double checked_time_limit(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) throw hsx::InputError("time_limit: must be a finite number of seconds >= 0");
+  return seconds;
+}
+
 bsh::ExtractOptions extract_options(const ExtractArgs& a) {
   bsh::ExtractOptions o;
   o.method = method_named(a.method, "method");
@@ -56,7 +64,6 @@ bsh::ExtractOptions extract_options(const ExtractArgs& a) {
   if (a.max_states < 0) throw hsx::InputError("max_states: must be >= 0");
   if (a.max_graph_cuts < 0) throw hsx::InputError("max_graph_cuts: must be >= 0");
   if (a.max_nodes < 0) throw hsx::InputError("max_nodes: must be >= 0");
-  if (a.time_limit < 0) throw hsx::InputError("time_limit: must be >= 0");
   if (a.max_labellings < 1) throw hsx::InputError("max_labellings: must be at least 1");
   if (a.max_ties < 1) throw hsx::InputError("max_ties: must be at least 1");
   if (a.precision < 64) throw hsx::InputError("precision: at least 64 bits");
@@ -64,7 +71,7 @@ bsh::ExtractOptions extract_options(const ExtractArgs& a) {
   o.max_states = a.max_states;
   o.max_graph_cuts = a.max_graph_cuts;
   o.max_nodes = a.max_nodes;
-  o.time_limit = a.time_limit;
+  o.time_limit = checked_time_limit(a.time_limit);
   o.brute_force_limit = a.max_labellings;
   o.max_ties = a.max_ties;
   o.enumerate_ties = a.enumerate_ties;
@@ -310,8 +317,7 @@ void bind_grade(py::module_& m) {
           const std::vector<char> flags = flags_from(labelling, h.complex().cells.size(), "labelling");
           bsh::ExtractOptions oracle = bsh::best_first_oracle();
           oracle.method = method_named(method, "oracle");
-          if (time_limit < 0) throw hsx::InputError("time_limit: must be >= 0");
-          oracle.time_limit = time_limit;
+          oracle.time_limit = checked_time_limit(time_limit);
           const Guard guard(std::move(token), std::move(progress));
           oracle.cancel = guard.cancel();
           oracle.progress = guard.progress();
@@ -359,12 +365,11 @@ void bind_check(py::module_& m) {
            int precision, std::shared_ptr<CancelToken> token) {
           bsh::CheckOptions o;
           if (brute_force_limit < 1) throw hsx::InputError("max_labellings: must be at least 1");
-          if (time_limit < 0) throw hsx::InputError("time_limit: must be >= 0");
           if (max_states < 0) throw hsx::InputError("max_states: must be >= 0");
           if (max_graph_cuts < 0) throw hsx::InputError("max_graph_cuts: must be >= 0");
           if (precision < 64) throw hsx::InputError("precision: at least 64 bits");
           o.brute_force_limit = brute_force_limit;
-          o.time_limit = time_limit;
+          o.time_limit = checked_time_limit(time_limit);
           o.max_states = max_states;
           o.max_graph_cuts = max_graph_cuts;
           o.compare.max_bits = precision;

@@ -63,8 +63,9 @@ def test_limits_and_option_errors(lens, source_dir):
         hsx.extract(lens, method="fastest")
     with pytest.raises(hsx.InputError, match="beam_width"):
         hsx.extract(lens, beam_width=0)
-    with pytest.raises(hsx.InputError, match="time_limit"):
-        hsx.extract(lens, time_limit=-1)
+    for bad in (-1, float("nan"), float("inf")):
+        with pytest.raises(hsx.InputError, match="time_limit"):
+            hsx.extract(lens, time_limit=bad)
     with pytest.raises(hsx.InputError):  # brute force refuses more labellings than allowed
         hsx.extract(lens, method="brute-force", max_labellings=2)
 

@@ -53,7 +53,8 @@ struct ExtractArgs {
 
 /// `seconds` as a time limit (0: none); NaN, infinities and negative numbers are refused, as the CLI's are.
 double checked_time_limit(double seconds) {
-  if (!std::isfinite(seconds) || seconds < 0) throw hsx::InputError("time_limit: must be a finite number of seconds >= 0");
+  if (!std::isfinite(seconds) || seconds < 0)
+    throw hsx::InputError("time_limit: must be a finite number of seconds >= 0");
   return seconds;
 }
 

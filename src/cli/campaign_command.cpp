@@ -54,11 +54,11 @@ constexpr std::uint64_t kMaxCount = 100'000'000;
 /// Exit status 3 when a check fails (as `hsx check`): a counterexample or a bug, never bad input.
 constexpr int kCheckFailed = 3;
 
-/// "A..B" or "A" (A = B), with lo <= A <= B.
 /// The most threads --jobs may ask for (each holds up to 512 scenes' records in the window; a thousand of
 /// them is far more than any machine's cores).
 constexpr int kMaxCampaignJobs = 1024;
 
+/// "A..B" or "A" (A = B), with lo <= A <= B <= hi.
 std::pair<int, int> parse_range(const std::string& text, const std::string& option, int lo, int hi = 1000000) {
   const auto number = [&](const std::string& s) {
     std::size_t used = 0;
@@ -148,7 +148,8 @@ void parse_generator(const CampaignCommandOptions& o, campaign::CampaignSettings
   refuse_other_dimension(o, settings.dimension);
   if (settings.dimension == 3) {
     campaign::Scene3Settings& g = settings.scene3;
-    std::tie(g.solid.min_primitives, g.solid.max_primitives) = parse_range(o.primitives, "--primitives", 1, csg::kMaxRandomPrimitives3);
+    std::tie(g.solid.min_primitives, g.solid.max_primitives) =
+        parse_range(o.primitives, "--primitives", 1, csg::kMaxRandomPrimitives3);
     std::tie(g.min_degeneracies, g.max_degeneracies) = parse_range(o.degeneracies, "--degeneracies", 0);
     g.max_samples = settings.scene.max_samples;
     parse_weights(o.weights, g.degeneracy_weight,
@@ -492,7 +493,8 @@ void add_campaign_command(CLI::App& app) {
                   "with degeneracy patterns (algorithms/campaign/scene3.hpp); --degeneracies, "
                   "--degeneracy-weights (PlaneOnBoxFace, CoincidentFaces, ConcurrentPlanes), --samples and "
                   "--sample-policy apply to both");
-  cmd->add_option("--primitives", o->primitives, "3D: the number of primitives as A..B or N (default 2..4; at most 64)");
+  cmd->add_option("--primitives", o->primitives,
+                  "3D: the number of primitives as A..B or N (default 2..4; at most 64)");
   cmd->add_option("--segments", o->settings.scene3.solid.segments,
                   "3D: segments per circle of spheres and cylinders, 6..64 (default 8)");
   cmd->add_flag("--hollow", o->settings.scene3.solid.hollow,

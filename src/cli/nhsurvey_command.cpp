@@ -509,7 +509,8 @@ void add_nhsurvey_command(CLI::App& app) {
   cmd->add_option("--dimension", o->dimension, "2 (default) or 3: random 3D CSG solids (boxes, spheres, cylinders, "
                                                "planes), evaluated exactly on their 3D arrangements");
   cmd->add_option("--segments", o->segments, "3D: segments per circle of spheres and cylinders (default 8)");
-  cmd->add_option("--max-primitives", o->max_primitives, "3D: 2 to this many primitives per solid (default 4; at most 64)");
+  cmd->add_option("--max-primitives", o->max_primitives,
+                  "3D: 2 to this many primitives per solid (default 4; at most 64)");
   cmd->add_flag("--random-polygons", o->random_polygons, "random boxes and triangles as polygon halfspaces");
   cmd->add_option("--methods", o->methods, "BSH methods for scenes: graphcut,best-first (default both)");
   cmd->add_option("--max-states", o->max_states, "best-first: stop after N expanded states (default 20000)");

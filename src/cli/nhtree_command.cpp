@@ -364,9 +364,9 @@ int run_nhtree(const NhtreeOptions& o) {
   expect_outputs(o, files);
   // --decomposed's files are derived from its PREFIX: compare them with the inputs here (the options are compared
   // when the command line is parsed)
-  for (const auto& [path, name] : {std::pair{o.input, "INPUT"}, {o.fea_path, "--fea"}, {o.reference_conf, "--reference"},
-                                   {o.reference_face_patch, "--reference-face-patch"},
-                                   {o.reference_graph, "--reference-graph"}})
+  for (const auto& [path, name] :
+       {std::pair{o.input, "INPUT"}, {o.fea_path, "--fea"}, {o.reference_conf, "--reference"},
+        {o.reference_face_patch, "--reference-face-patch"}, {o.reference_graph, "--reference-graph"}})
     files.protect(path, name);
   const int status = ends_with(o.input, ".obj") ? run_mesh(o, files) : run_planar(o, files);
   files.print("");  // the report went to standard output as it was made: the commit checks that it arrived

@@ -62,7 +62,8 @@ Grid read_grid(const std::string& path) {
     }
     grid.h = std::sqrt(sum);
     if (!std::isfinite(grid.h) || grid.h <= 0)
-      root.fail("the grid cell's diagonal (their h, in double precision) is " + std::string(grid.h > 0 ? "infinite" : "zero") +
+      root.fail("the grid cell's diagonal (their h, in double precision) is " +
+                std::string(grid.h > 0 ? "infinite" : "zero") +
                 ": bbox_min and bbox_max are out of the range of doubles, in which the authors' program works");
     return grid;
   } catch (const InputError& e) {
@@ -90,7 +91,8 @@ void read_samples_file(const std::string& path, std::size_t room, std::vector<Po
     while (words >> w) {
       if (!header) {
         if (w != "3")
-          throw InputError(path + ":" + std::to_string(line_no) + ": the first token must be 3, got \"" + printable(w) + "\"");
+          throw InputError(path + ":" + std::to_string(line_no) + ": the first token must be 3, got \"" + printable(w) +
+                           "\"");
         header = true;
         continue;
       }

@@ -288,7 +288,8 @@ SceneRecord record_from_json(const nlohmann::json& j) {
   if (j.contains("intended")) {
     const nlohmann::json intended = field<nlohmann::json>(j, "intended");
     if (!intended.is_array()) throw InputError("field \"intended\" is not a list");
-    for (const nlohmann::json& cell : intended) r.intended.push_back(whole_field<int>({{"intended", cell}}, "intended"));
+    for (const nlohmann::json& cell : intended)
+      r.intended.push_back(whole_field<int>({{"intended", cell}}, "intended"));
   }
   const nlohmann::json checks = field<nlohmann::json>(j, "checks");
   if (!checks.is_array()) throw InputError("field \"checks\" is not a list");

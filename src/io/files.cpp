@@ -321,7 +321,7 @@ void OutputFiles::expect(const std::string& path, const std::string& option) {
 void OutputFiles::protect(const std::string& path, const std::string& name) {
   const std::string identity = regular_file_identity(path);
   if (identity.empty()) return;
-  if (const auto out = impl_->identities.find(identity); out != impl_->identities.end())
+  if (impl_->identities.count(identity))
     for (const Target& t : impl_->targets)
       if (t.identity == identity) refuse_over_input(t.option, t.path, name, path);
   impl_->inputs.emplace(identity, std::make_pair(name, path));

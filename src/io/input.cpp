@@ -45,8 +45,8 @@ LoadedInput load_document(const nlohmann::json& doc, const std::string& source, 
     }
     return in;
   }
-  // The BSH authors' config names `source` in its messages itself (or its grid or samples file).
   const std::size_t max_surface_triangles = static_cast<std::size_t>(std::max<long>(0, limits.max_triangles));
+  // The BSH authors' config names `source` in its messages itself (or its grid or samples file).
   if (is_bsh_config(doc)) {
     BshReadOptions options;
     options.max_surface_triangles = max_surface_triangles;

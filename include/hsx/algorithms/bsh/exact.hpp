@@ -9,17 +9,17 @@
 // - A node is a partial assignment of cells (-1 undecided, 0, 1), closed under the implications (propagation);
 //   its region is the set of orientation-preserving labellings that agree with it. Every closed partial assignment
 //   has a non-empty region (set the undecided cells to 0).
-// - Lower bound of a node: the minimum s-t cut of Section 5.1 (graph_cut.hpp's graph) with the decided cells tied
-//   to s or t. It ignores sample-connectedness, so it bounds every labelling of the region from below. It is
-//   computed fast and rigorously in integers: each support's measure is replaced by floor(lo * 2^k) for a
-//   rigorous double lower enclosure lo (Problem::support_enclosures, which are finite: measures beyond the
-//   largest double are enclosed times 2^-Problem::enclosure_scale()) and a common scale 2^k, each sample by a
-//   weight M larger than all those integers together; an exact integer max flow (Boost Boykov-Kolmogorov) of
-//   these rounded-down capacities is a lower bound on the true min cut (weak duality), and its value V decodes to
-//   the EnergyBound (floor(V / M), (V mod M) / 2^k, times 2^enclosure_scale() when reported: a lower bound
-//   beyond the largest double is reported as the largest double). An s-t path of infinite capacities means the node has no
-//   admissible labelling (checked before the flow). The cut's labelling is orientation-preserving; when it is
-//   sample-connected it is a candidate for the incumbent (its energy is then computed exactly).
+// - Lower bound of a node: the minimum s-t cut of Section 5.1 (graph_cut.hpp's graph) with the decided cells tied to s
+//   or t. It ignores sample-connectedness, so it bounds every labelling of the region from below. It is computed fast
+//   and rigorously in integers: each support's measure is replaced by floor(lo * 2^k) for a rigorous double lower
+//   enclosure lo (Problem::support_enclosures, which are finite: measures beyond the largest double are enclosed times
+//   2^-Problem::enclosure_scale()) and a common scale 2^k, each sample by a weight M larger than all those integers
+//   together; an exact integer max flow (Boost Boykov-Kolmogorov) of these rounded-down capacities is a lower bound on
+//   the true min cut (weak duality), and its value V decodes to the EnergyBound (floor(V / M), (V mod M) / 2^k, times
+//   2^enclosure_scale() when reported: a lower bound beyond the largest double is reported as the largest double). An
+//   s-t path of infinite capacities means the node has no admissible labelling (checked before the flow). The cut's
+//   labelling is orientation-preserving; when it is sample-connected it is a candidate for the incumbent (its energy
+//   is then computed exactly).
 // - Pruning: by bound, only when the bound provably exceeds the incumbent's exact energy (or provably reaches it
 //   once ties are no longer wanted: not enumerated, or ExtractOptions::max_ties reached). When the fast bound
 //   does not decide it but the node's candidate is exactly worse than the incumbent, the exact certified graph

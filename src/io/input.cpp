@@ -61,8 +61,9 @@ LoadedInput load_document(const nlohmann::json& doc, const std::string& source, 
       SceneReadLimits read_limits;
       read_limits.max_surface_triangles = max_surface_triangles;
       in.scene3 = read_scene3(doc, fs::path(source).parent_path().string(), read_limits);
-      for (const Halfspace3& h : in.scene3->halfspaces)
-        if (h.kind == HalfspaceKind3::Mesh) in.files.push_back(h.origin);  // the mesh file, as opened
+      for (const Halfspace3& h : in.scene3->halfspaces)  // its mesh files, as read_scene3 opens them
+        if (h.kind == HalfspaceKind3::Mesh)
+          in.files.push_back((fs::path(source).parent_path() / h.primitive.file).string());
       in.arranged3 = arrange(*in.scene3, limits);
     } else {
       in.scene = read_scene2(doc);

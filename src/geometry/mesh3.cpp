@@ -380,6 +380,20 @@ void read_counted_face(LineTokens& t, ObjMesh& mesh, const std::string& source, 
   mesh.face_lines.push_back(line);
 }
 
+/// Whether `name` is one of PLY's scalar types (the specification's names and their sized spellings); with
+/// `integer_only`, one of its integer types (a list's count, a face's vertex indices).
+bool is_ply_type(const std::string& name, bool integer_only) {
+  static const char* const kIntegers[] = {"char", "uchar", "short", "ushort", "int",   "uint",
+                                          "int8", "uint8", "int16", "uint16", "int32", "uint32"};
+  static const char* const kReals[] = {"float", "double", "float32", "float64"};
+  for (const char* type : kIntegers)
+    if (name == type) return true;
+  if (!integer_only)
+    for (const char* type : kReals)
+      if (name == type) return true;
+  return false;
+}
+
 /// Skips the rest of line `line` (extra properties of a PLY element, colours of an OFF face).
 void skip_line(LineTokens& t, long line) {
   while (!t.done() && t.lines[t.next] == line) ++t.next;
@@ -460,9 +474,21 @@ ObjMesh read_ply(std::istream& in, const std::string& source, const MeshReadLimi
       elements.push_back(Element{w[1], static_cast<std::size_t>(*n), {}, line});
     } else if (w[0] == "property") {
       if (elements.empty()) fail_at(source, line, "a property before any element");
-      if (w.size() == 5 && w[1] == "list") elements.back().properties.push_back("list:" + w[4]);
-      else if (w.size() == 3) elements.back().properties.push_back(w[2]);
-      else fail_at(source, line, "a property line is \"property TYPE NAME\" or \"property list TYPE TYPE NAME\"");
+      if (w.size() == 5 && w[1] == "list") {
+        const bool indices = w[4] == "vertex_indices" || w[4] == "vertex_index";
+        if (!is_ply_type(w[2], true))
+          fail_at(source, line, "a list's count type " + quoted(w[2]) + " is not a PLY integer type (uchar, int, ...)");
+        if (!is_ply_type(w[3], indices))
+          fail_at(source, line, "the list's value type " + quoted(w[3]) + " is not a PLY " +
+                                    (indices ? "integer type (int, uint, ...)" : "type (uchar, int, float, ...)"));
+        elements.back().properties.push_back("list:" + w[4]);
+      } else if (w.size() == 3) {
+        if (!is_ply_type(w[1], false))
+          fail_at(source, line, "property type " + quoted(w[1]) + " is not a PLY type (uchar, int, float, ...)");
+        elements.back().properties.push_back(w[2]);
+      } else {
+        fail_at(source, line, "a property line is \"property TYPE NAME\" or \"property list TYPE TYPE NAME\"");
+      }
     } else {
       fail_at(source, line, "unknown header line " + quoted(w[0]));
     }

@@ -489,6 +489,21 @@ TEST_CASE("OBJ, OFF and PLY of the same mesh give the same ObjMesh", "[scene3]")
     std::string extra = ply;
     extra.replace(extra.rfind("3 1 2 3\n"), 8, "3 1 2 3 4\n");
     CHECK_THAT(ply_error(extra), Contains("m.ply:18: more values than the face element's one property"));
+    // Property types are PLY's: a list counts with an integer type, and face indices are integers.
+    std::string typed = ply;
+    typed.replace(typed.find("list uchar int"), 14, "list float int");
+    CHECK_THAT(ply_error(typed), Contains("m.ply:9: a list's count type \"float\" is not a PLY integer type"));
+    typed = ply;
+    typed.replace(typed.find("list uchar int"), 14, "list uchar double");
+    CHECK_THAT(ply_error(typed), Contains("m.ply:9: the list's value type \"double\" is not a PLY integer type"));
+    typed = ply;
+    typed.replace(typed.find("property float z"), 16, "property real z");
+    CHECK_THAT(ply_error(typed), Contains("m.ply:7: property type \"real\" is not a PLY type"));
+    typed = ply;
+    typed.replace(typed.find("property float y"), 16, "property float64 y");
+    typed.replace(typed.find("list uchar int"), 14, "list uint8 uint32");
+    std::istringstream sized(typed);
+    CHECK(read_ply(sized, "m.ply").faces == mp.faces);
     std::string coloured = extra;
     coloured.replace(coloured.find("end_header"), 10, "property uchar red\nend_header");
     std::istringstream in(coloured);

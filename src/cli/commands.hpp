@@ -52,12 +52,6 @@ void refuse_outputs_over_inputs(CLI::App& app);
 /// load_input, so that outputs derived from an option (an .obj's .mtl) and files a scene refers to are compared too.
 void protect_inputs(OutputFiles& out, const LoadedInput& in);
 
-/// The same refusal for an input that is not an option's value (a file a command finds in a folder it was given):
-/// throws InputError when `output` (the value of `output_option`; "" or "-" never) is the same existing regular
-/// file as `input`, which `input_name` names in the message.
-void refuse_output_over_input(const std::string& output_option, const std::string& output,
-                              const std::string& input_name, const std::string& input);
-
 /// Makes every whole-number option of `app` and of its subcommands (those CLI11 converts to an integer type: type
 /// name INT or UINT) read its value as decimal digits, an optional sign (a '-' only where the type is signed) and
 /// surrounding spaces allowed: "010" is ten and "+5" five, while "0x10", "1e6" and "5.0" are refused, and so is a

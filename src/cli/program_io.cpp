@@ -1,11 +1,9 @@
 // The hsx program's own checks of its inputs and outputs as a whole (commands.hpp).
 #include "cli/commands.hpp"
-#include <hsx/geometry/scene.hpp>  // InputError
 #include <hsx/io/files.hpp>
 #include <hsx/io/input.hpp>
 
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,19 +11,15 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
-#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace hsx::cli {
 namespace {
 
-/// A path given on the command line that names an existing regular file, and which file it is.
-struct NamedFile {
+/// A value given on the command line, and the option (or positional argument) it was given to.
+struct NamedPath {
   std::string option, path;
-  dev_t device;
-  ino_t inode;
 };
 
 bool is_output_option(CLI::Option* option) {
@@ -37,28 +31,12 @@ bool is_output_option(CLI::Option* option) {
   }
 }
 
-/// The file `path` names after following links, when it is an existing regular file ("-" never is).
-std::optional<std::pair<dev_t, ino_t>> regular_file(const std::string& path) {
-  struct stat info {};
-  if (path.empty() || path == "-" || ::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) return std::nullopt;
-  return std::make_pair(info.st_dev, info.st_ino);
-}
-
-/// Every value of `app`'s options and of its parsed subcommands' that names a regular file, outputs apart.
-void collect(CLI::App* app, std::vector<NamedFile>& inputs, std::vector<NamedFile>& outputs) {
-  for (CLI::Option* option : app->get_options()) {
-    for (const std::string& value : option->results()) {
-      const auto file = regular_file(value);
-      if (!file) continue;
-      (is_output_option(option) ? outputs : inputs).push_back({option->get_name(), value, file->first, file->second});
-    }
-  }
+/// Every value of `app`'s options and of its parsed subcommands', outputs apart.
+void collect(CLI::App* app, std::vector<NamedPath>& inputs, std::vector<NamedPath>& outputs) {
+  for (CLI::Option* option : app->get_options())
+    for (const std::string& value : option->results())
+      (is_output_option(option) ? outputs : inputs).push_back({option->get_name(), value});
   for (CLI::App* sub : app->get_subcommands()) collect(sub, inputs, outputs);
-}
-
-[[noreturn]] void refuse(const NamedFile& out, const std::string& input_name, const std::string& input) {
-  throw InputError("cannot write " + out.option + " \"" + out.path + "\": it is the same file as the input " +
-                   input_name + " \"" + input + "\"; hsx does not replace a file it reads (write elsewhere)");
 }
 
 /// read_integers_in_decimal's rewriting of one value: " +010 " -> "10"; an error for what is not a decimal whole
@@ -87,22 +65,15 @@ CLI::Validator decimal_whole_number(bool is_signed) {
 }  // namespace
 
 void refuse_outputs_over_inputs(CLI::App& app) {
-  std::vector<NamedFile> inputs, outputs;
+  std::vector<NamedPath> inputs, outputs;
   collect(&app, inputs, outputs);
-  for (const NamedFile& out : outputs)
-    for (const NamedFile& in : inputs)
-      if (out.device == in.device && out.inode == in.inode) refuse(out, in.option, in.path);
+  for (const NamedPath& out : outputs)
+    for (const NamedPath& in : inputs) refuse_output_over_input(out.option, out.path, in.option, in.path);
 }
 
 void protect_inputs(OutputFiles& out, const LoadedInput& in) {
   out.protect(in.path, "INPUT");
   for (const std::string& file : in.files) out.protect(file, "that INPUT refers to");
-}
-
-void refuse_output_over_input(const std::string& output_option, const std::string& output,
-                              const std::string& input_name, const std::string& input) {
-  const auto out = regular_file(output), in = regular_file(input);
-  if (out && in && *out == *in) refuse({output_option, output, out->first, out->second}, input_name, input);
 }
 
 void read_integers_in_decimal(CLI::App& app) {

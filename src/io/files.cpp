@@ -291,6 +291,13 @@ std::string regular_file_identity(const std::string& path) {
 
 }  // namespace
 
+void refuse_output_over_input(const std::string& output_option, const std::string& output,
+                              const std::string& input_name, const std::string& input) {
+  const std::string identity = regular_file_identity(output);
+  if (!identity.empty() && identity == regular_file_identity(input))
+    refuse_over_input(output_option, output, input_name, input);
+}
+
 OutputFiles::OutputFiles() : impl_(std::make_unique<Impl>()) {}
 
 OutputFiles::~OutputFiles() {

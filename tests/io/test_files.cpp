@@ -221,6 +221,22 @@ TEST_CASE("files: a protected input is never an output, whichever comes first", 
   CHECK(slurp(dir / "mesh.obj") == "v");
 }
 
+TEST_CASE("files: refuse_output_over_input compares files, not spellings", "[files]") {
+  TempDir dir;
+  spit(dir / "scene.json", "{}");
+  ::symlink((dir / "scene.json").c_str(), (dir / "link.json").c_str());
+  ::link((dir / "scene.json").c_str(), (dir / "hard.json").c_str());
+  for (const std::string& output : {dir / "scene.json", dir / "link.json", dir / "hard.json"})
+    CHECK_THROWS_WITH(refuse_output_over_input("--json", output, "scene", dir / "scene.json"),
+                      Catch::Contains("cannot write --json \"" + output + "\": it is the same file as the input scene"));
+  CHECK_NOTHROW(refuse_output_over_input("--json", dir / "other.json", "scene", dir / "scene.json"));  // missing
+  CHECK_NOTHROW(refuse_output_over_input("--json", "-", "scene", "-"));                                // never files
+  CHECK_NOTHROW(refuse_output_over_input("--json", "", "scene", ""));
+  CHECK_NOTHROW(refuse_output_over_input("--json", dir.path, "scene", dir.path));                      // a folder
+  spit(dir / "copy.json", "{}");
+  CHECK_NOTHROW(refuse_output_over_input("--json", dir / "copy.json", "scene", dir / "scene.json"));  // equal text
+}
+
 namespace {
 
 /// Standard output's stand-in while a test runs: keeps what is written, and what `watched` held at the first write.

@@ -84,6 +84,13 @@ class OutputFiles {
   std::unique_ptr<Impl> impl_;
 };
 
+/// Refuses (InputError, so exit 2) writing `output`, the value of `output_option` ("--json"), when it is the same
+/// existing regular file as `input` (through any spelling, hard or symbolic link), which `input_name` names in the
+/// message ("INPUT", "scene"). "" and "-" are never regular files. The refusal of OutputFiles::protect, for callers
+/// that compare paths before any output is expected (the hsx program's check of its command line).
+void refuse_output_over_input(const std::string& output_option, const std::string& output,
+                              const std::string& input_name, const std::string& input);
+
 /// Makes SIGINT, SIGTERM, SIGHUP, SIGPIPE (a reader of standard output or of a FIFO that went away) and SIGXCPU
 /// (past a CPU time limit) remove the temporary files of outputs not yet committed, then end the process as the
 /// signal would; and ignores SIGXFSZ, so that a write past the file size limit fails (EFBIG, an OutputError) instead

@@ -223,12 +223,16 @@ Halfspace3 read_entry(const JsonField& f, const Box3& domain, double h) {
 bool is_bsh_config(const json& doc) { return doc.is_object() && doc.contains("input") && !doc.contains("format"); }
 
 Scene3 read_bsh_config(const json& doc, const std::string& directory, const std::string& config_name,
-                       const BshReadOptions& options) {
+                       const BshReadOptions& options, std::vector<std::string>* files_read) {
   if (!(options.h_scale > 0) || !std::isfinite(options.h_scale))
     throw InputError("BSH config: h_scale must be a positive number");
   const std::filesystem::path dir(directory);
+  const auto opened = [&](std::string path) {
+    if (files_read) files_read->push_back(path);
+    return path;
+  };
   Scene3 scene;
-  const Grid grid = read_grid((dir / "grid_64.json").string());
+  const Grid grid = read_grid(opened((dir / "grid_64.json").string()));
   scene.domain = grid.box;
   scene.domain_given = true;
   const double h = grid.h * options.h_scale;
@@ -258,7 +262,7 @@ Scene3 read_bsh_config(const json& doc, const std::string& directory, const std:
   for (std::size_t i = 0; i < sample_files.size(); ++i) {
     if (sample_files[i].empty()) continue;
     points.clear();
-    read_samples_file((dir / sample_files[i]).string(), kMaxSamples - scene.samples.size(), &points);
+    read_samples_file(opened((dir / sample_files[i]).string()), kMaxSamples - scene.samples.size(), &points);
     for (PointQ3& p : points) {
       Sample3 s;
       s.halfspace = static_cast<int>(i);

@@ -20,17 +20,6 @@ PlanarPieces LoadedInput::pieces() const {
 
 namespace {
 
-/// The files a BSH config `doc` in `folder` names: its grid_64.json and its samples files.
-std::vector<std::string> bsh_config_files(const nlohmann::json& doc, const fs::path& folder) {
-  std::vector<std::string> files{(folder / "grid_64.json").string()};
-  const nlohmann::json& input = doc.at("input");
-  if (input.is_array())
-    for (const nlohmann::json& entry : input)
-      if (entry.is_object() && entry.contains("samples") && entry.at("samples").is_string())
-        files.push_back((folder / entry.at("samples").get<std::string>()).string());
-  return files;
-}
-
 /// `doc` read from `source` (a path, or a name for text; empty: errors carry no prefix).
 LoadedInput load_document(const nlohmann::json& doc, const std::string& source, const ArrangementLimits& limits) {
   LoadedInput in;
@@ -51,8 +40,7 @@ LoadedInput load_document(const nlohmann::json& doc, const std::string& source, 
     BshReadOptions options;
     options.max_surface_triangles = max_surface_triangles;
     in.scene3 = read_bsh_config(doc, fs::path(source).parent_path().string(), source.empty() ? "config.json" : source,
-                                options);
-    in.files = bsh_config_files(doc, fs::path(source).parent_path());
+                                options, &in.files);  // its grid and samples files, as it opens them
   }
   try {
     if (in.scene3) {

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace hsx;
 using Catch::Matchers::Contains;
@@ -164,6 +165,11 @@ TEST_CASE("the BSH authors' config: a folder of our own", "[scene3_json]") {
   CHECK(s.samples.size() == 3);
   CHECK(s.samples[2].distance2 == 0);
   CHECK(s.domain.max.x == 2);
+  // The files it read, as it opened them: the grid, then the samples files in the config's order.
+  std::vector<std::string> files;
+  read_bsh_config(read_exact_json_file((dir / "config.json").string()), dir.string(), "config.json", {}, &files);
+  CHECK(files == std::vector<std::string>{(dir / "grid_64.json").string(), (dir / "1_sample.xyz").string(),
+                                          (dir / "2_sample.xyz").string()});
   // Their cone: one nappe from the apex, half angle 0.5 about +z, clipped by the box: here the cone of height 2.
   write("cone.json", R"({"input": [{"type": "cone", "name": "K", "apex": [0, 0, 0], "axis_vector": [0, 0, 3],
       "apex_angle": 0.5, "is_flipped": false}]})");

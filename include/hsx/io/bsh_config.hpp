@@ -43,6 +43,7 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace hsx {
 
@@ -59,9 +60,11 @@ bool is_bsh_config(const nlohmann::json& doc);
 /// Reads the authors' config DOM (from parse_exact_json); samples files and grid_64.json are looked up in
 /// `directory` (empty: the working directory); `config_name` (its path) prefixes messages about the config, and
 /// its file name is in the description. Samples files may have 64 MiB and, together, 100,000 samples
-/// (SceneReadLimits::max_samples). Validated (validate_and_resolve).
+/// (SceneReadLimits::max_samples). Validated (validate_and_resolve). When `files_read` is given, the path of each
+/// file read is appended to it as it was opened: grid_64.json, then the samples files in the config's order.
 Scene3 read_bsh_config(const nlohmann::json& doc, const std::string& directory,
-                       const std::string& config_name = "config.json", const BshReadOptions& options = {});
+                       const std::string& config_name = "config.json", const BshReadOptions& options = {},
+                       std::vector<std::string>* files_read = nullptr);
 
 /// read_exact_json_file + read_bsh_config with the file's folder.
 Scene3 read_bsh_config_file(const std::string& path, const BshReadOptions& options = {});

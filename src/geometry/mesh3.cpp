@@ -13,6 +13,7 @@
 #include <hsx/geometry/mesh3.hpp>
 
 #include "geometry/components.hpp"
+#include "kernel/printable.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -86,11 +87,7 @@ std::optional<long long> parse_integer(std::string_view text) {
   return negative ? -value : value;
 }
 
-std::string quoted(std::string_view s) {
-  constexpr std::size_t kShown = 40;
-  std::string out = "\"" + std::string(s.substr(0, kShown)) + (s.size() > kShown ? "...\"" : "\"");
-  return out;
-}
+std::string quoted(std::string_view s) { return "\"" + printable(std::string(s)) + "\""; }
 std::string quoted(const std::string& s) { return quoted(std::string_view(s)); }
 
 PointQ3 minus(const PointQ3& a, const PointQ3& b) { return PointQ3{a.x - b.x, a.y - b.y, a.z - b.z}; }

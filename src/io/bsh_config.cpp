@@ -7,7 +7,7 @@
 #include <hsx/io/files.hpp>
 #include <hsx/io/scene_json.hpp>
 
-#include "io/printable.hpp"
+#include "kernel/printable.hpp"
 #include "io/surface_triangles.hpp"
 
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <hsx/io/files.hpp>
 #include <hsx/io/result_json.hpp>
 
-#include "io/printable.hpp"
+#include "kernel/printable.hpp"
 
 #include <cmath>
 

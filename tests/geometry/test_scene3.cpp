@@ -489,6 +489,11 @@ TEST_CASE("OBJ, OFF and PLY of the same mesh give the same ObjMesh", "[scene3]")
     std::string extra = ply;
     extra.replace(extra.rfind("3 1 2 3\n"), 8, "3 1 2 3 4\n");
     CHECK_THAT(ply_error(extra), Contains("m.ply:18: more values than the face element's one property"));
+    // Hostile bytes in a message are escaped, and a long token is cut.
+    CHECK_THAT(ply_error("ply\nformat ascii 1.0\n\x1b[2Jbad\nend_header\n"),
+               Contains("m.ply:3: unknown header line \"\\x1b[2Jbad\""));
+    CHECK_THAT(ply_error("ply\nformat ascii 1.0\n" + std::string(50, 'w') + "\nend_header\n"),
+               Contains("unknown header line \"" + std::string(40, 'w') + "...\""));
     // Property types are PLY's: a list counts with an integer type, and face indices are integers.
     std::string typed = ply;
     typed.replace(typed.find("list uchar int"), 14, "list float int");

@@ -87,7 +87,8 @@ std::optional<long long> parse_integer(std::string_view text) {
   return negative ? -value : value;
 }
 
-std::string quoted(std::string_view s) { return "\"" + printable(std::string(s)) + "\""; }
+std::string quoted(std::string_view s) { return "\"" + printable(s) + "\""; }
+// An exact match for std::string arguments: without it, argument-dependent lookup prefers std::quoted.
 std::string quoted(const std::string& s) { return quoted(std::string_view(s)); }
 
 PointQ3 minus(const PointQ3& a, const PointQ3& b) { return PointQ3{a.x - b.x, a.y - b.y, a.z - b.z}; }

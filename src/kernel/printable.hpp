@@ -2,11 +2,12 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 namespace hsx {
 
 /// At most 40 characters of `token`, bytes outside printable ASCII as \xNN, "..." after a longer one.
-inline std::string printable(const std::string& token) {
+inline std::string printable(std::string_view token) {
   static const char* hex = "0123456789abcdef";
   std::string out;
   for (std::size_t k = 0; k < token.size() && k < 40; ++k) {
